@@ -1,0 +1,1066 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <cosmo/config.h>
+
+#include "cross_section_problem.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    namespace
+    {
+      constexpr unsigned int n_strains = 6;
+      constexpr unsigned int n_gauge   = 6;
+
+      // e_m x e_c, for the mixed derivative of kappa x w.
+      Tensor<1, 3>
+      unit_cross(const unsigned int m, const unsigned int c)
+      {
+        Tensor<1, 3> a, b;
+        a[m] = 1;
+        b[c] = 1;
+        return cross_product_3d(a, b);
+      }
+
+      std::string
+      fixed(const double v, const int precision = 6)
+      {
+        std::ostringstream s;
+        s << std::setprecision(precision) << v;
+        return s.str();
+      }
+    } // namespace
+
+    CrossSectionProblem::CrossSectionProblem() = default;
+    CrossSectionProblem::~CrossSectionProblem()
+    {
+      dof_handler.clear();
+    }
+
+    void
+    CrossSectionProblem::declare_parameters(ParameterHandler &prm)
+    {
+      geometry::CrossSectionGeometry::declare_parameters(prm);
+      materials::MaterialLibrary::declare_parameters(prm);
+
+      prm.enter_subsection("Finite element");
+      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
+                        "Degree p of the FE_Q(p)^3 displacement of the cross-section "
+                        "(and of the isoparametric mapping). p >= 2 for nearly "
+                        "incompressible materials.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Rod strains");
+      prm.declare_entry("Mode", "natural shape",
+                        Patterns::Selection("prescribed strains|natural shape"),
+                        "prescribed strains: the six strains are ramped from the "
+                        "reference (0,0,1,0,0,0) to 'Strains' (except 'Free strains'); "
+                        "natural shape: all six strains are free, their resultants vanish.");
+      prm.declare_entry("Strains", "0, 0, 1, 0, 0, 0",
+                        Patterns::List(Patterns::Double(), 6, 6),
+                        "Target strains nu1, nu2, nu3, kappa1, kappa2, kappa3 in the "
+                        "director frame (nu dimensionless, kappa per unit reference "
+                        "length); reached at load parameter t = 1.");
+      prm.declare_entry("Free strains", "",
+                        Patterns::MultipleSelection("nu1|nu2|nu3|kappa1|kappa2|kappa3"),
+                        "In 'prescribed strains' mode: strains left free (their "
+                        "resultant vanishes), e.g. 'nu3' for twisting at zero axial force.");
+      prm.leave_subsection();
+
+      solvers::NewtonSettings::declare_parameters(prm);
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Linear solver", solvers::SparseDirectSolver::kind_names() ==
+                                             "UMFPACK" ? "UMFPACK" : "MUMPS",
+                        Patterns::Selection(solvers::SparseDirectSolver::kind_names()),
+                        "Sparse direct solver of the Newton systems: MUMPS (LDL^T, "
+                        "gives the stability indicator) or UMFPACK (LU).");
+      prm.leave_subsection();
+      solvers::ContinuationSettings::declare_parameters(prm);
+
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/rod_cross_section", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, the VTU "
+                        "series and log.txt (created if needed).");
+      prm.declare_entry("VTU output", "every step", Patterns::Selection("every step|final|none"),
+                        "When to write the deformed section (solution-NNNN.vtu, "
+                        "solution.pvd) and the 3D rod piece (rod-NNNN.vtu, rod.pvd).");
+      prm.declare_entry("Rod piece length", "0", Patterns::Double(0),
+                        "Length (reference arc length) of the 3D piece of rod swept along "
+                        "the helix; 0: one helical turn, at most 10 section diameters.");
+      prm.declare_entry("Rod piece slices", "24", Patterns::Integer(1, 1000),
+                        "Number of slices of the 3D rod piece along its length.");
+      prm.declare_entry("Stiffness at every step", "true", Patterns::Bool(),
+                        "Compute the 6x6 stiffness (one more factorization) at every "
+                        "step, not only at the final one.");
+      prm.leave_subsection();
+    }
+
+    void
+    CrossSectionProblem::parse_parameters(ParameterHandler &prm)
+    {
+      geometry.parse_parameters(prm);
+      materials.parse_parameters(prm);
+
+      prm.enter_subsection("Finite element");
+      degree = prm.get_integer("Polynomial degree");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Rod strains");
+      mode = prm.get("Mode");
+      const auto e = io::get_double_list(prm, "Strains", 6, "Rod strains");
+      std::copy(e.begin(), e.end(), target_strains.begin());
+      const auto free_names = Utilities::split_string_list(prm.get("Free strains"), ',');
+      strain_is_free.fill(mode == "natural shape");
+      for (const auto &name : free_names)
+        for (unsigned int k = 0; k < 6; ++k)
+          if (kinematics::strain_names[k] == name)
+            strain_is_free[k] = true;
+      prm.leave_subsection();
+
+      newton_settings.parse_parameters(prm);
+      prm.enter_subsection("Nonlinear solver");
+      linear_solver_name = prm.get("Linear solver");
+      prm.leave_subsection();
+      continuation_settings.parse_parameters(prm);
+
+      prm.enter_subsection("Output");
+      output_directory     = prm.get("Output directory");
+      vtu_frequency        = prm.get("VTU output");
+      rod_piece_length     = prm.get_double("Rod piece length");
+      rod_piece_slices     = prm.get_integer("Rod piece slices");
+      stiffness_every_step = prm.get_bool("Stiffness at every step");
+      prm.leave_subsection();
+    }
+
+    void
+    CrossSectionProblem::set_target_strains(const std::array<double, 6> &strains)
+    {
+      target_strains = strains;
+    }
+
+    void
+    CrossSectionProblem::set_free_strains(const std::array<bool, 6> &free)
+    {
+      strain_is_free = free;
+    }
+
+    unsigned int
+    CrossSectionProblem::n_unknowns() const
+    {
+      return n_u() + n_gauge + n_strains;
+    }
+
+    void
+    CrossSectionProblem::setup_system()
+    {
+      geometry.create_triangulation(triangulation);
+      {
+        std::vector<types::material_id> ids;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (std::find(ids.begin(), ids.end(), cell->material_id()) == ids.end())
+            ids.push_back(cell->material_id());
+        materials.check_regions(ids);
+      }
+      fe      = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 3);
+      mapping = std::make_unique<MappingQ<2>>(degree);
+      dof_handler.reinit(triangulation);
+      dof_handler.distribute_dofs(*fe);
+      section_properties = geometry::CrossSectionGeometry::properties(triangulation, degree);
+
+      // The six gauge constraints C U = 0, as integrals of the shape functions
+      // (not sums of nodal values, which would weight nodes by the mesh).
+      for (auto &c : constraint_rows)
+        c.reinit(n_u());
+      {
+        const QGauss<2> quadrature(degree + 1);
+        FEValues<2>     fev(*mapping, *fe, quadrature,
+                            update_values | update_quadrature_points | update_JxW_values);
+        std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            fev.reinit(cell);
+            cell->get_dof_indices(idx);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const Point<2> X  = fev.quadrature_point(q);
+                const double   dA = fev.JxW(q);
+                for (unsigned int i = 0; i < idx.size(); ++i)
+                  {
+                    const unsigned int c = fe->system_to_component_index(i).first;
+                    const double       N = fev.shape_value(i, q) * dA;
+                    constraint_rows[c][idx[i]] += N; // int u = 0
+                    if (c == 1)
+                      constraint_rows[3][idx[i]] += X[0] * N; // int X1 u2 - X2 u1 = 0
+                    if (c == 0)
+                      constraint_rows[3][idx[i]] -= X[1] * N;
+                    if (c == 2)
+                      {
+                        constraint_rows[4][idx[i]] += X[0] * N; // int X1 u3 = 0
+                        constraint_rows[5][idx[i]] += X[1] * N; // int X2 u3 = 0
+                      }
+                  }
+              }
+          }
+      }
+
+      DynamicSparsityPattern dsp(n_u() + n_gauge);
+      {
+        std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(idx);
+            for (const auto i : idx)
+              dsp.add_entries(i, idx.begin(), idx.end());
+          }
+        for (unsigned int k = 0; k < n_gauge; ++k)
+          for (unsigned int i = 0; i < n_u(); ++i)
+            if (constraint_rows[k][i] != 0)
+              {
+                dsp.add(n_u() + k, i);
+                dsp.add(i, n_u() + k);
+              }
+      }
+      system = std::make_unique<assembly::BorderedSystem>(
+        solvers::SparseDirectSolver::kind_from_string(linear_solver_name));
+      system->reinit(dsp, n_strains);
+
+      solution.reinit(n_unknowns());
+      const auto ref = kinematics::RodStrains::reference().as_array();
+      for (unsigned int k = 0; k < n_strains; ++k)
+        solution[n_u() + n_gauge + k] = ref[k];
+      growth_cached_for = -1;
+    }
+
+    std::array<double, 6>
+    CrossSectionProblem::strains_of(const Vector<double> &U) const
+    {
+      std::array<double, 6> e;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        e[k] = U[n_u() + n_gauge + k];
+      return e;
+    }
+
+    std::array<double, 6>
+    CrossSectionProblem::prescribed_strains_at(const double t) const
+    {
+      const auto            ref = kinematics::RodStrains::reference().as_array();
+      std::array<double, 6> e;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        e[k] = ref[k] + t * (target_strains[k] - ref[k]);
+      return e;
+    }
+
+    void
+    CrossSectionProblem::set_load_parameter(const double t)
+    {
+      load_parameter = t;
+    }
+
+    void
+    CrossSectionProblem::update_growth_cache()
+    {
+      if (growth_cached_for == load_parameter)
+        return;
+      const QGauss<2> quadrature(degree + 1);
+      FEValues<2>     fev(*mapping, *fe, quadrature, update_quadrature_points);
+      growth_at_qp.resize(triangulation.n_active_cells() * quadrature.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          const auto &material = materials.material(cell->material_id());
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Tensor<2, 3> Fg =
+                material.growth.value(fev.quadrature_point(q), load_parameter);
+              if (!(determinant(Fg) > 0))
+                throw io::InputError(
+                  "Material", "Growth factor", material.growth.description(),
+                  "det Fg = " + std::to_string(determinant(Fg)) + " <= 0 at (" +
+                    std::to_string(fev.quadrature_point(q)[0]) + ", " +
+                    std::to_string(fev.quadrature_point(q)[1]) +
+                    ") of the section: growth must keep det Fg > 0");
+              growth_at_qp[cell->active_cell_index() * quadrature.size() + q] = Fg;
+            }
+        }
+      growth_cached_for = load_parameter;
+    }
+
+    int
+    CrossSectionProblem::assemble(const Vector<double> &U,
+                                  Vector<double> *      R,
+                                  const bool            jacobian,
+                                  double *              energy_out,
+                                  double *              min_elastic_J)
+    {
+      update_growth_cache();
+      const auto         e = strains_of(U);
+      const Tensor<1, 3> nu({e[0], e[1], e[2]});
+      const Tensor<1, 3> kappa({e[3], e[4], e[5]});
+      const Tensor<2, 3> Kx = kinematics::skew(kappa);
+      Tensor<1, 3>       e_x_e[3][3];
+      for (unsigned int m = 0; m < 3; ++m)
+        for (unsigned int c = 0; c < 3; ++c)
+          e_x_e[m][c] = unit_cross(m, c);
+
+      const QGauss<2>    quadrature(degree + 1);
+      const unsigned int nq = quadrature.size();
+      FEValues<2>        fev(*mapping, *fe, quadrature,
+                             update_values | update_gradients | update_quadrature_points |
+                               update_JxW_values);
+      const unsigned int dpc = fe->n_dofs_per_cell();
+      std::vector<types::global_dof_index> idx(dpc);
+      std::vector<unsigned int>            comp(dpc);
+      for (unsigned int i = 0; i < dpc; ++i)
+        comp[i] = fe->system_to_component_index(i).first;
+
+      Vector<double>     cell_r(dpc);
+      FullMatrix<double> cell_K(dpc, dpc);
+      FullMatrix<double> cell_B(dpc, n_strains);
+      FullMatrix<double> E(n_strains, n_strains);
+      std::array<double, 6> resultants{};
+      double                energy = 0, minJ = std::numeric_limits<double>::max();
+      std::vector<double>   U_local(dpc);
+
+      // Sparse rows of dFbar/dU_i: at most 5 nonzero entries of the 9.
+      struct SparseRow
+      {
+        unsigned int n = 0;
+        unsigned int a[5];
+        double       v[5];
+        void
+        add(unsigned int aa, double vv)
+        {
+          if (vv != 0.)
+            {
+              a[n] = aa;
+              v[n] = vv;
+              ++n;
+            }
+        }
+      };
+      std::vector<SparseRow>              B(dpc);
+      std::vector<std::array<double, 9>>  CB(dpc);
+      std::array<SparseRow, n_strains>    D;
+      std::array<std::array<double, 9>, n_strains> CD;
+      materials::EnergyDerivatives        d;
+
+      if (R)
+        {
+          R->reinit(n_unknowns());
+        }
+      if (jacobian)
+        system->clear();
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          cell->get_dof_indices(idx);
+          for (unsigned int i = 0; i < dpc; ++i)
+            U_local[i] = U[idx[i]];
+          const auto &material = materials.material(cell->material_id());
+          cell_r               = 0;
+          if (jacobian)
+            {
+              cell_K = 0;
+              cell_B = 0;
+            }
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              const double   dA = fev.JxW(q);
+              const Point<2> X  = fev.quadrature_point(q);
+              Tensor<1, 3>   u;
+              Tensor<2, 3>   F; // columns 0, 1: dw/dX1, dw/dX2 (u part first)
+              for (unsigned int i = 0; i < dpc; ++i)
+                {
+                  const double N = fev.shape_value(i, q);
+                  const auto   g = fev.shape_grad(i, q);
+                  u[comp[i]] += U_local[i] * N;
+                  F[comp[i]][0] += U_local[i] * g[0];
+                  F[comp[i]][1] += U_local[i] * g[1];
+                }
+              const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
+              F[0][0] += 1;
+              F[1][1] += 1;
+              const Tensor<1, 3> col3 = nu + cross_product_3d(kappa, w);
+              for (unsigned int r = 0; r < 3; ++r)
+                F[r][2] = col3[r];
+
+              const Tensor<2, 3> &Fg = growth_at_qp[cell->active_cell_index() * nq + q];
+              material.evaluate(F, Fg, jacobian, d);
+              if (!d.admissible)
+                return 1; // recoverable: Newton's line search or the driver cuts back
+              energy += d.energy * dA;
+              minJ = std::min(minJ, determinant(F) / determinant(Fg));
+              const auto &P = d.P;
+
+              for (unsigned int i = 0; i < dpc; ++i)
+                {
+                  const double N = fev.shape_value(i, q);
+                  const auto   g = fev.shape_grad(i, q);
+                  const unsigned int c = comp[i];
+                  B[i].n               = 0;
+                  B[i].add(3 * c, g[0]);
+                  B[i].add(3 * c + 1, g[1]);
+                  for (unsigned int r = 0; r < 3; ++r)
+                    B[i].add(3 * r + 2, Kx[r][c] * N);
+                  double ri = 0;
+                  for (unsigned int z = 0; z < B[i].n; ++z)
+                    ri += P[B[i].a[z]] * B[i].v[z];
+                  cell_r[i] += ri * dA;
+                }
+              // dFbar/d(strain k): nu_k -> e_k in column 3; kappa_k -> e_k x w.
+              for (unsigned int k = 0; k < n_strains; ++k)
+                {
+                  D[k].n = 0;
+                  if (k < 3)
+                    D[k].add(3 * k + 2, 1.);
+                  else
+                    {
+                      Tensor<1, 3> ek;
+                      ek[k - 3]             = 1;
+                      const Tensor<1, 3> ew = cross_product_3d(ek, w);
+                      for (unsigned int r = 0; r < 3; ++r)
+                        D[k].add(3 * r + 2, ew[r]);
+                    }
+                  double nk = 0;
+                  for (unsigned int z = 0; z < D[k].n; ++z)
+                    nk += P[D[k].a[z]] * D[k].v[z];
+                  resultants[k] += nk * dA;
+                }
+
+              if (!jacobian)
+                continue;
+              const auto &C = d.C;
+              auto        apply_C = [&C](const SparseRow &s, std::array<double, 9> &out) {
+                for (unsigned int a = 0; a < 9; ++a)
+                  {
+                    double v = 0;
+                    for (unsigned int z = 0; z < s.n; ++z)
+                      v += C[9 * a + s.a[z]] * s.v[z];
+                    out[a] = v;
+                  }
+              };
+              for (unsigned int i = 0; i < dpc; ++i)
+                apply_C(B[i], CB[i]);
+              for (unsigned int k = 0; k < n_strains; ++k)
+                apply_C(D[k], CD[k]);
+
+              for (unsigned int i = 0; i < dpc; ++i)
+                {
+                  for (unsigned int j = 0; j <= i; ++j)
+                    {
+                      double kij = 0;
+                      for (unsigned int z = 0; z < B[j].n; ++z)
+                        kij += CB[i][B[j].a[z]] * B[j].v[z];
+                      cell_K(i, j) += kij * dA;
+                    }
+                  const double       N = fev.shape_value(i, q);
+                  const unsigned int c = comp[i];
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    {
+                      double bik = 0;
+                      for (unsigned int z = 0; z < D[k].n; ++z)
+                        bik += CB[i][D[k].a[z]] * D[k].v[z];
+                      if (k >= 3) // P : d2 Fbar / dU_i dkappa_k, column 3 = e_k x e_c N
+                        {
+                          const Tensor<1, 3> &ex = e_x_e[k - 3][c];
+                          for (unsigned int r = 0; r < 3; ++r)
+                            bik += P[3 * r + 2] * ex[r] * N;
+                        }
+                      cell_B(i, k) += bik * dA;
+                    }
+                }
+              for (unsigned int k = 0; k < n_strains; ++k)
+                for (unsigned int l = 0; l < n_strains; ++l)
+                  {
+                    double ekl = 0;
+                    for (unsigned int z = 0; z < D[l].n; ++z)
+                      ekl += CD[k][D[l].a[z]] * D[l].v[z];
+                    E(k, l) += ekl * dA;
+                  }
+            }
+
+          if (R)
+            for (unsigned int i = 0; i < dpc; ++i)
+              (*R)[idx[i]] += cell_r[i];
+          if (jacobian)
+            {
+              for (unsigned int i = 0; i < dpc; ++i)
+                for (unsigned int j = 0; j < i; ++j)
+                  cell_K(j, i) = cell_K(i, j);
+              system->matrix.add(idx, cell_K);
+              for (unsigned int i = 0; i < dpc; ++i)
+                for (unsigned int k = 0; k < n_strains; ++k)
+                  system->border_columns[k][idx[i]] += cell_B(i, k);
+            }
+        }
+
+      // Gauge constraints with their multipliers, and the strain rows.
+      const unsigned int nu_ = n_u();
+      if (R)
+        {
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            {
+              const double lambda_k = U[nu_ + k];
+              double       cu       = 0;
+              for (unsigned int i = 0; i < nu_; ++i)
+                {
+                  const double cki = constraint_rows[k][i];
+                  if (cki != 0)
+                    {
+                      (*R)[i] += lambda_k * cki;
+                      cu += cki * U[i];
+                    }
+                }
+              (*R)[nu_ + k] = cu;
+            }
+          const auto eP = prescribed_strains_at(load_parameter);
+          for (unsigned int k = 0; k < n_strains; ++k)
+            (*R)[nu_ + n_gauge + k] = strain_is_free[k] ? resultants[k] : e[k] - eP[k];
+        }
+      if (jacobian)
+        {
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            for (unsigned int i = 0; i < nu_; ++i)
+              if (constraint_rows[k][i] != 0)
+                {
+                  system->matrix.set(nu_ + k, i, constraint_rows[k][i]);
+                  system->matrix.set(i, nu_ + k, constraint_rows[k][i]);
+                }
+          system->border_block = E;
+        }
+      last_state.resultants = resultants;
+      last_state.energy     = energy;
+      if (energy_out)
+        *energy_out = energy;
+      if (min_elastic_J)
+        *min_elastic_J = minJ;
+      return 0;
+    }
+
+    int
+    CrossSectionProblem::residual(const Vector<double> &U, Vector<double> &R)
+    {
+      io::PhaseTimer::Scope scope(timer, "assembly (residual)");
+      return assemble(U, &R, false);
+    }
+
+    int
+    CrossSectionProblem::setup_jacobian(const Vector<double> &U)
+    {
+      {
+        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+        if (assemble(U, nullptr, true) != 0)
+          return 1;
+      }
+      io::PhaseTimer::Scope scope(timer, "factorization");
+      try
+        {
+          system->factorize();
+        }
+      catch (std::exception &e)
+        {
+          say(std::string("  factorization failed: ") + e.what());
+          return 1;
+        }
+      ++n_jacobians;
+      ++total_newton_iterations;
+      return 0;
+    }
+
+    int
+    CrossSectionProblem::solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst)
+    {
+      io::PhaseTimer::Scope scope(timer, "solve");
+      std::vector<bool>     free(strain_is_free.begin(), strain_is_free.end());
+      system->solve(rhs, dst, free);
+      return 0;
+    }
+
+    void
+    CrossSectionProblem::residual_weights(Vector<double> &w) const
+    {
+      // Make every row dimensionless (see NewtonSettings): nodal forces ~ E D,
+      // constraints ~ D^3 (D^4 with a lever arm), resultants ~ E D^2, E D^3.
+      const double E = materials.max_young();
+      const double D = section_properties.diameter;
+      w.reinit(n_unknowns());
+      for (unsigned int i = 0; i < n_u(); ++i)
+        w[i] = 1. / (E * D);
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        w[n_u() + k] = k < 3 ? 1. / std::pow(D, 3) : 1. / std::pow(D, 4);
+      for (unsigned int k = 0; k < n_strains; ++k)
+        w[n_u() + n_gauge + k] =
+          strain_is_free[k] ? (k < 3 ? 1. / (E * D * D) : 1. / (E * D * D * D)) :
+                              (k < 3 ? 1. : D);
+    }
+
+    CrossSectionState
+    CrossSectionProblem::current_state()
+    {
+      CrossSectionState s;
+      double            energy = 0, minJ = 0;
+      {
+        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+        AssertThrow(assemble(solution, nullptr, true, &energy, &minJ) == 0,
+                    ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
+      }
+      {
+        io::PhaseTimer::Scope scope(timer, "factorization");
+        system->factorize();
+      }
+      s.t             = load_parameter;
+      s.energy        = energy;
+      s.min_elastic_J = minJ;
+      s.strains       = strains_of(solution);
+      s.resultants    = last_state.resultants;
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        s.multipliers[k] = solution[n_u() + k];
+      s.stiffness = system->schur_complement();
+      std::vector<bool> free(strain_is_free.begin(), strain_is_free.end());
+      s.n_negative = system->n_negative_eigenvalues(free, n_gauge);
+      return s;
+    }
+
+    double
+    CrossSectionProblem::energy_at_fixed_field(const std::array<double, 6> &strains)
+    {
+      Vector<double> U = solution;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        U[n_u() + n_gauge + k] = strains[k];
+      double energy = 0;
+      AssertThrow(assemble(U, nullptr, false, &energy) == 0,
+                  ExcMessage("inadmissible state (det Fe <= 0)"));
+      return energy;
+    }
+
+    CrossSectionState
+    CrossSectionProblem::solve()
+    {
+      solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
+      driver.progress = [this](const std::string &s) { say(s); };
+      driver.run(*this, solution);
+      return last_state;
+    }
+
+    void
+    CrossSectionProblem::say(const std::string &line)
+    {
+      if (log)
+        (*log)(line);
+      else if (!quiet)
+        std::cout << line << std::endl;
+    }
+
+    void
+    CrossSectionProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution = U;
+      const bool with_stiffness = stiffness_every_step || report.final;
+      if (with_stiffness)
+        last_state = current_state();
+      else
+        {
+          double energy = 0, minJ = 0;
+          assemble(solution, nullptr, false, &energy, &minJ);
+          last_state.t             = load_parameter;
+          last_state.energy        = energy;
+          last_state.min_elastic_J = minJ;
+          last_state.strains       = strains_of(solution);
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            last_state.multipliers[k] = solution[n_u() + k];
+          last_state.n_negative = -1;
+        }
+      const CrossSectionState &s = last_state;
+
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8)
+           << fixed(report.t, 5) << "  Newton " << std::setw(2) << report.newton_iterations
+           << "  |R| " << std::scientific << std::setprecision(1) << report.residual_norm
+           << std::defaultfloat << "  Psi = " << fixed(s.energy, 8) << "  neg.eig. "
+           << s.n_negative;
+      if (std::any_of(strain_is_free.begin(), strain_is_free.end(), [](bool b) { return b; }))
+        {
+          line << "  strains (";
+          for (unsigned int k = 0; k < 6; ++k)
+            line << (k ? ", " : "") << fixed(s.strains[k], 6);
+          line << ")";
+        }
+      say(line.str());
+
+      if (!write_output)
+        return;
+      io::PhaseTimer::Scope scope(timer, "output");
+      std::vector<double> row = {double(report.step), report.t, double(report.newton_iterations),
+                                 report.residual_norm, double(report.cutbacks), s.energy};
+      row.insert(row.end(), s.strains.begin(), s.strains.end());
+      row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+      row.insert(row.end(), s.multipliers.begin(), s.multipliers.end());
+      for (unsigned int k = 0; k < 6; ++k)
+        row.push_back(with_stiffness ? s.stiffness(k, k) : NAN);
+      row.push_back(s.n_negative);
+      row.push_back(s.min_elastic_J);
+      steps_table.add_row(row);
+      steps_table.write(output_directory + "/steps.csv");
+      if (vtu_frequency == "every step" || (vtu_frequency == "final" && report.final))
+        write_vtu(report.step, report.t);
+    }
+
+    namespace
+    {
+      /// Stresses and growth at output points of the deformed section.
+      class SectionPostprocessor : public DataPostprocessor<2>
+      {
+      public:
+        SectionPostprocessor(const materials::MaterialLibrary &materials,
+                             const std::array<double, 6> &     strains,
+                             const double                      t)
+          : materials(materials)
+          , nu({strains[0], strains[1], strains[2]})
+          , kappa({strains[3], strains[4], strains[5]})
+          , t(t)
+        {}
+
+        std::vector<std::string>
+        get_names() const override
+        {
+          return {"position", "position", "position", "traction_E3", "traction_E3",
+                  "traction_E3", "von_Mises_stress", "mean_stress", "growth_J",
+                  "elastic_J", "energy_density", "region"};
+        }
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        get_data_component_interpretation() const override
+        {
+          std::vector<DataComponentInterpretation::DataComponentInterpretation> v(
+            12, DataComponentInterpretation::component_is_scalar);
+          for (unsigned int k = 0; k < 6; ++k)
+            v[k] = DataComponentInterpretation::component_is_part_of_vector;
+          return v;
+        }
+        UpdateFlags
+        get_needed_update_flags() const override
+        {
+          return update_values | update_gradients | update_quadrature_points;
+        }
+        void
+        evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
+                              std::vector<Vector<double>> &             out) const override
+        {
+          const auto  cell     = in.template get_cell<2>();
+          const auto &material = materials.material(cell->material_id());
+          for (unsigned int p = 0; p < out.size(); ++p)
+            {
+              const Point<2> &X = in.evaluation_points[p];
+              Tensor<1, 3>    w({X[0] + in.solution_values[p][0],
+                              X[1] + in.solution_values[p][1],
+                              in.solution_values[p][2]});
+              Tensor<2, 3>    F;
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 2; ++j)
+                  F[i][j] = (i == j ? 1. : 0.) + in.solution_gradients[p][i][j];
+              const Tensor<1, 3> c3 = nu + cross_product_3d(kappa, w);
+              for (unsigned int i = 0; i < 3; ++i)
+                F[i][2] = c3[i];
+              const Tensor<2, 3>           Fg = material.growth.value(X, t);
+              materials::EnergyDerivatives d;
+              material.evaluate(F, Fg, false, d);
+              Tensor<2, 3> P;
+              for (unsigned int a = 0; a < 9; ++a)
+                P[a / 3][a % 3] = d.P[a];
+              const double       J     = determinant(F);
+              const Tensor<2, 3> sigma = (J > 0 ? 1. / J : 0.) * P * transpose(F);
+              const double       mean  = trace(sigma) / 3;
+              Tensor<2, 3>       dev   = sigma;
+              for (unsigned int i = 0; i < 3; ++i)
+                dev[i][i] -= mean;
+              for (unsigned int i = 0; i < 3; ++i)
+                out[p][i] = w[i];
+              for (unsigned int i = 0; i < 3; ++i)
+                out[p][3 + i] = P[i][2];
+              out[p][6]  = std::sqrt(1.5 * scalar_product(dev, dev));
+              out[p][7]  = mean;
+              out[p][8]  = determinant(Fg);
+              out[p][9]  = J / determinant(Fg);
+              out[p][10] = d.energy;
+              out[p][11] = cell->material_id();
+            }
+        }
+
+      private:
+        const materials::MaterialLibrary &materials;
+        const Tensor<1, 3>                nu, kappa;
+        const double                      t;
+      };
+    } // namespace
+
+    void
+    CrossSectionProblem::write_vtu(const unsigned int step, const double t)
+    {
+      const std::string name = "solution-" + Utilities::int_to_string(step, 4) + ".vtu";
+      {
+        Vector<double> u(solution.begin(), solution.begin() + n_u());
+        SectionPostprocessor post(materials, strains_of(solution), t);
+        DataOut<2>           data_out;
+        data_out.attach_dof_handler(dof_handler);
+        std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
+          3, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(u, std::vector<std::string>(3, "displacement"),
+                                 DataOut<2>::type_dof_data, interp);
+        data_out.add_data_vector(u, post);
+        data_out.build_patches(*mapping, degree, DataOut<2>::curved_inner_cells);
+        io::write_file_atomically(output_directory + "/" + name,
+                                  [&](std::ostream &out) { data_out.write_vtu(out); });
+      }
+      pvd->add(t, name);
+      const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
+      write_rod_piece(step, t, output_directory + "/" + rod_name);
+      pvd_rod->add(t, rod_name);
+    }
+
+    void
+    CrossSectionProblem::write_rod_piece(const unsigned int, const double, const std::string &file) const
+    {
+      // A short piece of the rod in 3D: the deformed section swept along the
+      // helix, x(X1, X2, X3) = r(X3) + R(X3) w(X1, X2).
+      const auto                e = strains_of(solution);
+      const kinematics::RodStrains strains(e);
+      const double              D = section_properties.diameter;
+      double                    L = rod_piece_length;
+      if (L == 0)
+        {
+          const double k = strains.kappa.norm();
+          L              = (k > 0) ? std::min(2 * M_PI / k, 10 * D) : 3 * D;
+        }
+      const unsigned int p  = degree;
+      const unsigned int np = p + 1;
+      std::vector<Point<2>> unit_points;
+      for (unsigned int j = 0; j < np; ++j)
+        for (unsigned int i = 0; i < np; ++i)
+          unit_points.emplace_back(double(i) / p, double(j) / p);
+      const Quadrature<2> points(unit_points);
+      FEValues<2>         fev(*mapping, *fe, points, update_values | update_quadrature_points);
+      Vector<double>              u(solution.begin(), solution.begin() + n_u());
+      std::vector<Vector<double>> u_values(unit_points.size(), Vector<double>(3));
+
+      std::vector<DataOutBase::Patch<3, 3>> patches;
+      const unsigned int                    n_slices = rod_piece_slices;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(u, u_values);
+          for (unsigned int s = 0; s < n_slices; ++s)
+            {
+              DataOutBase::Patch<3, 3> patch;
+              patch.n_subdivisions       = p;
+              patch.reference_cell       = ReferenceCells::Hexahedron;
+              patch.points_are_available = true;
+              const unsigned int n_points = np * np * np;
+              patch.data.reinit(2 + 3, n_points);
+              for (unsigned int k = 0; k < np; ++k)
+                {
+                  const double X3 = L * (s + double(k) / p) / n_slices;
+                  const Tensor<2, 3> R = kinematics::helix_rotation(strains.kappa, X3);
+                  const Tensor<1, 3> r = kinematics::helix_position(strains.nu, strains.kappa, X3);
+                  for (unsigned int ij = 0; ij < np * np; ++ij)
+                    {
+                      const Point<2> &X = fev.quadrature_point(ij);
+                      const Tensor<1, 3> w({X[0] + u_values[ij][0], X[1] + u_values[ij][1],
+                                            u_values[ij][2]});
+                      const Tensor<1, 3> x = r + R * w;
+                      const unsigned int pt = k * np * np + ij;
+                      patch.data(0, pt) = X3;
+                      patch.data(1, pt) = cell->material_id();
+                      for (unsigned int c = 0; c < 3; ++c)
+                        patch.data(2 + c, pt) = x[c];
+                    }
+                }
+              // Corner vertices (used by some writers for bounding boxes).
+              for (unsigned int v = 0; v < 8; ++v)
+                {
+                  const unsigned int i = (v & 1) ? p : 0, j = (v & 2) ? p : 0,
+                                     k = (v & 4) ? p : 0;
+                  const unsigned int pt = k * np * np + j * np + i;
+                  patch.vertices[v] =
+                    Point<3>(patch.data(2, pt), patch.data(3, pt), patch.data(4, pt));
+                }
+              patch.patch_index = patches.size();
+              patches.push_back(std::move(patch));
+            }
+        }
+      DataOutBase::VtkFlags flags;
+      flags.write_higher_order_cells = false;
+      io::write_file_atomically(file, [&](std::ostream &out) {
+        DataOutBase::write_vtu(patches, {"arc_length", "region"}, {}, flags, out);
+      });
+    }
+
+    void
+    CrossSectionProblem::write_summary(const std::string &status, const std::string &message) const
+    {
+      using io::JSON;
+      JSON j                  = JSON::object();
+      j["application"]        = "rod_cross_section";
+      j["version"]            = COSMO_VERSION;
+      j["parameter_file"]     = parameter_file;
+      j["status"]             = status;
+      j["message"]            = message;
+      j["mode"]               = mode;
+      JSON free               = JSON::array();
+      for (unsigned int k = 0; k < 6; ++k)
+        if (strain_is_free[k])
+          free.push_back(kinematics::strain_names[k]);
+      j["free_strains"]       = free;
+      j["load_parameter"]     = last_state.t;
+      JSON &mesh              = j["mesh"];
+      mesh["shape"]           = geometry.shape;
+      mesh["cells"]           = triangulation.n_active_cells();
+      mesh["field_dofs"]      = n_u();
+      mesh["degree"]          = degree;
+      mesh["area"]            = section_properties.area;
+      mesh["I11"]             = section_properties.I11;
+      mesh["I22"]             = section_properties.I22;
+      mesh["diameter"]        = section_properties.diameter;
+      mesh["centroid_shift"]  = JSON::array({geometry.applied_shift[0], geometry.applied_shift[1]});
+      JSON mats               = JSON::array();
+      for (const auto &s : materials.descriptions())
+        mats.push_back(s);
+      j["materials"]          = mats;
+      j["energy"]             = last_state.energy;
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          j["strains"][kinematics::strain_names[k]]       = last_state.strains[k];
+          j["resultants"][kinematics::resultant_names[k]] = last_state.resultants[k];
+        }
+      j["multipliers"] = JSON::array(std::vector<double>(last_state.multipliers.begin(),
+                                                         last_state.multipliers.end()));
+      JSON K           = JSON::array();
+      for (unsigned int a = 0; a < last_state.stiffness.m(); ++a)
+        {
+          std::vector<double> row(6);
+          for (unsigned int b = 0; b < 6; ++b)
+            row[b] = last_state.stiffness(a, b);
+          K.push_back(JSON::array(row));
+        }
+      j["stiffness"]                  = K;
+      j["stiffness_order"]            = "nu1, nu2, nu3, kappa1, kappa2, kappa3";
+      j["stability"]["n_negative_eigenvalues"] = last_state.n_negative;
+      j["min_elastic_J"]              = last_state.min_elastic_J;
+      const auto h = kinematics::helix_geometry(kinematics::RodStrains(last_state.strains));
+      JSON &helix  = j["helix"];
+      helix["description"] = h.description();
+      helix["radius"]      = h.radius;
+      helix["pitch"]       = h.pitch; // inf -> null for a straight rod
+      helix["handedness"]  = h.handedness;
+      helix["axis"]        = JSON::array({h.axis[0], h.axis[1], h.axis[2]});
+      helix["curvature"]   = h.curvature;
+      helix["torsion"]     = h.torsion;
+      j["newton_iterations"] = total_newton_iterations;
+      j["timings"]           = timer.to_json();
+      io::write_file_atomically(output_directory + "/summary.json",
+                                [&](std::ostream &out) { out << j.str() << "\n"; });
+    }
+
+    void
+    CrossSectionProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
+    {
+      quiet          = options.quiet;
+      parameter_file = options.parameter_file;
+      write_output   = true;
+      io::create_directory(output_directory);
+      log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
+      pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
+      pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
+      io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &out) {
+        prm.print_parameters(out, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
+      });
+
+      say("rod_cross_section " + std::string(COSMO_VERSION) + ": " + parameter_file);
+      {
+        io::PhaseTimer::Scope scope(timer, "setup");
+        setup_system();
+      }
+      std::ostringstream info;
+      info << "  section: " << geometry.shape << ", " << triangulation.n_active_cells()
+           << " cells, Q" << degree << ", " << n_u() << " field DoFs + 6 multipliers + 6 strains; area "
+           << section_properties.area;
+      say(info.str());
+      if (geometry.applied_shift.norm() > 0)
+        say("  mesh shifted by (" + fixed(geometry.applied_shift[0]) + ", " +
+            fixed(geometry.applied_shift[1]) + ") to put its centroid at the origin");
+      for (const auto &m : materials.descriptions())
+        say("  " + m);
+
+      steps_table = io::CSVTable();
+      for (const auto &c : {"step", "t", "newton_iterations", "residual", "cutbacks"})
+        steps_table.add_column(c);
+      steps_table.add_column("energy", "E L^2");
+      for (const auto &s : kinematics::strain_names)
+        steps_table.add_column(s, s[0] == 'n' ? "1" : "1/L");
+      for (unsigned int k = 0; k < 6; ++k)
+        steps_table.add_column(kinematics::resultant_names[k], k < 3 ? "E L^2" : "E L^3");
+      for (unsigned int k = 1; k <= 6; ++k)
+        steps_table.add_column("multiplier" + std::to_string(k));
+      for (const auto &s : kinematics::strain_names)
+        steps_table.add_column("K_" + s + "_" + s);
+      steps_table.add_column("n_negative_eigenvalues");
+      steps_table.add_column("min_elastic_J");
+
+      std::string status = "converged", message;
+      try
+        {
+          solve();
+        }
+      catch (io::RunFailure &e)
+        {
+          status  = "failed";
+          message = e.what();
+          write_summary(status, message);
+          throw;
+        }
+      write_summary(status, message);
+
+      const auto &s = last_state;
+      say("");
+      say("Result at t = " + fixed(s.t) + ":");
+      std::ostringstream out;
+      out << "  energy per unit length  " << fixed(s.energy, 10) << "\n  strains    ";
+      for (unsigned int k = 0; k < 6; ++k)
+        out << " " << kinematics::strain_names[k] << " = " << fixed(s.strains[k], 10);
+      out << "\n  resultants ";
+      for (unsigned int k = 0; k < 6; ++k)
+        out << " " << kinematics::resultant_names[k] << " = " << fixed(s.resultants[k], 6);
+      out << "\n  multipliers";
+      for (unsigned int k = 0; k < 6; ++k)
+        out << " " << fixed(s.multipliers[k], 3);
+      out << "\n  stiffness (nu1, nu2, nu3, kappa1, kappa2, kappa3):\n";
+      for (unsigned int a = 0; a < 6; ++a)
+        {
+          out << "   ";
+          for (unsigned int b = 0; b < 6; ++b)
+            out << std::setw(14) << fixed(s.stiffness(a, b), 6);
+          out << "\n";
+        }
+      out << "  natural/current centreline: "
+          << kinematics::helix_geometry(kinematics::RodStrains(s.strains)).description() << "\n";
+      out << "  timings [s]:";
+      for (const auto &p : timer.phases())
+        out << "  " << p << " " << fixed(timer.seconds(p), 3);
+      out << "\n  output in " << output_directory << "/";
+      say(out.str());
+    }
+  } // namespace rod
+} // namespace cosmo

@@ -1,0 +1,197 @@
+#ifndef cosmo_applications_rod_cross_section_problem_h
+#define cosmo_applications_rod_cross_section_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/assembly/bordered_system.h>
+#include <cosmo/geometry/cross_section.h>
+#include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/materials/material.h>
+#include <cosmo/solvers/continuation.h>
+
+#include <array>
+#include <memory>
+#include <string>
+
+/**
+ * Part 1: the morphoelastic rod's cross-section problem
+ * (rod-cross-section.md).
+ *
+ * Unknowns, in this order: the displacement u = w - X of the cross-section
+ * (three components on the 2D section, FE_Q(p)^3), the six multipliers of the
+ * gauge constraints, and the six rod strains (nu, kappa). Each strain is
+ * either prescribed (ramped by the load parameter t from the reference state)
+ * or free (its resultant vanishes); all free gives the natural shape.
+ */
+namespace cosmo
+{
+  namespace rod
+  {
+    using namespace dealii;
+
+    /// The rod-level quantities of a converged state.
+    struct CrossSectionState
+    {
+      double                t      = 0;
+      double                energy = 0;         ///< Psi, energy per unit reference length
+      std::array<double, 6> strains{};          ///< nu1..3, kappa1..3
+      std::array<double, 6> resultants{};       ///< n1..3, m1..3 = dPsi/d(strains)
+      std::array<double, 6> multipliers{};      ///< of the six gauge constraints
+      FullMatrix<double>    stiffness;          ///< 6x6 d(n,m)/d(nu,kappa)
+      int                   n_negative = -1;    ///< negative Hessian eigenvalues (constrained space)
+      double                min_elastic_J = 0;  ///< smallest det Fe at quadrature points
+    };
+
+    class CrossSectionProblem : public solvers::ContinuationProblem
+    {
+    public:
+      CrossSectionProblem();
+      ~CrossSectionProblem() override;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// The application: solve along the load path and write every output.
+      void
+      run(const io::RunOptions &options, const ParameterHandler &prm);
+
+      /// Programmatic use (tests, benchmarks): mesh, DoFs, constraints.
+      void
+      setup_system();
+      /// Continuation from the reference state to t = 1; no files unless output is on.
+      CrossSectionState
+      solve();
+      /// Energy, resultants, multipliers and (fresh) stiffness at the current solution.
+      CrossSectionState
+      current_state();
+
+      /// Energy per unit length at the current field, for given strains (no solve).
+      double
+      energy_at_fixed_field(const std::array<double, 6> &strains);
+
+      /// Override the target strains of the .prm (prescribed ones reach them at t = 1).
+      void
+      set_target_strains(const std::array<double, 6> &strains);
+      void
+      set_free_strains(const std::array<bool, 6> &free);
+
+      const geometry::SectionProperties &
+      section() const
+      {
+        return section_properties;
+      }
+      unsigned int
+      n_field_dofs() const
+      {
+        return dof_handler.n_dofs();
+      }
+      const io::PhaseTimer &
+      timings() const
+      {
+        return timer;
+      }
+      unsigned int
+      newton_iterations() const
+      {
+        return total_newton_iterations;
+      }
+
+      // ContinuationProblem
+      unsigned int
+      n_unknowns() const override;
+      int
+      residual(const Vector<double> &U, Vector<double> &R) override;
+      int
+      setup_jacobian(const Vector<double> &U) override;
+      int
+      solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
+      void
+      residual_weights(Vector<double> &w) const override;
+      void
+      set_load_parameter(double t) override;
+      void
+      converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+
+    private:
+      // Parameters
+      geometry::CrossSectionGeometry geometry;
+      materials::MaterialLibrary     materials;
+      unsigned int                   degree = 2;
+      std::string                    mode;
+      std::array<double, 6>          target_strains{};
+      std::array<bool, 6>            strain_is_free{};
+      solvers::NewtonSettings        newton_settings;
+      solvers::ContinuationSettings  continuation_settings;
+      std::string                    linear_solver_name;
+      std::string                    output_directory;
+      bool                           write_output = false;
+      std::string                    vtu_frequency;
+      double                         rod_piece_length = 0; // 0: automatic
+      unsigned int                   rod_piece_slices = 24;
+      bool                           stiffness_every_step = true;
+      std::string                    parameter_file;
+
+      // Discretization
+      Triangulation<2>                        triangulation;
+      std::unique_ptr<FESystem<2>>            fe;
+      std::unique_ptr<MappingQ<2>>            mapping;
+      DoFHandler<2>                           dof_handler;
+      geometry::SectionProperties             section_properties;
+      std::array<Vector<double>, 6>           constraint_rows; // C, integrals of shape functions
+      std::unique_ptr<assembly::BorderedSystem> system;
+      Vector<double>                          solution;
+      double                                  load_parameter = 0;
+      std::vector<Tensor<2, 3>>               growth_at_qp; // per cell and quadrature point
+      double                                  growth_cached_for = -1;
+
+      // Output and bookkeeping
+      io::PhaseTimer                   timer;
+      std::unique_ptr<io::RunLog>      log;
+      std::unique_ptr<io::PVDSeries>   pvd, pvd_rod;
+      io::CSVTable                     steps_table;
+      std::vector<io::JSON>            step_records;
+      CrossSectionState                last_state;
+      unsigned int                     total_newton_iterations = 0;
+      unsigned int                     n_jacobians              = 0;
+      bool                             quiet                    = false;
+
+      unsigned int
+      n_u() const
+      {
+        return dof_handler.n_dofs();
+      }
+      std::array<double, 6>
+      strains_of(const Vector<double> &U) const;
+      std::array<double, 6>
+      prescribed_strains_at(double t) const;
+      void
+      update_growth_cache();
+
+      /// Energy assembly: residual (always) and, if requested, the bordered Jacobian.
+      int
+      assemble(const Vector<double> &U, Vector<double> *residual, bool jacobian,
+               double *energy = nullptr, double *min_elastic_J = nullptr);
+
+      void
+      write_vtu(unsigned int step, double t);
+      void
+      write_rod_piece(unsigned int step, double t, const std::string &file) const;
+      void
+      write_summary(const std::string &status, const std::string &message) const;
+      void
+      say(const std::string &line);
+    };
+  } // namespace rod
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,77 @@
+#ifndef cosmo_io_parameters_h
+#define cosmo_io_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+/**
+ * Parameter handling shared by every application: the command-line contract
+ * (architecture.md), parsing with errors that name the file, the entry and
+ * the allowed values, and the exit statuses (0 success, 1 bad input,
+ * 2 a run that could not proceed, e.g. continuation below its minimum step).
+ */
+namespace cosmo
+{
+  namespace io
+  {
+    using namespace dealii;
+
+    /// Bad input detected after parsing (a value that fits its pattern but not the problem).
+    class InputError : public std::runtime_error
+    {
+    public:
+      InputError(const std::string &section,
+                 const std::string &entry,
+                 const std::string &value,
+                 const std::string &allowed);
+    };
+
+    /// A run that cannot proceed (nonlinear failure below the minimum step, ...).
+    class RunFailure : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    struct RunOptions
+    {
+      std::string parameter_file;
+      bool        quiet = false;
+    };
+
+    struct ApplicationInfo
+    {
+      std::string name;
+      std::string summary;
+    };
+
+    /**
+     * The whole command-line contract of an application: `app file.prm`,
+     * `--help`, `--version`, `--print-parameters [prm|json|xml]`, `--quiet`.
+     * `declare` declares all parameters, `run` parses them from the handler
+     * (already filled from the file) and runs. Returns the exit status.
+     */
+    int
+    run_application(int                                                       argc,
+                    char **                                                   argv,
+                    const ApplicationInfo &                                   info,
+                    const std::function<void(ParameterHandler &)> &           declare,
+                    const std::function<void(ParameterHandler &, const RunOptions &)> &run);
+
+    /// Parse a .prm file; errors become InputError-style messages with status 1.
+    void
+    parse_parameter_file(ParameterHandler &prm, const std::string &file);
+
+    /// Comma list of doubles of fixed length, with a clear error.
+    std::vector<double>
+    get_double_list(const ParameterHandler &prm,
+                    const std::string &     entry,
+                    unsigned int            n,
+                    const std::string &     section);
+  } // namespace io
+} // namespace cosmo
+
+#endif

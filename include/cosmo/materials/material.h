@@ -1,0 +1,88 @@
+#ifndef cosmo_materials_material_h
+#define cosmo_materials_material_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <cosmo/materials/growth.h>
+#include <cosmo/materials/hyperelastic_law.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+/**
+ * A growing hyperelastic material: stored energy per reference volume
+ * Jg W(F Fg^-1) (growth decomposition F = Fe Fg), and its first and second
+ * derivatives with respect to F by Sacado (forward mode, nested, static size:
+ * nine variables per quadrature point, which is cheaper than differentiating
+ * with respect to all cell DoFs, rod-cross-section.md).
+ */
+namespace cosmo
+{
+  namespace materials
+  {
+    using namespace dealii;
+
+    /// Energy density and derivatives at one point. Row-major 3x3 / 9x9.
+    struct EnergyDerivatives
+    {
+      double                 energy = 0;
+      std::array<double, 9>  P{};  ///< dW/dF (first Piola stress of the grown body)
+      std::array<double, 81> C{};  ///< d2W/dF2, C[9*a+b], a = 3i+j
+      bool                   admissible = true; ///< det Fe > 0
+    };
+
+    class GrowingMaterial
+    {
+    public:
+      std::string     name;
+      HyperelasticLaw law;
+      GrowthTensor    growth;
+
+      /// Jg W(F Fg^-1) and dW/dF; second derivatives if `tangent`.
+      void
+      evaluate(const Tensor<2, 3> &F,
+               const Tensor<2, 3> &Fg,
+               bool                tangent,
+               EnergyDerivatives & out) const;
+    };
+
+    /**
+     * Materials by region: up to `max_materials` parameter sections
+     * "Material 1" ... each naming the region (material) ids it covers.
+     */
+    class MaterialLibrary
+    {
+    public:
+      static constexpr unsigned int max_materials = 4;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// The material of a region; throws InputError if no section covers it.
+      const GrowingMaterial &
+      material(types::material_id region) const;
+      /// Check that every region id in `ids` is covered (clear error otherwise).
+      void
+      check_regions(const std::vector<types::material_id> &ids) const;
+
+      /// Largest shear/Young modulus, to scale residual tolerances.
+      double
+      max_young() const;
+
+      std::vector<std::string>
+      descriptions() const;
+
+    private:
+      std::vector<GrowingMaterial>                materials;
+      std::map<types::material_id, unsigned int> region_to_material;
+    };
+  } // namespace materials
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,92 @@
+#ifndef cosmo_solvers_continuation_h
+#define cosmo_solvers_continuation_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/solvers/newton.h>
+
+#include <functional>
+#include <string>
+
+/**
+ * Natural-parameter continuation (continuation.md): the load parameter t
+ * (growth and prescribed strains are ramped by it) goes from its start to a
+ * target in adaptive steps. Each step: a secant predictor, a checked Newton
+ * corrector; an easy step (few iterations) lets the next one grow, a failed
+ * one is cut back to half from the last converged state, and a step below
+ * the minimum ends the run with a clear message (io::RunFailure) after
+ * everything converged so far has been written.
+ */
+namespace cosmo
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    struct StepReport
+    {
+      unsigned int step              = 0;
+      double       t                 = 0;
+      double       step_length       = 0;
+      unsigned int newton_iterations = 0;
+      double       residual_norm     = 0;
+      unsigned int cutbacks          = 0; ///< failed attempts before this step converged
+      bool         final             = false;
+    };
+
+    /// A nonlinear system with a load parameter and an output hook.
+    class ContinuationProblem : public NonlinearSystem
+    {
+    public:
+      /// Set t; prescribed quantities (growth, prescribed strains) follow it.
+      virtual void
+      set_load_parameter(double t) = 0;
+      /// Called after every converged step with the state at t.
+      virtual void
+      converged_step(const Vector<double> &U, const StepReport &report) = 0;
+    };
+
+
+    struct ContinuationSettings
+    {
+      double       start            = 0;
+      double       target           = 1;
+      double       initial_step     = 0.25;
+      double       minimum_step     = 1e-4;
+      double       maximum_step     = 0.5;
+      unsigned int maximum_steps    = 200;
+      unsigned int easy_iterations  = 4;
+      double       growth_factor    = 1.5;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    class NaturalParameterContinuation
+    {
+    public:
+      NaturalParameterContinuation(const ContinuationSettings &settings,
+                                   const NewtonSettings &      newton);
+
+      /// Optional progress printer (one line per step or cut-back).
+      std::function<void(const std::string &)> progress;
+
+      /**
+       * Follow the branch from (U, start) to the target. U must solve the
+       * problem at `start` (for growth problems, the ungrown reference state);
+       * it is reported as step 0. On return U is the state at the target.
+       */
+      unsigned int
+      run(ContinuationProblem &problem, Vector<double> &U);
+
+    private:
+      ContinuationSettings settings;
+      NewtonSettings       newton;
+    };
+  } // namespace solvers
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,84 @@
+#ifndef cosmo_solvers_newton_h
+#define cosmo_solvers_newton_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <stdexcept>
+#include <string>
+
+/**
+ * Checked Newton: SUNDIALS KINSOL (Newton with line search) through deal.II,
+ * with the application's exact Jacobian and direct solver.
+ *
+ * KINSOL's failures are silent in Release builds of deal.II 9.4 (they are
+ * Asserts), so the residual is recomputed after every solve and a failure
+ * becomes a NewtonFailure exception, which the continuation driver catches
+ * and answers by cutting the step back.
+ */
+namespace cosmo
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    /// What a Newton solver needs from a problem: R(U), and J(U) for solves.
+    class NonlinearSystem
+    {
+    public:
+      virtual ~NonlinearSystem() = default;
+      virtual unsigned int
+      n_unknowns() const = 0;
+      /// R(U). Return 0 on success, >0 if U is inadmissible (e.g. det F <= 0).
+      virtual int
+      residual(const Vector<double> &U, Vector<double> &R) = 0;
+      /// Assemble and factorize J(U). Return 0 on success, >0 on failure.
+      virtual int
+      setup_jacobian(const Vector<double> &U) = 0;
+      /// dst = J^-1 rhs with the last factorization.
+      virtual int
+      solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) = 0;
+      /**
+       * Weights w (one per equation) that make the residual dimensionless:
+       * Newton converges when max_i |w_i R_i| < relative tolerance. Rows of
+       * different kinds (nodal forces, constraints, resultants) have
+       * different units, so one absolute tolerance would be wrong for some.
+       */
+      virtual void
+      residual_weights(Vector<double> &w) const
+      {
+        w.reinit(n_unknowns());
+        w = 1.;
+      }
+    };
+
+    class NewtonFailure : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    struct NewtonSettings
+    {
+      double       relative_tolerance = 1e-10;
+      unsigned int max_iterations     = 25;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    struct NewtonResult
+    {
+      unsigned int iterations    = 0;
+      double       residual_norm = 0; ///< weighted max-norm of R at the solution
+    };
+
+    /// Solve R(U) = 0 from the initial guess U; throws NewtonFailure.
+    NewtonResult
+    newton_solve(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings);
+  } // namespace solvers
+} // namespace cosmo
+
+#endif

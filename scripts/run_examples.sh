@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Build, then run every default rod_cross_section example from the repository
+# root (the .prm files set output directories relative to it, under output/).
+# Each run's console output goes to output/logs/<name>.log.
+set -euo pipefail
+
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${COSMO_BUILD_DIR:-build}"
+[[ "$BUILD" = /* ]] || BUILD="$REPO/$BUILD"
+EXE="$BUILD/rod_cross_section"
+
+log() { echo "[cosmo] $*"; }
+
+bash "$REPO/scripts/setup.sh"
+[[ -x "$EXE" ]] || { log "executable not found: $EXE" >&2; exit 1; }
+
+cd "$REPO"
+shopt -s nullglob
+prms=(parameter_files/rod_cross_section/*.prm)
+((${#prms[@]})) || { log "no parameter files in parameter_files/rod_cross_section/" >&2; exit 1; }
+
+mkdir -p output/logs
+failed=0
+for prm in "${prms[@]}"; do
+  name="$(basename "$prm" .prm)"
+  logfile="output/logs/$name.log"
+  start=$EPOCHREALTIME
+  if "$EXE" "$prm" >"$logfile" 2>&1; then result=OK; else result=FAILED; failed=1; fi
+  secs=$(awk -v a="$start" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }')
+  printf '[cosmo] %-40s %-6s %8ss\n' "$name" "$result" "$secs"
+  # Show the end of the log right away so failures are diagnosable in CI.
+  [[ "$result" == OK ]] || tail -n 20 "$logfile" | sed 's/^/    /'
+done
+
+if [[ -f scripts/plot_steps.py ]]; then
+  log "plotting"
+  python3 scripts/plot_steps.py output || { log "plotting FAILED" >&2; failed=1; }
+fi
+
+log "output is in $REPO/output/ (logs in output/logs/)"
+exit "$failed"

@@ -1,0 +1,141 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <cosmo/assembly/bordered_system.h>
+
+namespace cosmo
+{
+  namespace assembly
+  {
+    BorderedSystem::BorderedSystem(const solvers::SparseDirectSolver::Kind kind)
+      : direct_solver(kind)
+    {}
+
+    void
+    BorderedSystem::reinit(const DynamicSparsityPattern &dsp, const unsigned int n_b)
+    {
+      matrix.clear();
+      pattern.copy_from(dsp);
+      matrix.reinit(pattern);
+      border_columns.assign(n_b, Vector<double>(pattern.n_rows()));
+      sensitivities.assign(n_b, Vector<double>(pattern.n_rows()));
+      border_block.reinit(n_b, n_b);
+      schur.reinit(n_b, n_b);
+    }
+
+    void
+    BorderedSystem::clear()
+    {
+      matrix = 0;
+      for (auto &b : border_columns)
+        b = 0;
+      border_block = 0;
+    }
+
+    void
+    BorderedSystem::factorize()
+    {
+      direct_solver.factorize(matrix);
+      sensitivities = border_columns;
+      direct_solver.solve(sensitivities);
+      const unsigned int nb = n_border();
+      for (unsigned int i = 0; i < nb; ++i)
+        for (unsigned int j = 0; j < nb; ++j)
+          schur(i, j) = border_block(i, j) - border_columns[i] * sensitivities[j];
+      // S is symmetric in exact arithmetic; remove the round-off asymmetry.
+      for (unsigned int i = 0; i < nb; ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          schur(i, j) = schur(j, i) = 0.5 * (schur(i, j) + schur(j, i));
+    }
+
+    void
+    BorderedSystem::solve_inner(Vector<double> &x) const
+    {
+      direct_solver.solve(x);
+    }
+
+    void
+    BorderedSystem::solve(const Vector<double> &   rhs,
+                          Vector<double> &         dst,
+                          const std::vector<bool> &free) const
+    {
+      const unsigned int ni = n_inner(), nb = n_border();
+      AssertDimension(rhs.size(), ni + nb);
+      AssertDimension(free.size(), nb);
+
+      Vector<double> x0(ni);
+      for (unsigned int i = 0; i < ni; ++i)
+        x0[i] = rhs[i];
+      direct_solver.solve(x0); // A^-1 r_in
+
+      // Prescribed border unknowns move by their right-hand side.
+      std::vector<double> d(nb, 0.);
+      for (unsigned int k = 0; k < nb; ++k)
+        if (!free[k])
+          {
+            d[k] = rhs[ni + k];
+            if (d[k] != 0.)
+              x0.add(-d[k], sensitivities[k]);
+          }
+
+      // Free ones: S_FF d_F = r_F - B_F^T x0 - E_FP d_P.
+      std::vector<unsigned int> F;
+      for (unsigned int k = 0; k < nb; ++k)
+        if (free[k])
+          F.push_back(k);
+      if (!F.empty())
+        {
+          LAPACKFullMatrix<double> S(F.size(), F.size());
+          Vector<double>           h(F.size());
+          for (unsigned int a = 0; a < F.size(); ++a)
+            {
+              const unsigned int j = F[a];
+              h[a]                 = rhs[ni + j] - border_columns[j] * x0;
+              for (unsigned int k = 0; k < nb; ++k)
+                if (!free[k])
+                  h[a] -= border_block(j, k) * d[k];
+              for (unsigned int b = 0; b < F.size(); ++b)
+                S(a, b) = schur(j, F[b]);
+            }
+          S.compute_lu_factorization();
+          S.solve(h);
+          for (unsigned int a = 0; a < F.size(); ++a)
+            {
+              d[F[a]] = h[a];
+              x0.add(-h[a], sensitivities[F[a]]);
+            }
+        }
+
+      dst.reinit(ni + nb);
+      for (unsigned int i = 0; i < ni; ++i)
+        dst[i] = x0[i];
+      for (unsigned int k = 0; k < nb; ++k)
+        dst[ni + k] = d[k];
+    }
+
+    int
+    BorderedSystem::n_negative_eigenvalues(const std::vector<bool> &free,
+                                           const unsigned int       n_constraints) const
+    {
+      const int neg_A = direct_solver.n_negative_eigenvalues();
+      if (neg_A < 0)
+        return -1;
+      std::vector<unsigned int> F;
+      for (unsigned int k = 0; k < free.size(); ++k)
+        if (free[k])
+          F.push_back(k);
+      int neg_S = 0;
+      if (!F.empty())
+        {
+          LAPACKFullMatrix<double> S(F.size(), F.size());
+          for (unsigned int a = 0; a < F.size(); ++a)
+            for (unsigned int b = 0; b < F.size(); ++b)
+              S(a, b) = schur(F[a], F[b]);
+          S.compute_eigenvalues();
+          for (unsigned int a = 0; a < F.size(); ++a)
+            if (S.eigenvalue(a).real() < 0)
+              ++neg_S;
+        }
+      return neg_A - static_cast<int>(n_constraints) + neg_S;
+    }
+  } // namespace assembly
+} // namespace cosmo

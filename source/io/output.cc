@@ -1,0 +1,365 @@
+#include <cosmo/io/output.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+
+namespace cosmo
+{
+  namespace io
+  {
+    void
+    write_file_atomically(const std::string &                        path,
+                          const std::function<void(std::ostream &)> &writer)
+    {
+      const std::string tmp = path + ".tmp";
+      {
+        std::ofstream out(tmp);
+        if (!out)
+          throw std::runtime_error("cannot write the file '" + tmp + "'");
+        writer(out);
+        out.flush();
+        if (!out)
+          throw std::runtime_error("writing '" + tmp + "' failed (disk full?)");
+      }
+      std::error_code ec;
+      std::filesystem::rename(tmp, path, ec);
+      if (ec)
+        throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
+    }
+
+    void
+    create_directory(const std::string &path)
+    {
+      std::error_code ec;
+      std::filesystem::create_directories(path, ec);
+      if (ec || !std::filesystem::is_directory(path))
+        throw std::runtime_error("cannot create the output directory '" + path + "'" +
+                                 (ec ? ": " + ec.message() : ""));
+    }
+
+    std::string
+    format_number(const double v)
+    {
+      if (std::isnan(v))
+        return "nan";
+      if (std::isinf(v))
+        return v > 0 ? "inf" : "-inf";
+      std::ostringstream s;
+      s << std::setprecision(std::numeric_limits<double>::max_digits10) << v;
+      // Shorter representation when it round-trips.
+      for (int p = 6; p < std::numeric_limits<double>::max_digits10; ++p)
+        {
+          std::ostringstream t;
+          t << std::setprecision(p) << v;
+          if (std::stod(t.str()) == v)
+            return t.str();
+        }
+      return s.str();
+    }
+
+    void
+    CSVTable::add_column(const std::string &name, const std::string &unit)
+    {
+      columns.push_back(unit.empty() ? name : name + " [" + unit + "]");
+    }
+
+    void
+    CSVTable::add_row(const std::vector<double> &values)
+    {
+      if (values.size() != columns.size())
+        throw std::logic_error("CSV row of " + std::to_string(values.size()) +
+                               " values for " + std::to_string(columns.size()) + " columns");
+      rows.push_back(values);
+    }
+
+    void
+    CSVTable::write(const std::string &path) const
+    {
+      write_file_atomically(path, [&](std::ostream &out) {
+        for (unsigned int c = 0; c < columns.size(); ++c)
+          out << (c ? "," : "") << columns[c];
+        out << "\n";
+        for (const auto &row : rows)
+          {
+            for (unsigned int c = 0; c < row.size(); ++c)
+              out << (c ? "," : "") << format_number(row[c]);
+            out << "\n";
+          }
+      });
+    }
+
+    JSON::JSON()
+      : type(Type::null)
+    {}
+    JSON::JSON(const double v)
+      : type(Type::number)
+      , number(v)
+    {}
+    JSON::JSON(const int v)
+      : type(Type::number)
+      , number(v)
+    {}
+    JSON::JSON(const unsigned int v)
+      : type(Type::number)
+      , number(v)
+    {}
+    JSON::JSON(const bool v)
+      : type(Type::boolean)
+      , boolean(v)
+    {}
+    JSON::JSON(const char *v)
+      : type(Type::string)
+      , text(v)
+    {}
+    JSON::JSON(const std::string &v)
+      : type(Type::string)
+      , text(v)
+    {}
+
+    JSON
+    JSON::array()
+    {
+      JSON j;
+      j.type = Type::array_t;
+      return j;
+    }
+
+    JSON
+    JSON::object()
+    {
+      JSON j;
+      j.type = Type::object_t;
+      return j;
+    }
+
+    JSON
+    JSON::array(const std::vector<double> &v)
+    {
+      JSON j = array();
+      for (const double x : v)
+        j.push_back(JSON(x));
+      return j;
+    }
+
+    JSON &JSON::operator[](const std::string &key)
+    {
+      if (type == Type::null)
+        type = Type::object_t;
+      if (type != Type::object_t)
+        throw std::logic_error("JSON: not an object");
+      for (auto &m : members)
+        if (m.first == key)
+          return *m.second;
+      members.emplace_back(key, std::make_shared<JSON>());
+      return *members.back().second;
+    }
+
+    void
+    JSON::push_back(const JSON &v)
+    {
+      if (type == Type::null)
+        type = Type::array_t;
+      if (type != Type::array_t)
+        throw std::logic_error("JSON: not an array");
+      items.push_back(v);
+    }
+
+    namespace
+    {
+      void
+      print_string(std::ostream &out, const std::string &s)
+      {
+        out << '"';
+        for (const char c : s)
+          switch (c)
+            {
+              case '"':
+                out << "\\\"";
+                break;
+              case '\\':
+                out << "\\\\";
+                break;
+              case '\n':
+                out << "\\n";
+                break;
+              case '\t':
+                out << "\\t";
+                break;
+              default:
+                if (static_cast<unsigned char>(c) < 0x20)
+                  {
+                    char buf[8];
+                    std::snprintf(buf, sizeof(buf), "\\u%04x", c);
+                    out << buf;
+                  }
+                else
+                  out << c;
+            }
+        out << '"';
+      }
+    } // namespace
+
+    void
+    JSON::print(std::ostream &out, const unsigned int indent) const
+    {
+      const std::string pad(indent + 2, ' '), pad_end(indent, ' ');
+      switch (type)
+        {
+          case Type::null:
+            out << "null";
+            break;
+          case Type::number:
+            // JSON has no inf/nan: null stands for "not a number here".
+            if (std::isfinite(number))
+              out << format_number(number);
+            else
+              out << "null";
+            break;
+          case Type::string:
+            print_string(out, text);
+            break;
+          case Type::boolean:
+            out << (boolean ? "true" : "false");
+            break;
+          case Type::array_t:
+            {
+              bool flat = true;
+              for (const auto &i : items)
+                flat = flat && (i.type == Type::number || i.type == Type::string ||
+                                i.type == Type::boolean || i.type == Type::null);
+              out << "[";
+              for (unsigned int k = 0; k < items.size(); ++k)
+                {
+                  out << (k ? "," : "") << (flat ? (k ? " " : "") : "\n" + pad);
+                  items[k].print(out, indent + 2);
+                }
+              if (!flat && !items.empty())
+                out << "\n" << pad_end;
+              out << "]";
+              break;
+            }
+          case Type::object_t:
+            out << "{";
+            for (unsigned int k = 0; k < members.size(); ++k)
+              {
+                out << (k ? "," : "") << "\n" << pad;
+                print_string(out, members[k].first);
+                out << ": ";
+                members[k].second->print(out, indent + 2);
+              }
+            if (!members.empty())
+              out << "\n" << pad_end;
+            out << "}";
+            break;
+        }
+    }
+
+    std::string
+    JSON::str() const
+    {
+      std::ostringstream s;
+      print(s);
+      return s.str();
+    }
+
+    RunLog::RunLog(const std::string &path, const bool quiet)
+      : file(path)
+      , quiet(quiet)
+    {
+      if (!file)
+        throw std::runtime_error("cannot write the log file '" + path + "'");
+    }
+
+    void
+    RunLog::operator()(const std::string &line)
+    {
+      if (!quiet)
+        std::cout << line << std::endl;
+      log_only(line);
+    }
+
+    void
+    RunLog::log_only(const std::string &line)
+    {
+      file << line << std::endl;
+    }
+
+    PVDSeries::PVDSeries(const std::string &pvd_path)
+      : path(pvd_path)
+    {}
+
+    void
+    PVDSeries::add(const double time, const std::string &vtu_file_name)
+    {
+      entries.emplace_back(time, vtu_file_name);
+      write_file_atomically(path, [&](std::ostream &out) {
+        out << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            << "  <Collection>\n";
+        for (const auto &e : entries)
+          out << "    <DataSet timestep=\"" << format_number(e.first)
+              << "\" group=\"\" part=\"0\" file=\"" << e.second << "\"/>\n";
+        out << "  </Collection>\n</VTKFile>\n";
+      });
+    }
+
+    PhaseTimer::Scope::Scope(PhaseTimer &timer, const std::string &phase)
+      : timer(timer)
+      , phase(phase)
+      , start(std::chrono::steady_clock::now())
+    {}
+
+    PhaseTimer::Scope::~Scope()
+    {
+      timer.add(phase,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+
+    void
+    PhaseTimer::add(const std::string &phase, const double s)
+    {
+      auto it = data.find(phase);
+      if (it == data.end())
+        {
+          order.push_back(phase);
+          data[phase] = {s, 1};
+        }
+      else
+        {
+          it->second.first += s;
+          it->second.second += 1;
+        }
+    }
+
+    double
+    PhaseTimer::seconds(const std::string &phase) const
+    {
+      const auto it = data.find(phase);
+      return it == data.end() ? 0. : it->second.first;
+    }
+
+    unsigned int
+    PhaseTimer::calls(const std::string &phase) const
+    {
+      const auto it = data.find(phase);
+      return it == data.end() ? 0 : it->second.second;
+    }
+
+    JSON
+    PhaseTimer::to_json() const
+    {
+      JSON j = JSON::object();
+      for (const auto &p : order)
+        {
+          j[p]["seconds"] = JSON(seconds(p));
+          j[p]["calls"]   = JSON(calls(p));
+        }
+      return j;
+    }
+  } // namespace io
+} // namespace cosmo

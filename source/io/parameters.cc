@@ -1,0 +1,200 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/config.h>
+#include <cosmo/io/parameters.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace io
+  {
+    InputError::InputError(const std::string &section,
+                           const std::string &entry,
+                           const std::string &value,
+                           const std::string &allowed)
+      : std::runtime_error("in section '" + section + "', entry '" + entry + "' = '" +
+                           value + "': " + allowed)
+    {}
+
+    void
+    parse_parameter_file(ParameterHandler &prm, const std::string &file)
+    {
+      {
+        std::ifstream in(file);
+        if (!in)
+          throw std::runtime_error("cannot open the parameter file '" + file + "'");
+      }
+      // deal.II's own messages name the file, line, entry and pattern; keep
+      // only that part, not the assertion boilerplate around it.
+      try
+        {
+          prm.parse_input(file, "", /*skip_undefined=*/false, /*assert_all_set=*/false);
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream s;
+          e.print_info(s);
+          std::string msg = s.str();
+          while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
+            msg.pop_back();
+          throw std::runtime_error("in parameter file '" + file + "': " + msg);
+        }
+    }
+
+    std::vector<double>
+    get_double_list(const ParameterHandler &prm,
+                    const std::string &     entry,
+                    const unsigned int      n,
+                    const std::string &     section)
+    {
+      const std::string text = prm.get(entry);
+      std::vector<double> v;
+      try
+        {
+          v = Utilities::string_to_double(Utilities::split_string_list(text, ','));
+        }
+      catch (...)
+        {
+          throw InputError(section, entry, text, "expected " + std::to_string(n) +
+                                                   " numbers separated by ','");
+        }
+      if (v.size() != n)
+        throw InputError(section, entry, text, "expected " + std::to_string(n) +
+                                                 " numbers separated by ','");
+      return v;
+    }
+
+    namespace
+    {
+      void
+      print_usage(const ApplicationInfo &info, std::ostream &out)
+      {
+        out << info.name << " " << COSMO_VERSION << " -- " << info.summary << "\n\n"
+            << "Usage:\n"
+            << "  " << info.name << " FILE.prm [--quiet]   run with the parameters in FILE.prm\n"
+            << "  " << info.name << " --print-parameters [prm|json|xml]\n"
+            << "        print every parameter with its documentation and default\n"
+            << "  " << info.name << " --help | --version\n\n"
+            << "Exit status: 0 success, 1 bad input (file, entry, value), 2 the run\n"
+            << "could not proceed (files written so far are kept and complete).\n";
+      }
+    } // namespace
+
+    int
+    run_application(int                                                       argc,
+                    char **                                                   argv,
+                    const ApplicationInfo &                                   info,
+                    const std::function<void(ParameterHandler &)> &           declare,
+                    const std::function<void(ParameterHandler &, const RunOptions &)> &run)
+    {
+      // MPI is initialised for HDF5/pvtu output and MUMPS; one process, one
+      // thread per core for the assembly.
+      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
+      // Errors below are reported by us, not by deal.II's abort-on-exception.
+      deal_II_exceptions::disable_abort_on_exception();
+
+      std::vector<std::string> args(argv + 1, argv + argc);
+      RunOptions               options;
+      try
+        {
+          for (unsigned int i = 0; i < args.size(); ++i)
+            {
+              const std::string &a = args[i];
+              if (a == "--help" || a == "-h")
+                {
+                  print_usage(info, std::cout);
+                  return 0;
+                }
+              else if (a == "--version")
+                {
+                  std::cout << info.name << " " << COSMO_VERSION << " (deal.II "
+                            << DEAL_II_PACKAGE_VERSION << ")\n";
+                  return 0;
+                }
+              else if (a == "--print-parameters")
+                {
+                  std::string fmt = (i + 1 < args.size()) ? args[i + 1] : "prm";
+                  ParameterHandler prm;
+                  declare(prm);
+                  ParameterHandler::OutputStyle style;
+                  if (fmt == "prm")
+                    style = ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM;
+                  else if (fmt == "json")
+                    style = ParameterHandler::JSON;
+                  else if (fmt == "xml")
+                    style = ParameterHandler::XML;
+                  else
+                    {
+                      std::cerr << info.name << ": --print-parameters takes prm, json or xml, not '"
+                                << fmt << "'\n";
+                      return 1;
+                    }
+                  prm.print_parameters(std::cout, style);
+                  return 0;
+                }
+              else if (a == "--quiet" || a == "-q")
+                options.quiet = true;
+              else if (!a.empty() && a[0] == '-')
+                {
+                  std::cerr << info.name << ": unknown option '" << a << "'\n\n";
+                  print_usage(info, std::cerr);
+                  return 1;
+                }
+              else if (options.parameter_file.empty())
+                options.parameter_file = a;
+              else
+                {
+                  std::cerr << info.name << ": more than one parameter file given ('"
+                            << options.parameter_file << "', '" << a << "')\n";
+                  return 1;
+                }
+            }
+          if (options.parameter_file.empty())
+            {
+              print_usage(info, std::cerr);
+              return 1;
+            }
+
+          ParameterHandler prm;
+          declare(prm);
+          parse_parameter_file(prm, options.parameter_file);
+          run(prm, options);
+          return 0;
+        }
+      catch (InputError &e)
+        {
+          std::cerr << "\n" << info.name << ": bad input in '" << options.parameter_file
+                    << "' " << e.what() << "\n";
+          return 1;
+        }
+      catch (RunFailure &e)
+        {
+          std::cerr << "\n" << info.name << ": the run could not proceed: " << e.what()
+                    << "\nEverything written so far is kept.\n";
+          return 2;
+        }
+      catch (std::runtime_error &e)
+        {
+          std::cerr << "\n" << info.name << ": " << e.what() << "\n";
+          return 1;
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream s;
+          e.print_info(s);
+          std::cerr << "\n" << info.name << ": error: " << s.str() << "\n";
+          return 1;
+        }
+      catch (std::exception &e)
+        {
+          std::cerr << "\n" << info.name << ": error: " << e.what() << "\n";
+          return 1;
+        }
+    }
+  } // namespace io
+} // namespace cosmo

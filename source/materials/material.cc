@@ -1,0 +1,230 @@
+// The only translation unit that instantiates the nested Sacado types: it is
+// the expensive one to compile, so nothing else lives here.
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/io/parameters.h>
+#include <cosmo/materials/material.h>
+
+#include <Sacado.hpp>
+
+#include <sstream>
+
+namespace cosmo
+{
+  namespace materials
+  {
+    namespace
+    {
+      using FirstOrder  = Sacado::Fad::SFad<double, 9>;
+      using SecondOrder = Sacado::Fad::SFad<FirstOrder, 9>;
+
+      // Fe = F Fg^-1 for a constant Fg^-1, in the AD number type.
+      template <typename Number>
+      std::array<Number, 9>
+      elastic_part(const std::array<Number, 9> &F, const Tensor<2, 3> &Fg_inv)
+      {
+        std::array<Number, 9> Fe;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              Number s = F[3 * i] * Fg_inv[0][j];
+              s += F[3 * i + 1] * Fg_inv[1][j];
+              s += F[3 * i + 2] * Fg_inv[2][j];
+              Fe[3 * i + j] = s;
+            }
+        return Fe;
+      }
+    } // namespace
+
+    void
+    GrowingMaterial::evaluate(const Tensor<2, 3> &F,
+                              const Tensor<2, 3> &Fg,
+                              const bool          tangent,
+                              EnergyDerivatives & out) const
+    {
+      const double       Jg     = determinant(Fg);
+      const Tensor<2, 3> Fg_inv = invert(Fg);
+      // Admissibility first, in plain doubles: the log of a non-positive J
+      // would turn every derivative into NaN.
+      const double J = determinant(F);
+      out.admissible = (J > 0 && Jg > 0);
+      if (!out.admissible)
+        {
+          out.energy = std::numeric_limits<double>::infinity();
+          return;
+        }
+      if (tangent)
+        {
+          std::array<SecondOrder, 9> Fad;
+          for (unsigned int a = 0; a < 9; ++a)
+            {
+              Fad[a] = SecondOrder(9, a, FirstOrder(9, a, F[a / 3][a % 3]));
+            }
+          const SecondOrder W = Jg * law.energy(elastic_part(Fad, Fg_inv));
+          out.energy          = W.val().val();
+          for (unsigned int a = 0; a < 9; ++a)
+            {
+              out.P[a] = W.dx(a).val();
+              for (unsigned int b = 0; b < 9; ++b)
+                out.C[9 * a + b] = W.dx(a).dx(b);
+            }
+        }
+      else
+        {
+          std::array<FirstOrder, 9> Fad;
+          for (unsigned int a = 0; a < 9; ++a)
+            Fad[a] = FirstOrder(9, a, F[a / 3][a % 3]);
+          const FirstOrder W = Jg * law.energy(elastic_part(Fad, Fg_inv));
+          out.energy         = W.val();
+          for (unsigned int a = 0; a < 9; ++a)
+            out.P[a] = W.dx(a);
+        }
+    }
+
+    HyperelasticModel
+    hyperelastic_model_from_string(const std::string &name)
+    {
+      if (name == "neo-Hookean")
+        return HyperelasticModel::neo_hookean;
+      if (name == "Saint Venant-Kirchhoff")
+        return HyperelasticModel::saint_venant_kirchhoff;
+      throw std::runtime_error("unknown hyperelastic law '" + name + "'; allowed: " +
+                               hyperelastic_model_names());
+    }
+
+    std::string
+    hyperelastic_model_names()
+    {
+      return "neo-Hookean|Saint Venant-Kirchhoff";
+    }
+
+    HyperelasticLaw
+    HyperelasticLaw::from_young_poisson(const HyperelasticModel model,
+                                        const double            young,
+                                        const double            poisson)
+    {
+      HyperelasticLaw l;
+      l.model  = model;
+      l.mu     = young / (2 * (1 + poisson));
+      l.lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
+      return l;
+    }
+
+    void
+    MaterialLibrary::declare_parameters(ParameterHandler &prm)
+    {
+      for (unsigned int k = 1; k <= max_materials; ++k)
+        {
+          prm.enter_subsection("Material " + std::to_string(k));
+          prm.declare_entry("Regions",
+                            k == 1 ? "1" : "",
+                            Patterns::List(Patterns::Integer(0, 255)),
+                            "Region (material) ids of the cross-section made of this "
+                            "material: built-in sections use 1 (and 2 for the second "
+                            "layer of two-region sections); gmsh meshes use their "
+                            "physical surface tags. Empty: this section is unused.");
+          prm.declare_entry("Name", "material " + std::to_string(k), Patterns::Anything(),
+                            "A name for output.");
+          prm.declare_entry("Hyperelastic law",
+                            "neo-Hookean",
+                            Patterns::Selection(hyperelastic_model_names()),
+                            "Stored energy of the elastic part Fe: compressible "
+                            "neo-Hookean mu/2 (I1 - 3 - 2 ln J) + lambda/2 (ln J)^2, or "
+                            "Saint Venant-Kirchhoff lambda/2 (tr E)^2 + mu E:E.");
+          prm.declare_entry("Young's modulus", "1", Patterns::Double(0),
+                            "Small-strain Young's modulus E (units of stress; the "
+                            "resultants come out in E times length^2, moments E length^3).");
+          prm.declare_entry("Poisson's ratio", "0.3", Patterns::Double(-0.999, 0.49999),
+                            "Small-strain Poisson's ratio (below 1/2; nearly "
+                            "incompressible materials need element degree >= 2).");
+          GrowthTensor::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+
+    void
+    MaterialLibrary::parse_parameters(ParameterHandler &prm)
+    {
+      materials.clear();
+      region_to_material.clear();
+      for (unsigned int k = 1; k <= max_materials; ++k)
+        {
+          const std::string section = "Material " + std::to_string(k);
+          prm.enter_subsection(section);
+          const auto regions = Utilities::string_to_int(
+            Utilities::split_string_list(prm.get("Regions"), ','));
+          if (!regions.empty())
+            {
+              GrowingMaterial m;
+              m.name = prm.get("Name");
+              const double E = prm.get_double("Young's modulus");
+              if (!(E > 0))
+                throw io::InputError(section, "Young's modulus", prm.get("Young's modulus"),
+                                     "must be positive");
+              m.law = HyperelasticLaw::from_young_poisson(
+                hyperelastic_model_from_string(prm.get("Hyperelastic law")),
+                E,
+                prm.get_double("Poisson's ratio"));
+              m.growth.parse_parameters(prm, section);
+              for (const int r : regions)
+                {
+                  if (region_to_material.count(r))
+                    throw io::InputError(section, "Regions", prm.get("Regions"),
+                                         "region " + std::to_string(r) +
+                                           " is already given to Material " +
+                                           std::to_string(region_to_material[r] + 1));
+                  region_to_material[r] = materials.size();
+                }
+              materials.push_back(std::move(m));
+            }
+          prm.leave_subsection();
+        }
+      if (materials.empty())
+        throw io::InputError("Material 1", "Regions", "", "at least one material needs regions");
+    }
+
+    const GrowingMaterial &
+    MaterialLibrary::material(const types::material_id region) const
+    {
+      const auto it = region_to_material.find(region);
+      if (it == region_to_material.end())
+        throw io::InputError("Material 1..4", "Regions", "",
+                             "no material covers region " + std::to_string(region) +
+                               " of the mesh");
+      return materials[it->second];
+    }
+
+    void
+    MaterialLibrary::check_regions(const std::vector<types::material_id> &ids) const
+    {
+      for (const auto id : ids)
+        material(id);
+    }
+
+    double
+    MaterialLibrary::max_young() const
+    {
+      double E = 0;
+      for (const auto &m : materials)
+        E = std::max(E, m.law.young());
+      return E;
+    }
+
+    std::vector<std::string>
+    MaterialLibrary::descriptions() const
+    {
+      std::vector<std::string> d;
+      for (const auto &m : materials)
+        {
+          std::ostringstream s;
+          s << m.name << ": "
+            << (m.law.model == HyperelasticModel::neo_hookean ? "neo-Hookean" :
+                                                                "Saint Venant-Kirchhoff")
+            << ", E = " << m.law.young() << ", Poisson " << m.law.poisson() << ", growth "
+            << m.growth.description();
+          d.push_back(s.str());
+        }
+      return d;
+    }
+  } // namespace materials
+} // namespace cosmo

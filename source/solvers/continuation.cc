@@ -1,0 +1,141 @@
+#include <cosmo/io/parameters.h>
+#include <cosmo/solvers/continuation.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    void
+    ContinuationSettings::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Continuation");
+      prm.declare_entry("Initial step", "0.25", Patterns::Double(1e-12, 1),
+                        "First step of the load parameter t (t ramps growth and "
+                        "prescribed strains from the reference state, t = 0, to the "
+                        "values of the .prm, t = 1).");
+      prm.declare_entry("Minimum step", "1e-4", Patterns::Double(1e-14, 1),
+                        "Below this step the run stops with an error (exit status 2).");
+      prm.declare_entry("Maximum step", "0.5", Patterns::Double(1e-12, 1),
+                        "Largest step of t.");
+      prm.declare_entry("Maximum number of steps", "200", Patterns::Integer(1),
+                        "Stop with an error if the target is not reached in this many steps.");
+      prm.declare_entry("Easy step iterations", "4", Patterns::Integer(1),
+                        "A step that converges in at most this many Newton iterations "
+                        "lets the next step grow by 'Step growth factor'.");
+      prm.declare_entry("Step growth factor", "1.5", Patterns::Double(1, 10),
+                        "Factor by which an easy step lets the next one grow.");
+      prm.leave_subsection();
+    }
+
+    void
+    ContinuationSettings::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Continuation");
+      initial_step    = prm.get_double("Initial step");
+      minimum_step    = prm.get_double("Minimum step");
+      maximum_step    = prm.get_double("Maximum step");
+      maximum_steps   = prm.get_integer("Maximum number of steps");
+      easy_iterations = prm.get_integer("Easy step iterations");
+      growth_factor   = prm.get_double("Step growth factor");
+      if (minimum_step > initial_step)
+        throw io::InputError("Continuation", "Minimum step", prm.get("Minimum step"),
+                             "must not exceed 'Initial step' = " + prm.get("Initial step"));
+      if (maximum_step < initial_step)
+        throw io::InputError("Continuation", "Maximum step", prm.get("Maximum step"),
+                             "must not be below 'Initial step' = " + prm.get("Initial step"));
+      prm.leave_subsection();
+    }
+
+    NaturalParameterContinuation::NaturalParameterContinuation(
+      const ContinuationSettings &settings,
+      const NewtonSettings &      newton)
+      : settings(settings)
+      , newton(newton)
+    {}
+
+    unsigned int
+    NaturalParameterContinuation::run(ContinuationProblem &problem, Vector<double> &U)
+    {
+      auto say = [&](const std::string &s) {
+        if (progress)
+          progress(s);
+      };
+
+      double t = settings.start;
+      problem.set_load_parameter(t);
+      // Step 0: the starting state must be converged too (it usually is exact).
+      StepReport report;
+      {
+        const NewtonResult r     = newton_solve(problem, U, newton);
+        report.step              = 0;
+        report.t                 = t;
+        report.newton_iterations = r.iterations;
+        report.residual_norm     = r.residual_norm;
+        report.final             = (t >= settings.target);
+        problem.converged_step(U, report);
+      }
+
+      Vector<double> U_previous = U;
+      double         dt_previous = 0;
+      double         dt          = settings.initial_step;
+      unsigned int   step        = 0;
+      unsigned int   cutbacks    = 0;
+      while (t < settings.target - 1e-14)
+        {
+          if (step >= settings.maximum_steps)
+            throw io::RunFailure("the target t = " + std::to_string(settings.target) +
+                                 " was not reached in " +
+                                 std::to_string(settings.maximum_steps) +
+                                 " steps (last converged t = " + std::to_string(t) + ")");
+          dt                 = std::min(dt, settings.target - t);
+          const double t_new = (settings.target - (t + dt) < 1e-12) ? settings.target : t + dt;
+
+          // Secant predictor from the last two converged states.
+          Vector<double> U_trial = U;
+          if (dt_previous > 0)
+            U_trial.add((t_new - t) / dt_previous, U, -(t_new - t) / dt_previous, U_previous);
+
+          problem.set_load_parameter(t_new);
+          try
+            {
+              const NewtonResult r = newton_solve(problem, U_trial, newton);
+              U_previous           = U;
+              U                    = U_trial;
+              dt_previous          = t_new - t;
+              t                    = t_new;
+              ++step;
+              report.step              = step;
+              report.t                 = t;
+              report.step_length       = dt_previous;
+              report.newton_iterations = r.iterations;
+              report.residual_norm     = r.residual_norm;
+              report.cutbacks          = cutbacks;
+              report.final             = (t >= settings.target - 1e-14);
+              problem.converged_step(U, report);
+              cutbacks = 0;
+              if (r.iterations <= settings.easy_iterations)
+                dt = std::min(settings.maximum_step, dt * settings.growth_factor);
+            }
+          catch (NewtonFailure &e)
+            {
+              ++cutbacks;
+              problem.set_load_parameter(t);
+              std::ostringstream s;
+              s << "  step to t = " << t_new << " failed (" << e.what() << "); cutting back to "
+                << dt / 2;
+              say(s.str());
+              dt /= 2;
+              if (dt < settings.minimum_step)
+                throw io::RunFailure("continuation stalled at t = " + std::to_string(t) +
+                                     ": the step fell below the minimum " +
+                                     std::to_string(settings.minimum_step) +
+                                     " (last failure: " + e.what() + ")");
+            }
+        }
+      return step;
+    }
+  } // namespace solvers
+} // namespace cosmo

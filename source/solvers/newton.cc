@@ -1,0 +1,101 @@
+#include <deal.II/sundials/kinsol.h>
+
+#include <cosmo/solvers/newton.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    void
+    NewtonSettings::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Relative tolerance",
+                        "1e-10",
+                        Patterns::Double(1e-15, 1e-2),
+                        "Newton converges when the max-norm of the residual, each "
+                        "equation made dimensionless by its natural scale (nodal forces "
+                        "by E times the section diameter, resultants by E D^2 and E D^3, "
+                        "constraints by D^3, D^4), is below this.");
+      prm.declare_entry("Maximum iterations",
+                        "25",
+                        Patterns::Integer(1, 1000),
+                        "Newton iterations per continuation step before the step is "
+                        "declared failed and cut back.");
+      prm.leave_subsection();
+    }
+
+    void
+    NewtonSettings::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      relative_tolerance = prm.get_double("Relative tolerance");
+      max_iterations     = prm.get_integer("Maximum iterations");
+      prm.leave_subsection();
+    }
+
+    NewtonResult
+    newton_solve(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings)
+    {
+      NewtonResult result;
+      Vector<double> weights;
+      system.residual_weights(weights);
+
+      SUNDIALS::KINSOL<Vector<double>>::AdditionalData data;
+      // Exact Newton: a new Jacobian at every iteration, and no cap on the
+      // step length (KINSOL's default cap truncates steps on large systems).
+      data.strategy                      = SUNDIALS::KINSOL<Vector<double>>::AdditionalData::linesearch;
+      data.maximum_non_linear_iterations = settings.max_iterations;
+      data.function_tolerance            = settings.relative_tolerance;
+      data.step_tolerance                = 1e-15;
+      data.maximum_setup_calls           = 1;
+      data.maximum_newton_step           = 1e12;
+
+      SUNDIALS::KINSOL<Vector<double>> kinsol(data);
+      const unsigned int                n = system.n_unknowns();
+      kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
+      kinsol.get_function_scaling = [&]() -> Vector<double> & { return weights; };
+      kinsol.residual      = [&](const Vector<double> &u, Vector<double> &r) {
+        return system.residual(u, r);
+      };
+      kinsol.setup_jacobian = [&](const Vector<double> &u, const Vector<double> &) {
+        return system.setup_jacobian(u);
+      };
+      kinsol.solve_with_jacobian = [&](const Vector<double> &rhs, Vector<double> &dst, double) {
+        return system.solve_with_jacobian(rhs, dst);
+      };
+
+      Vector<double> U0 = U;
+      try
+        {
+          result.iterations = kinsol.solve(U);
+        }
+      catch (std::exception &e)
+        {
+          U = U0;
+          throw NewtonFailure(std::string("KINSOL stopped: ") + e.what());
+        }
+
+      // KINSOL reports failure only through (Debug-mode) assertions: check.
+      Vector<double> R(n);
+      const int      status = system.residual(U, R);
+      if (status == 0)
+        R.scale(weights);
+      result.residual_norm = (status == 0) ? R.linfty_norm() : INFINITY;
+      if (status != 0 || !std::isfinite(result.residual_norm) ||
+          result.residual_norm > settings.relative_tolerance)
+        {
+          std::ostringstream s;
+          s << "Newton did not converge in " << settings.max_iterations
+            << " iterations: scaled residual " << result.residual_norm << " > tolerance "
+            << settings.relative_tolerance;
+          U = U0;
+          throw NewtonFailure(s.str());
+        }
+      return result;
+    }
+  } // namespace solvers
+} // namespace cosmo

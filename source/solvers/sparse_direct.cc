@@ -1,0 +1,197 @@
+#include <cosmo/config.h>
+#include <cosmo/solvers/sparse_direct.h>
+
+#ifdef COSMO_WITH_MUMPS
+#  include <dmumps_c.h>
+#  include <mpi.h>
+#endif
+
+#include <stdexcept>
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    struct SparseDirectSolver::MumpsData
+    {
+#ifdef COSMO_WITH_MUMPS
+      DMUMPS_STRUC_C     id;
+      std::vector<int>   irn, jcn; // 1-based, upper triangle
+      std::vector<double> values;
+      std::vector<bool>   upper; // storage position is in the upper triangle
+      bool               initialized = false;
+
+      void
+      call(int job)
+      {
+        id.job = job;
+        dmumps_c(&id);
+        if (id.infog[0] < 0)
+          throw std::runtime_error("MUMPS failed in phase " + std::to_string(job) +
+                                   " with INFOG(1) = " + std::to_string(id.infog[0]) +
+                                   ", INFOG(2) = " + std::to_string(id.infog[1]) +
+                                   (id.infog[0] == -10 ? " (numerically singular matrix)" : ""));
+      }
+      ~MumpsData()
+      {
+        if (initialized)
+          {
+            id.job = -2;
+            dmumps_c(&id);
+          }
+      }
+#endif
+    };
+
+    SparseDirectSolver::SparseDirectSolver(const Kind kind)
+      : solver_kind(kind)
+    {
+#ifndef COSMO_WITH_MUMPS
+      if (kind == Kind::mumps)
+        throw std::runtime_error("this build of cosmo has no MUMPS; use UMFPACK");
+#endif
+    }
+
+    SparseDirectSolver::~SparseDirectSolver() = default;
+
+    SparseDirectSolver::Kind
+    SparseDirectSolver::default_kind()
+    {
+#ifdef COSMO_WITH_MUMPS
+      return Kind::mumps;
+#else
+      return Kind::umfpack;
+#endif
+    }
+
+    SparseDirectSolver::Kind
+    SparseDirectSolver::kind_from_string(const std::string &name)
+    {
+      if (name == "MUMPS")
+        return Kind::mumps;
+      if (name == "UMFPACK")
+        return Kind::umfpack;
+      return default_kind();
+    }
+
+    std::string
+    SparseDirectSolver::kind_names()
+    {
+#ifdef COSMO_WITH_MUMPS
+      return "MUMPS|UMFPACK";
+#else
+      return "UMFPACK";
+#endif
+    }
+
+    void
+    SparseDirectSolver::factorize(const SparseMatrix<double> &A)
+    {
+      if (solver_kind == Kind::umfpack)
+        {
+          if (!umfpack)
+            umfpack = std::make_unique<SparseDirectUMFPACK>();
+          umfpack->factorize(A);
+          n_negative = -1;
+          return;
+        }
+#ifdef COSMO_WITH_MUMPS
+      const SparsityPattern &sp = A.get_sparsity_pattern();
+      if (!mumps || analysed_pattern != &sp || analysed_nnz != sp.n_nonzero_elements())
+        {
+          mumps = std::make_unique<MumpsData>();
+          auto &id = mumps->id;
+          id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(MPI_COMM_SELF);
+          id.par          = 1;
+          id.sym          = 2; // symmetric, possibly indefinite: LDL^T
+          mumps->call(-1);
+          mumps->initialized = true;
+          // Silence MUMPS; errors are reported through INFOG.
+          id.icntl[0] = -1;
+          id.icntl[1] = -1;
+          id.icntl[2] = -1;
+          id.icntl[3] = 0;
+          // Extra workspace: dense border rows make the fill estimate loose.
+          id.icntl[13] = 60;
+          // The upper triangle in coordinate format; the pattern is fixed,
+          // so the index map is computed once.
+          mumps->irn.clear();
+          mumps->jcn.clear();
+          mumps->upper.clear();
+          for (unsigned int row = 0; row < sp.n_rows(); ++row)
+            for (auto it = sp.begin(row); it != sp.end(row); ++it)
+              {
+                mumps->upper.push_back(it->column() >= row);
+                if (it->column() >= row)
+                  {
+                    mumps->irn.push_back(row + 1);
+                    mumps->jcn.push_back(it->column() + 1);
+                  }
+              }
+          mumps->values.resize(mumps->irn.size());
+          id.n   = sp.n_rows();
+          id.nnz = mumps->irn.size();
+          id.irn = mumps->irn.data();
+          id.jcn = mumps->jcn.data();
+          id.a   = mumps->values.data();
+          mumps->call(1); // analysis
+          analysed_pattern = &sp;
+          analysed_nnz     = sp.n_nonzero_elements();
+        }
+      // Values in the order of the analysed pattern: the matrix iterators walk
+      // the storage in the same row-wise order as the pattern's.
+      {
+        std::size_t pos = 0, k = 0;
+        for (auto it = A.begin(); it != A.end(); ++it, ++pos)
+          if (mumps->upper[pos])
+            mumps->values[k++] = it->value();
+      }
+      mumps->call(2);
+      n_negative = mumps->id.infog[11];
+#endif
+    }
+
+    void
+    SparseDirectSolver::solve(Vector<double> &x) const
+    {
+      if (solver_kind == Kind::umfpack)
+        {
+          umfpack->solve(x);
+          return;
+        }
+#ifdef COSMO_WITH_MUMPS
+      auto &id = mumps->id;
+      id.nrhs  = 1;
+      id.lrhs  = x.size();
+      id.rhs   = x.data();
+      mumps->call(3);
+#endif
+    }
+
+    void
+    SparseDirectSolver::solve(std::vector<Vector<double>> &xs) const
+    {
+      if (xs.empty())
+        return;
+      if (solver_kind == Kind::umfpack)
+        {
+          for (auto &x : xs)
+            umfpack->solve(x);
+          return;
+        }
+#ifdef COSMO_WITH_MUMPS
+      const std::size_t   n = xs[0].size();
+      std::vector<double> block(n * xs.size());
+      for (std::size_t k = 0; k < xs.size(); ++k)
+        std::copy(xs[k].begin(), xs[k].end(), block.begin() + k * n);
+      auto &id = mumps->id;
+      id.nrhs  = xs.size();
+      id.lrhs  = n;
+      id.rhs   = block.data();
+      mumps->call(3);
+      for (std::size_t k = 0; k < xs.size(); ++k)
+        std::copy(block.begin() + k * n, block.begin() + (k + 1) * n, xs[k].begin());
+#endif
+    }
+  } // namespace solvers
+} // namespace cosmo
