@@ -649,6 +649,16 @@ namespace cosmo
     }
 
     CrossSectionState
+    CrossSectionProblem::resolve(const std::array<double, 6> &strains)
+    {
+      target_strains = strains;
+      set_load_parameter(1.);
+      solvers::newton_solve(*this, solution, newton_settings);
+      last_state = current_state();
+      return last_state;
+    }
+
+    CrossSectionState
     CrossSectionProblem::solve()
     {
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);

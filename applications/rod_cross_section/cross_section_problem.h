@@ -75,6 +75,28 @@ namespace cosmo
       CrossSectionState
       current_state();
 
+      /// Newton from the current solution to the state with these prescribed strains (t = 1).
+      CrossSectionState
+      resolve(const std::array<double, 6> &strains);
+
+      /// The last assembled and factorized bordered Jacobian (tests).
+      const assembly::BorderedSystem &
+      bordered_system() const
+      {
+        return *system;
+      }
+      const Vector<double> &
+      current_solution() const
+      {
+        return solution;
+      }
+      /// Which strains are free (their rows are resultants) or prescribed.
+      const std::array<bool, 6> &
+      free_strains() const
+      {
+        return strain_is_free;
+      }
+
       /// Energy per unit length at the current field, for given strains (no solve).
       double
       energy_at_fixed_field(const std::array<double, 6> &strains);

@@ -6,6 +6,7 @@
 #  include <mpi.h>
 #endif
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace cosmo
@@ -113,6 +114,12 @@ namespace cosmo
           id.icntl[3] = 0;
           // Extra workspace: dense border rows make the fill estimate loose.
           id.icntl[13] = 60;
+          // QAMD ordering: AMD that treats the quasi-dense constraint rows of
+          // the bordered Hessians separately (measured fastest of MUMPS'
+          // orderings on these matrices, see benchmarks/README.md).
+          id.icntl[6] = 6;
+          if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
+            id.icntl[6] = std::atoi(o);
           // The upper triangle in coordinate format; the pattern is fixed,
           // so the index map is computed once.
           mumps->irn.clear();

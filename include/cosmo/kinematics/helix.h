@@ -44,7 +44,10 @@ namespace cosmo
     Tensor<2, 3, Number>
     helix_rotation(const Tensor<1, 3, Number> &kappa, const Number &s)
     {
-      return rotation_exp(Tensor<1, 3, Number>(s * kappa));
+      Tensor<1, 3, Number> theta;
+      for (unsigned int i = 0; i < 3; ++i)
+        theta[i] = s * kappa[i];
+      return rotation_exp(theta);
     }
 
     /**
@@ -57,11 +60,16 @@ namespace cosmo
                    const Tensor<1, 3, Number> &kappa,
                    const Number &              s)
     {
-      const Tensor<1, 3, Number> k  = s * kappa;
-      const auto                 co = internal::rodrigues_coefficients(k * k);
+      Tensor<1, 3, Number> k;
+      for (unsigned int i = 0; i < 3; ++i)
+        k[i] = s * kappa[i];
+      const auto co = internal::rodrigues_coefficients<Number>(internal::squared_norm(k));
       const Tensor<1, 3, Number> kxnu   = cross_product_3d(k, nu);
       const Tensor<1, 3, Number> kxkxnu = cross_product_3d(k, kxnu);
-      return s * (nu + co.b * kxnu + co.c * kxkxnu);
+      Tensor<1, 3, Number>       r;
+      for (unsigned int i = 0; i < 3; ++i)
+        r[i] = s * (nu[i] + co.b * kxnu[i] + co.c * kxkxnu[i]);
+      return r;
     }
 
     /**

@@ -88,16 +88,50 @@ namespace cosmo
     } // namespace internal
 
     /// exp([theta]x) = I + a [theta]x + b [theta]x^2.
+    namespace internal
+    {
+      /// I + a [theta]x + b [theta]x^2, entry by entry: plain Number
+      /// arithmetic only, so Sacado's expression templates never meet
+      /// dealii::Tensor's scalar products.
+      template <typename Number>
+      Tensor<2, 3, Number>
+      identity_plus_skew_terms(const Tensor<1, 3, Number> &theta,
+                               const Number &              a,
+                               const Number &              b)
+      {
+        const Tensor<2, 3, Number> S = skew(theta);
+        Tensor<2, 3, Number>       R;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              Number S2 = S[i][0] * S[0][j];
+              S2 += S[i][1] * S[1][j];
+              S2 += S[i][2] * S[2][j];
+              R[i][j] = a * S[i][j] + b * S2;
+              if (i == j)
+                R[i][j] += 1.;
+            }
+        return R;
+      }
+
+      template <typename Number>
+      Number
+      squared_norm(const Tensor<1, 3, Number> &v)
+      {
+        Number n = v[0] * v[0];
+        n += v[1] * v[1];
+        n += v[2] * v[2];
+        return n;
+      }
+    } // namespace internal
+
+    /// exp([theta]x) = I + a [theta]x + b [theta]x^2.
     template <typename Number>
     Tensor<2, 3, Number>
     rotation_exp(const Tensor<1, 3, Number> &theta)
     {
-      const auto                 co = internal::rodrigues_coefficients(theta * theta);
-      const Tensor<2, 3, Number> S  = skew(theta);
-      Tensor<2, 3, Number>       R  = co.a * S + co.b * (S * S);
-      for (unsigned int i = 0; i < 3; ++i)
-        R[i][i] += 1.;
-      return R;
+      const auto co = internal::rodrigues_coefficients<Number>(internal::squared_norm(theta));
+      return internal::identity_plus_skew_terms(theta, co.a, co.b);
     }
 
     /**
@@ -109,12 +143,8 @@ namespace cosmo
     Tensor<2, 3, Number>
     rotation_dexp_right(const Tensor<1, 3, Number> &theta)
     {
-      const auto                 co = internal::rodrigues_coefficients(theta * theta);
-      const Tensor<2, 3, Number> S  = skew(theta);
-      Tensor<2, 3, Number>       T  = -co.b * S + co.c * (S * S);
-      for (unsigned int i = 0; i < 3; ++i)
-        T[i][i] += 1.;
-      return T;
+      const auto co = internal::rodrigues_coefficients<Number>(internal::squared_norm(theta));
+      return internal::identity_plus_skew_terms(theta, Number(-co.b), co.c);
     }
 
     /**

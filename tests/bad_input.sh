@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Bad input ends with a clear message naming the file/entry/allowed values
+# and exit status 1 -- never an abort, a hang or a silent answer.
+# usage: bad_input.sh <rod_cross_section> <scratch dir>
+set -uo pipefail
+exe=$1 dir=$2
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+fail=0
+expect() { # expect <name> <grep pattern> <args...>
+  local name=$1 pattern=$2; shift 2
+  timeout 60 "$exe" "$@" > out.txt 2>&1; local status=$?
+  if [ $status -eq 1 ] && grep -q -- "$pattern" out.txt; then
+    echo "  ok    $name (status 1: $(grep -m1 -- "$pattern" out.txt | cut -c1-150))"
+  else
+    echo "  FAIL  $name: status $status (expected 1), output:"; cat out.txt; fail=1
+  fi
+}
+base() { cat <<PRM
+subsection Cross-section
+  set Shape = circle
+  set Global refinements = 1
+end
+subsection Output
+  set Output directory = out
+  set VTU output = none
+end
+PRM
+}
+expect "missing file" "cannot open the parameter file 'nope.prm'" nope.prm
+{ base; echo "set Undeclared entry = 3"; } > undeclared.prm
+expect "undeclared entry" "Undeclared entry" undeclared.prm
+{ base; printf 'subsection Cross-section\n set Shape = hexagon\nend\n'; } > shape.prm
+expect "value outside its pattern (names the allowed values)" "circle|ellipse" shape.prm
+{ base; printf 'subsection Material 1\n set Poisson'"'"'s ratio = 0.7\nend\n'; } > poisson.prm
+expect "Poisson ratio out of range" "Poisson's ratio" poisson.prm
+{ base; printf 'subsection Material 1\n set Growth kind = axial\n set Growth factor = 1 + 0.3*z\nend\n'; } > expr.prm
+expect "growth expression that does not parse" "Growth factor" expr.prm
+{ base; printf 'subsection Material 1\n set Growth kind = isotropic\n set Growth factor = 0.5 - x\nend\n'; } > detfg.prm
+expect "growth with det Fg <= 0" "det Fg" detfg.prm
+{ base; printf 'subsection Cross-section\n set Shape = bilayer\nend\n'; } > region.prm
+expect "region without a material" "no material covers region 2" region.prm
+{ base; printf 'subsection Cross-section\n set Shape = gmsh\n set Mesh file = missing.msh\nend\n'; } > msh.prm
+expect "gmsh mesh file missing" "Mesh file" msh.prm
+{ base; printf 'subsection Rod strains\n set Strains = 0, 0, 1\nend\n'; } > strains.prm
+expect "wrong number of strains" "Strains" strains.prm
+expect "unknown option" "unknown option" --frobnicate
+exit $fail
