@@ -55,12 +55,15 @@ namespace cosmo
       const double       vpar = e.nu * h.axis;
       const Tensor<1, 3> vperp = e.nu - vpar * h.axis;
       const double       vp    = vperp.norm();
-      h.radius                 = vp / k;
+      // A centreline along the axis (nu parallel to kappa) is straight.
+      h.radius = (vp < 1e-12 * std::max(1.0, speed)) ? 0. : vp / k;
       h.pitch                  = 2 * M_PI * std::abs(vpar) / k;
       const double tol         = 1e-12 * std::max(1.0, speed);
-      h.handedness = (vp < tol || std::abs(vpar) < tol) ? 0 : (vpar > 0 ? 1 : -1);
+      h.handedness = (h.radius == 0 || std::abs(vpar) < tol) ? 0 : (vpar > 0 ? 1 : -1);
       // Circular helix of radius a, axial speed c per unit turning angle:
       // curvature a/(a^2+c^2), torsion c/(a^2+c^2) (signed by handedness).
+      if (h.radius == 0)
+        return h; // straight: no curvature, and torsion of a line is undefined
       const double c = vpar / k;
       const double d = h.radius * h.radius + c * c;
       h.curvature    = d > 0 ? h.radius / d : 0;
