@@ -12,7 +12,9 @@ JOBS="${COSMO_JOBS:-2}"
 
 log() { echo "[cosmo] $*"; }
 
-PACKAGES=(libdeal.ii-dev numdiff gmsh python3-matplotlib cmake g++ make ccache)
+# libopenblas0-pthread: MUMPS on Debian's reference BLAS factorizes ~2.5x
+# slower (measured, benchmarks/README.md); OpenBLAS takes over libblas.so.3.
+PACKAGES=(libdeal.ii-dev numdiff gmsh python3-matplotlib cmake g++ make ccache libopenblas0-pthread)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do
