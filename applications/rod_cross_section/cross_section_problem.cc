@@ -238,6 +238,16 @@ namespace cosmo
         solvers::SparseDirectSolver::kind_from_string(linear_solver_name));
       system->reinit(dsp, n_strains);
 
+      // Growth is ramped as 1 + t (g - 1), a convex combination: det Fg > 0
+      // along the whole path iff it holds at t = 1. Check it now, as bad
+      // input, rather than as a nonlinear failure somewhere on the path.
+      const double t_saved = load_parameter;
+      load_parameter       = 1.;
+      growth_cached_for    = -1;
+      update_growth_cache();
+      load_parameter    = t_saved;
+      growth_cached_for = -1;
+
       solution.reinit(n_unknowns());
       const auto ref = kinematics::RodStrains::reference().as_array();
       for (unsigned int k = 0; k < n_strains; ++k)
