@@ -842,8 +842,60 @@ namespace cosmo
                                  DataOut<2>::type_dof_data, interp);
         data_out.add_data_vector(u, post);
         data_out.build_patches(*mapping, degree, DataOut<2>::curved_inner_cells);
-        io::write_file_atomically(output_directory + "/" + name,
-                                  [&](std::ostream &out) { data_out.write_vtu(out); });
+
+        // deal.II groups vector components of 2D output in pairs, but the
+        // section's fields (displacement, position, traction) are 3-vectors:
+        // lift the patches into 3D space (points (X1, X2, 0)), where VTU
+        // vectors have three components and ParaView can warp the section
+        // by the displacement.
+        const std::vector<std::string> names = {
+          "displacement", "displacement", "displacement", "position", "position", "position",
+          "traction_E3", "traction_E3", "traction_E3", "von_Mises_stress", "mean_stress",
+          "growth_J", "elastic_J", "energy_density", "region"};
+        const unsigned int n_data = names.size();
+        std::vector<DataOutBase::Patch<2, 3>> patches;
+        for (const auto &p2 : data_out.get_patches())
+          {
+            DataOutBase::Patch<2, 3> p3;
+            p3.n_subdivisions       = p2.n_subdivisions;
+            p3.reference_cell       = p2.reference_cell;
+            p3.patch_index          = p2.patch_index;
+            p3.points_are_available = true;
+            for (unsigned int v = 0; v < 4; ++v)
+              p3.vertices[v] = Point<3>(p2.vertices[v][0], p2.vertices[v][1], 0);
+            const unsigned int n_points = p2.data.n_cols();
+            const unsigned int np       = p2.n_subdivisions + 1;
+            p3.data.reinit(n_data + 3, n_points);
+            for (unsigned int k = 0; k < n_points; ++k)
+              {
+                for (unsigned int r = 0; r < n_data; ++r)
+                  p3.data(r, k) = p2.data(r, k);
+                Point<2> x;
+                if (p2.points_are_available)
+                  x = Point<2>(p2.data(n_data, k), p2.data(n_data + 1, k));
+                else
+                  {
+                    const double xi = double(k % np) / p2.n_subdivisions,
+                                 eta = double(k / np) / p2.n_subdivisions;
+                    x = (1 - xi) * (1 - eta) * p2.vertices[0] + xi * (1 - eta) * p2.vertices[1] +
+                        (1 - xi) * eta * p2.vertices[2] + xi * eta * p2.vertices[3];
+                  }
+                p3.data(n_data, k)     = x[0];
+                p3.data(n_data + 1, k) = x[1];
+                p3.data(n_data + 2, k) = 0;
+              }
+            patches.push_back(std::move(p3));
+          }
+        std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                               DataComponentInterpretation::DataComponentInterpretation>>
+          vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
+                     {3, 5, "position", DataComponentInterpretation::component_is_part_of_vector},
+                     {6, 8, "traction_E3", DataComponentInterpretation::component_is_part_of_vector}};
+        DataOutBase::VtkFlags flags;
+        flags.write_higher_order_cells = false;
+        io::write_file_atomically(output_directory + "/" + name, [&](std::ostream &out) {
+          DataOutBase::write_vtu(patches, names, vectors, flags, out);
+        });
       }
       pvd->add(t, name);
       const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
