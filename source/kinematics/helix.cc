@@ -63,7 +63,12 @@ namespace cosmo
       // Circular helix of radius a, axial speed c per unit turning angle:
       // curvature a/(a^2+c^2), torsion c/(a^2+c^2) (signed by handedness).
       if (h.radius == 0)
-        return h; // straight: no curvature, and torsion of a line is undefined
+        {
+          // Straight: no curvature, and torsion of a line is undefined; the
+          // sense of the twist of the frame about it is still meaningful.
+          h.torsion_sign = (e.nu * e.kappa >= 0) ? 1 : -1;
+          return h;
+        }
       const double c = vpar / k;
       const double d = h.radius * h.radius + c * c;
       h.curvature    = d > 0 ? h.radius / d : 0;
@@ -79,7 +84,7 @@ namespace cosmo
         s << "straight centreline";
       else if (radius == 0)
         s << "straight centreline twisted about itself, " << curvature_rate
-          << " rad per unit length";
+          << " rad per unit length, " << (torsion_sign >= 0 ? "right" : "left") << "-handed";
       else if (handedness == 0)
         s << "planar circle of radius " << radius;
       else

@@ -66,10 +66,19 @@ namespace cosmo
             Vector<double> v(n_components);
             f->vector_value(Point<2>(0.1234, 0.2345), v);
           }
+        catch (ExceptionBase &e)
+          {
+            // print_info: the message without deal.II's stack trace.
+            std::ostringstream info;
+            e.print_info(info);
+            throw io::InputError(where, entry, text,
+                                 "a muparser expression of x and y (and pi); the parser said: " +
+                                   info.str());
+          }
         catch (std::exception &e)
           {
             throw io::InputError(where, entry, text,
-                                 "a muparser expression of x and y; the parser said: " +
+                                 "a muparser expression of x and y (and pi); the parser said: " +
                                    std::string(e.what()));
           }
         return f;

@@ -87,6 +87,7 @@ namespace cosmo
       Tensor<1, 3> axis;               ///< unit helix axis, in the frame at s = 0
       double       curvature      = 0; ///< curvature of the centreline curve
       double       torsion        = 0; ///< torsion of the centreline curve
+      int          torsion_sign   = 1; ///< straight rods: sense of the twist of the frame
       std::string  description() const;
     };
 
