@@ -132,6 +132,16 @@ namespace
         std::cout << tag << ", " << p->n_field_dofs() << " DoFs\n";
         // Q2 with a Q2 mapping on 320 cells: the geometric (mapping) error
         // dominates, measured 3.1e-6 in A and 6.2e-6 in I; tolerance 1e-5.
+        // On the discrete geometry: the stretch field (linear in X) is in the
+        // FE space, EA = E A_h to round-off; so is bending at Poisson 0. The
+        // anticlastic in-plane field of bending (quadratic in X) is not
+        // exactly representable on curved Q2 cells: measured 3.6e-7 at
+        // Poisson 0.3, 1.1e-6 at 0.45.
+        const auto & sec  = p->section();
+        const double tolI = poisson == 0 ? 1e-12 : 3e-6;
+        check_close(tag + ": EA = E A_h (discrete area)", K(2, 2), E * sec.area, 1e-12);
+        check_close(tag + ": EI1 = E I11_h", K(3, 3), E * sec.I11, tolI);
+        check_close(tag + ": EI2 = E I22_h", K(4, 4), E * sec.I22, tolI);
         check_close(tag + ": EA = E pi R^2", K(2, 2), E * A, 1e-5);
         check_close(tag + ": EI1 = E pi R^4/4", K(3, 3), E * I, 1e-5);
         check_close(tag + ": EI2 = E pi R^4/4", K(4, 4), E * I, 1e-5);
@@ -303,6 +313,9 @@ namespace
       for (unsigned int k = 0; k < 6; ++k)
         check_close("K(" + std::to_string(a) + "," + std::to_string(k) + ") = FD of resultants",
                     s0.stiffness(a, k), dres[a][k], 1e-6, 1e-8);
+    // At a general grown and strained state (all couplings nonzero) the
+    // condensed stiffness, not symmetrized anywhere, is symmetric.
+    check_symmetric_positive(s0.stiffness, "general state");
   }
 
   // The AD tangent (bordered Jacobian) against central differences of the
@@ -322,26 +335,12 @@ namespace
     for (unsigned int i = 0; i < n; ++i)
       U[i] += 0.01 * std::sin(1.7 * i + 0.3);
     AssertThrow(p->setup_jacobian(U) == 0, ExcInternalError());
-    const auto &J  = p->bordered_system();
-    const unsigned int ni = J.n_inner();
     Vector<double> v(n);
     for (unsigned int i = 0; i < n; ++i)
       v[i] = std::cos(0.9 * i);
-    // J v from the blocks.
-    Vector<double> vin(ni), Jv(n), Avin(ni);
-    for (unsigned int i = 0; i < ni; ++i)
-      vin[i] = v[i];
-    J.matrix.vmult(Avin, vin);
-    for (unsigned int i = 0; i < ni; ++i)
-      Jv[i] = Avin[i];
-    for (unsigned int k = 0; k < 6; ++k)
-      {
-        Jv.add(v[ni + k], [&] { Vector<double> b(n); for (unsigned int i = 0; i < ni; ++i) b[i] = J.border_columns[k][i]; return b; }());
-        double r = J.border_columns[k] * vin;
-        for (unsigned int l = 0; l < 6; ++l)
-          r += J.border_block(k, l) * v[ni + l];
-        Jv[ni + k] = r;
-      }
+    Vector<double> Jv;
+    const auto &   free = p->free_strains();
+    p->bordered_system().vmult(Jv, v, std::vector<bool>(free.begin(), free.end()));
     const double   h = 1e-6;
     Vector<double> Up = U, Um = U, Rp(n), Rm(n);
     Up.add(h, v);
@@ -355,7 +354,8 @@ namespace
     diff -= Jv;
     std::cout << "tangent vs FD of residual, " << n << " unknowns\n";
     // h = 1e-6: truncation 1e-12 |R'''|, round-off eps |R| / h ~ 1e-10.
-    check_close("max |J v - FD| / max |J v|", diff.linfty_norm() / Jv.linfty_norm(), 0, 0, 1e-7);
+    // Measured 3.5e-10.
+    check_close("max |J v - FD| / max |J v|", diff.linfty_norm() / Jv.linfty_norm(), 0, 0, 1e-8);
   }
 
   double

@@ -298,7 +298,7 @@ namespace cosmo
                 material.growth.value(fev.quadrature_point(q), load_parameter);
               if (!(determinant(Fg) > 0))
                 throw io::InputError(
-                  "Material", "Growth factor", material.growth.description(),
+                  material.section, "Growth factor", material.growth.factor_expression(),
                   "det Fg = " + std::to_string(determinant(Fg)) + " <= 0 at (" +
                     std::to_string(fev.quadrature_point(q)[0]) + ", " +
                     std::to_string(fev.quadrature_point(q)[1]) +
@@ -313,8 +313,7 @@ namespace cosmo
     CrossSectionProblem::assemble(const Vector<double> &U,
                                   Vector<double> *      R,
                                   const bool            jacobian,
-                                  double *              energy_out,
-                                  double *              min_elastic_J)
+                                  AssemblyResults *     results)
     {
       update_growth_cache();
       const auto         e = strains_of(U);
@@ -553,12 +552,12 @@ namespace cosmo
                 }
           system->border_block = E;
         }
-      last_state.resultants = resultants;
-      last_state.energy     = energy;
-      if (energy_out)
-        *energy_out = energy;
-      if (min_elastic_J)
-        *min_elastic_J = minJ;
+      if (results)
+        {
+          results->energy        = energy;
+          results->min_elastic_J = minJ;
+          results->resultants    = resultants;
+        }
       return 0;
     }
 
@@ -587,7 +586,6 @@ namespace cosmo
           say(std::string("  factorization failed: ") + e.what());
           return 1;
         }
-      ++n_jacobians;
       ++total_newton_iterations;
       return 0;
     }
@@ -623,10 +621,10 @@ namespace cosmo
     CrossSectionProblem::current_state()
     {
       CrossSectionState s;
-      double            energy = 0, minJ = 0;
+      AssemblyResults   a;
       {
         io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
-        AssertThrow(assemble(solution, nullptr, true, &energy, &minJ) == 0,
+        AssertThrow(assemble(solution, nullptr, true, &a) == 0,
                     ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
       }
       {
@@ -634,28 +632,16 @@ namespace cosmo
         system->factorize();
       }
       s.t             = load_parameter;
-      s.energy        = energy;
-      s.min_elastic_J = minJ;
+      s.energy        = a.energy;
+      s.min_elastic_J = a.min_elastic_J;
       s.strains       = strains_of(solution);
-      s.resultants    = last_state.resultants;
+      s.resultants    = a.resultants;
       for (unsigned int k = 0; k < n_gauge; ++k)
         s.multipliers[k] = solution[n_u() + k];
       s.stiffness = system->schur_complement();
       std::vector<bool> free(strain_is_free.begin(), strain_is_free.end());
       s.n_negative = system->n_negative_eigenvalues(free, n_gauge);
       return s;
-    }
-
-    double
-    CrossSectionProblem::energy_at_fixed_field(const std::array<double, 6> &strains)
-    {
-      Vector<double> U = solution;
-      for (unsigned int k = 0; k < n_strains; ++k)
-        U[n_u() + n_gauge + k] = strains[k];
-      double energy = 0;
-      AssertThrow(assemble(U, nullptr, false, &energy) == 0,
-                  ExcMessage("inadmissible state (det Fe <= 0)"));
-      return energy;
     }
 
     CrossSectionState
@@ -695,11 +681,12 @@ namespace cosmo
         last_state = current_state();
       else
         {
-          double energy = 0, minJ = 0;
-          assemble(solution, nullptr, false, &energy, &minJ);
+          AssemblyResults a;
+          assemble(solution, nullptr, false, &a);
           last_state.t             = load_parameter;
-          last_state.energy        = energy;
-          last_state.min_elastic_J = minJ;
+          last_state.energy        = a.energy;
+          last_state.min_elastic_J = a.min_elastic_J;
+          last_state.resultants    = a.resultants;
           last_state.strains       = strains_of(solution);
           for (unsigned int k = 0; k < n_gauge; ++k)
             last_state.multipliers[k] = solution[n_u() + k];
@@ -899,12 +886,12 @@ namespace cosmo
       }
       pvd->add(t, name);
       const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
-      write_rod_piece(step, t, output_directory + "/" + rod_name);
+      write_rod_piece(output_directory + "/" + rod_name);
       pvd_rod->add(t, rod_name);
     }
 
     void
-    CrossSectionProblem::write_rod_piece(const unsigned int, const double, const std::string &file) const
+    CrossSectionProblem::write_rod_piece(const std::string &file) const
     {
       // A short piece of the rod in 3D: the deformed section swept along the
       // helix, x(X1, X2, X3) = r(X3) + R(X3) w(X1, X2).

@@ -97,10 +97,6 @@ namespace cosmo
         return strain_is_free;
       }
 
-      /// Energy per unit length at the current field, for given strains (no solve).
-      double
-      energy_at_fixed_field(const std::array<double, 6> &strains);
-
       /// Override the target strains of the .prm (prescribed ones reach them at t = 1).
       void
       set_target_strains(const std::array<double, 6> &strains);
@@ -184,7 +180,6 @@ namespace cosmo
       std::vector<io::JSON>            step_records;
       CrossSectionState                last_state;
       unsigned int                     total_newton_iterations = 0;
-      unsigned int                     n_jacobians              = 0;
       bool                             quiet                    = false;
 
       unsigned int
@@ -199,15 +194,27 @@ namespace cosmo
       void
       update_growth_cache();
 
-      /// Energy assembly: residual (always) and, if requested, the bordered Jacobian.
+      /// Integrals that come with every assembly.
+      struct AssemblyResults
+      {
+        double                energy        = 0; ///< Psi
+        double                min_elastic_J = 0; ///< smallest det Fe
+        std::array<double, 6> resultants{};      ///< dPsi/de at fixed field
+      };
+
+      /**
+       * Energy assembly at U: the residual (if `residual`), the bordered
+       * Jacobian (if `jacobian`), and the integrals in `results` (if given).
+       * Returns 1 if U is inadmissible (det Fe <= 0 somewhere).
+       */
       int
       assemble(const Vector<double> &U, Vector<double> *residual, bool jacobian,
-               double *energy = nullptr, double *min_elastic_J = nullptr);
+               AssemblyResults *results = nullptr);
 
       void
       write_vtu(unsigned int step, double t);
       void
-      write_rod_piece(unsigned int step, double t, const std::string &file) const;
+      write_rod_piece(const std::string &file) const;
       void
       write_summary(const std::string &status, const std::string &message) const;
       void

@@ -38,19 +38,42 @@ namespace cosmo
       sensitivities = border_columns;
       direct_solver.solve(sensitivities);
       const unsigned int nb = n_border();
+      // Not symmetrized: S is symmetric in exact arithmetic, and its
+      // measured asymmetry is a check of the assembly and the solver.
       for (unsigned int i = 0; i < nb; ++i)
         for (unsigned int j = 0; j < nb; ++j)
           schur(i, j) = border_block(i, j) - border_columns[i] * sensitivities[j];
-      // S is symmetric in exact arithmetic; remove the round-off asymmetry.
-      for (unsigned int i = 0; i < nb; ++i)
-        for (unsigned int j = 0; j < i; ++j)
-          schur(i, j) = schur(j, i) = 0.5 * (schur(i, j) + schur(j, i));
     }
 
     void
-    BorderedSystem::solve_inner(Vector<double> &x) const
+    BorderedSystem::vmult(Vector<double> &         dst,
+                          const Vector<double> &   src,
+                          const std::vector<bool> &free) const
     {
-      direct_solver.solve(x);
+      const unsigned int ni = n_inner(), nb = n_border();
+      AssertDimension(src.size(), ni + nb);
+      Vector<double> src_in(ni), dst_in(ni);
+      for (unsigned int i = 0; i < ni; ++i)
+        src_in[i] = src[i];
+      matrix.vmult(dst_in, src_in);
+      dst.reinit(ni + nb);
+      for (unsigned int k = 0; k < nb; ++k)
+        for (unsigned int i = 0; i < ni; ++i)
+          dst_in[i] += border_columns[k][i] * src[ni + k];
+      for (unsigned int i = 0; i < ni; ++i)
+        dst[i] = dst_in[i];
+      for (unsigned int k = 0; k < nb; ++k)
+        {
+          if (!free[k])
+            {
+              dst[ni + k] = src[ni + k];
+              continue;
+            }
+          double r = border_columns[k] * src_in;
+          for (unsigned int l = 0; l < nb; ++l)
+            r += border_block(k, l) * src[ni + l];
+          dst[ni + k] = r;
+        }
     }
 
     void

@@ -156,7 +156,8 @@ namespace cosmo
           if (!regions.empty())
             {
               GrowingMaterial m;
-              m.name = prm.get("Name");
+              m.name    = prm.get("Name");
+              m.section = section;
               const double E = prm.get_double("Young's modulus");
               if (!(E > 0))
                 throw io::InputError(section, "Young's modulus", prm.get("Young's modulus"),

@@ -77,22 +77,19 @@ namespace cosmo
       void
       solve(const Vector<double> &rhs, Vector<double> &dst, const std::vector<bool> &free) const;
 
-      /// Solve with A only (for vectors of size n_inner()).
+      /**
+       * dst = J src with the assembled blocks (rows of prescribed border
+       * unknowns are the identity): the Jacobian as an operator, for
+       * residual checks, predictors and tests of the assembly.
+       */
       void
-      solve_inner(Vector<double> &rhs_and_solution) const;
+      vmult(Vector<double> &dst, const Vector<double> &src, const std::vector<bool> &free) const;
 
       /// S = E - B^T A^-1 B, the Schur complement on the border (condensed stiffness).
       const FullMatrix<double> &
       schur_complement() const
       {
         return schur;
-      }
-
-      /// Y = A^-1 B: the sensitivity of the inner unknowns to each border unknown.
-      const std::vector<Vector<double>> &
-      border_sensitivities() const
-      {
-        return sensitivities;
       }
 
       /**

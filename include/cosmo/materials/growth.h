@@ -51,12 +51,13 @@ namespace cosmo
       Tensor<2, 3>
       value(const Point<2> &X, double t) const;
 
-      Kind
-      kind() const
+      /// The 'Growth factor' entry as given.
+      const std::string &
+      factor_expression() const
       {
-        return growth_kind;
+        return factor_text;
       }
-      /// Scale all factors' deviation from 1 (used by parameter studies).
+      /// One line for logs and summary.json.
       std::string
       description() const;
 

@@ -39,6 +39,7 @@ namespace cosmo
     {
     public:
       std::string     name;
+      std::string     section; ///< its parameter section, for error messages
       HyperelasticLaw law;
       GrowthTensor    growth;
 
