@@ -17,7 +17,8 @@ using namespace cosmo;
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // All cores for the assembly (as the application does).
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   const unsigned int max_ref = argc > 1 ? std::atoi(argv[1]) : 5;
   std::cout << "natural shape of the unit disc, axial growth g = 1 + 0.3 X1, Q2\n"
             << std::setw(6) << "ref" << std::setw(9) << "DoFs" << std::setw(8) << "Newton"

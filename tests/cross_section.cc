@@ -6,6 +6,7 @@
 // meshes used, or Newton/round-off level where the discrete answer is exact).
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include "cross_section_problem.h"
@@ -354,6 +355,17 @@ namespace
     diff -= Jv;
     std::cout << "tangent vs FD of residual, " << n << " unknowns\n";
     // h = 1e-6: truncation 1e-12 |R'''|, round-off eps |R| / h ~ 1e-10.
+    // The threaded assembly (WorkStream) gives the residual of the serial one.
+    {
+      Vector<double> R1(n), R2(n);
+      MultithreadInfo::set_thread_limit(1);
+      p->residual(U, R1);
+      MultithreadInfo::set_thread_limit(2);
+      p->residual(U, R2);
+      MultithreadInfo::set_thread_limit(1);
+      R2 -= R1;
+      check_close("threaded vs serial residual, max diff / max |R|", R2.linfty_norm() / R1.linfty_norm(), 0, 0, 1e-15);
+    }
     // Measured 3.5e-10.
     check_close("max |J v - FD| / max |J v|", diff.linfty_norm() / Jv.linfty_norm(), 0, 0, 1e-8);
   }

@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -309,6 +310,89 @@ namespace cosmo
       growth_cached_for = load_parameter;
     }
 
+    namespace
+    {
+      // Sparse rows of dFbar/dU_i and dFbar/de_k: at most 5 of the 9 entries.
+      struct SparseRow
+      {
+        unsigned int n = 0;
+        unsigned int a[5];
+        double       v[5];
+        void
+        add(unsigned int aa, double vv)
+        {
+          if (vv != 0.)
+            {
+              a[n] = aa;
+              v[n] = vv;
+              ++n;
+            }
+        }
+        double
+        dot(const std::array<double, 9> &x) const
+        {
+          double r = 0;
+          for (unsigned int z = 0; z < n; ++z)
+            r += x[a[z]] * v[z];
+          return r;
+        }
+      };
+
+      // out = C s for the 9x9 material tangent C.
+      void
+      apply_tangent(const std::array<double, 81> &C, const SparseRow &s, std::array<double, 9> &out)
+      {
+        for (unsigned int a = 0; a < 9; ++a)
+          {
+            double v = 0;
+            for (unsigned int z = 0; z < s.n; ++z)
+              v += C[9 * a + s.a[z]] * s.v[z];
+            out[a] = v;
+          }
+      }
+
+      /// Per-thread work space of the assembly (WorkStream scratch).
+      struct AssemblyScratch
+      {
+        AssemblyScratch(const Mapping<2> &mapping, const FiniteElement<2> &fe, const Quadrature<2> &q)
+          : fev(mapping, fe, q,
+                update_values | update_gradients | update_quadrature_points | update_JxW_values)
+          , U_local(fe.n_dofs_per_cell())
+          , B(fe.n_dofs_per_cell())
+          , CB(fe.n_dofs_per_cell())
+        {}
+        AssemblyScratch(const AssemblyScratch &o)
+          : AssemblyScratch(o.fev.get_mapping(), o.fev.get_fe(), o.fev.get_quadrature())
+        {}
+        FEValues<2>                                  fev;
+        std::vector<double>                          U_local;
+        std::vector<SparseRow>                       B;
+        std::vector<std::array<double, 9>>           CB;
+        std::array<SparseRow, n_strains>             D;
+        std::array<std::array<double, 9>, n_strains> CD;
+        materials::EnergyDerivatives                 d;
+      };
+
+      /// One cell's contributions (WorkStream copy data).
+      struct CellContribution
+      {
+        explicit CellContribution(const unsigned int dpc)
+          : idx(dpc)
+          , r(dpc)
+          , K(dpc, dpc)
+          , B(dpc, n_strains)
+          , E(n_strains, n_strains)
+        {}
+        std::vector<types::global_dof_index> idx;
+        Vector<double>                       r;
+        FullMatrix<double>                   K, B, E;
+        std::array<double, 6>                resultants{};
+        double                               energy     = 0;
+        double                               min_J      = 0;
+        bool                                 admissible = true;
+      };
+    } // namespace
+
     int
     CrossSectionProblem::assemble(const Vector<double> &U,
                                   Vector<double> *      R,
@@ -326,197 +410,167 @@ namespace cosmo
           e_x_e[m][c] = unit_cross(m, c);
 
       const QGauss<2>    quadrature(degree + 1);
-      const unsigned int nq = quadrature.size();
-      FEValues<2>        fev(*mapping, *fe, quadrature,
-                             update_values | update_gradients | update_quadrature_points |
-                               update_JxW_values);
+      const unsigned int nq  = quadrature.size();
       const unsigned int dpc = fe->n_dofs_per_cell();
-      std::vector<types::global_dof_index> idx(dpc);
-      std::vector<unsigned int>            comp(dpc);
+      std::vector<unsigned int> comp(dpc);
       for (unsigned int i = 0; i < dpc; ++i)
         comp[i] = fe->system_to_component_index(i).first;
 
-      Vector<double>     cell_r(dpc);
-      FullMatrix<double> cell_K(dpc, dpc);
-      FullMatrix<double> cell_B(dpc, n_strains);
-      FullMatrix<double> E(n_strains, n_strains);
+      // Cells are independent: the worker runs on all cores, the copier adds
+      // the contributions in cell order (so sums are reproducible).
+      auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
+                        AssemblyScratch &                                  scratch,
+                        CellContribution &                                 out) {
+        auto &fev = scratch.fev;
+        fev.reinit(cell);
+        cell->get_dof_indices(out.idx);
+        for (unsigned int i = 0; i < dpc; ++i)
+          scratch.U_local[i] = U[out.idx[i]];
+        const auto &material = materials.material(cell->material_id());
+        out.r                = 0;
+        out.resultants.fill(0.);
+        out.energy     = 0;
+        out.min_J      = std::numeric_limits<double>::max();
+        out.admissible = true;
+        if (jacobian)
+          {
+            out.K = 0;
+            out.B = 0;
+            out.E = 0;
+          }
+        auto &B = scratch.B;
+        auto &D = scratch.D;
+        auto &d = scratch.d;
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const double   dA = fev.JxW(q);
+            const Point<2> X  = fev.quadrature_point(q);
+            Tensor<1, 3>   u;
+            Tensor<2, 3>   F; // columns 0, 1: dw/dX1, dw/dX2 (u part first)
+            for (unsigned int i = 0; i < dpc; ++i)
+              {
+                const double N = fev.shape_value(i, q);
+                const auto   g = fev.shape_grad(i, q);
+                u[comp[i]] += scratch.U_local[i] * N;
+                F[comp[i]][0] += scratch.U_local[i] * g[0];
+                F[comp[i]][1] += scratch.U_local[i] * g[1];
+              }
+            const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
+            F[0][0] += 1;
+            F[1][1] += 1;
+            const Tensor<1, 3> col3 = nu + cross_product_3d(kappa, w);
+            for (unsigned int r = 0; r < 3; ++r)
+              F[r][2] = col3[r];
+
+            const Tensor<2, 3> &Fg = growth_at_qp[cell->active_cell_index() * nq + q];
+            material.evaluate(F, Fg, jacobian, d);
+            if (!d.admissible)
+              {
+                out.admissible = false;
+                return;
+              }
+            out.energy += d.energy * dA;
+            out.min_J = std::min(out.min_J, determinant(F) / determinant(Fg));
+            const auto &P = d.P;
+
+            for (unsigned int i = 0; i < dpc; ++i)
+              {
+                const double       N = fev.shape_value(i, q);
+                const auto         g = fev.shape_grad(i, q);
+                const unsigned int c = comp[i];
+                B[i].n               = 0;
+                B[i].add(3 * c, g[0]);
+                B[i].add(3 * c + 1, g[1]);
+                for (unsigned int r = 0; r < 3; ++r)
+                  B[i].add(3 * r + 2, Kx[r][c] * N);
+                out.r[i] += B[i].dot(P) * dA;
+              }
+            // dFbar/d(strain k): nu_k -> e_k in column 3; kappa_k -> e_k x w.
+            for (unsigned int k = 0; k < n_strains; ++k)
+              {
+                D[k].n = 0;
+                if (k < 3)
+                  D[k].add(3 * k + 2, 1.);
+                else
+                  {
+                    Tensor<1, 3> ek;
+                    ek[k - 3]             = 1;
+                    const Tensor<1, 3> ew = cross_product_3d(ek, w);
+                    for (unsigned int r = 0; r < 3; ++r)
+                      D[k].add(3 * r + 2, ew[r]);
+                  }
+                out.resultants[k] += D[k].dot(P) * dA;
+              }
+
+            if (!jacobian)
+              continue;
+            for (unsigned int i = 0; i < dpc; ++i)
+              apply_tangent(d.C, B[i], scratch.CB[i]);
+            for (unsigned int k = 0; k < n_strains; ++k)
+              apply_tangent(d.C, D[k], scratch.CD[k]);
+
+            for (unsigned int i = 0; i < dpc; ++i)
+              {
+                const auto &CBi = scratch.CB[i];
+                for (unsigned int j = 0; j <= i; ++j)
+                  out.K(i, j) += B[j].dot(CBi) * dA;
+                const double       N = fev.shape_value(i, q);
+                const unsigned int c = comp[i];
+                for (unsigned int k = 0; k < n_strains; ++k)
+                  {
+                    double bik = D[k].dot(CBi);
+                    if (k >= 3) // P : d2 Fbar / dU_i dkappa_k, column 3 = e_k x e_c N
+                      {
+                        const Tensor<1, 3> &ex = e_x_e[k - 3][c];
+                        for (unsigned int r = 0; r < 3; ++r)
+                          bik += P[3 * r + 2] * ex[r] * N;
+                      }
+                    out.B(i, k) += bik * dA;
+                  }
+              }
+            for (unsigned int k = 0; k < n_strains; ++k)
+              for (unsigned int l = 0; l < n_strains; ++l)
+                out.E(k, l) += D[l].dot(scratch.CD[k]) * dA;
+          }
+        if (jacobian)
+          for (unsigned int i = 0; i < dpc; ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              out.K(j, i) = out.K(i, j);
+      };
+
       std::array<double, 6> resultants{};
       double                energy = 0, minJ = std::numeric_limits<double>::max();
-      std::vector<double>   U_local(dpc);
-
-      // Sparse rows of dFbar/dU_i: at most 5 nonzero entries of the 9.
-      struct SparseRow
-      {
-        unsigned int n = 0;
-        unsigned int a[5];
-        double       v[5];
-        void
-        add(unsigned int aa, double vv)
-        {
-          if (vv != 0.)
-            {
-              a[n] = aa;
-              v[n] = vv;
-              ++n;
-            }
-        }
-      };
-      std::vector<SparseRow>              B(dpc);
-      std::vector<std::array<double, 9>>  CB(dpc);
-      std::array<SparseRow, n_strains>    D;
-      std::array<std::array<double, 9>, n_strains> CD;
-      materials::EnergyDerivatives        d;
-
+      bool                  admissible = true;
+      FullMatrix<double>    E(n_strains, n_strains);
       if (R)
-        {
-          R->reinit(n_unknowns());
-        }
+        R->reinit(n_unknowns());
       if (jacobian)
         system->clear();
-
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fev.reinit(cell);
-          cell->get_dof_indices(idx);
+      auto copier = [&](const CellContribution &c) {
+        if (!c.admissible)
+          admissible = false;
+        if (!admissible)
+          return;
+        energy += c.energy;
+        minJ = std::min(minJ, c.min_J);
+        for (unsigned int k = 0; k < n_strains; ++k)
+          resultants[k] += c.resultants[k];
+        if (R)
           for (unsigned int i = 0; i < dpc; ++i)
-            U_local[i] = U[idx[i]];
-          const auto &material = materials.material(cell->material_id());
-          cell_r               = 0;
-          if (jacobian)
-            {
-              cell_K = 0;
-              cell_B = 0;
-            }
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const double   dA = fev.JxW(q);
-              const Point<2> X  = fev.quadrature_point(q);
-              Tensor<1, 3>   u;
-              Tensor<2, 3>   F; // columns 0, 1: dw/dX1, dw/dX2 (u part first)
-              for (unsigned int i = 0; i < dpc; ++i)
-                {
-                  const double N = fev.shape_value(i, q);
-                  const auto   g = fev.shape_grad(i, q);
-                  u[comp[i]] += U_local[i] * N;
-                  F[comp[i]][0] += U_local[i] * g[0];
-                  F[comp[i]][1] += U_local[i] * g[1];
-                }
-              const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
-              F[0][0] += 1;
-              F[1][1] += 1;
-              const Tensor<1, 3> col3 = nu + cross_product_3d(kappa, w);
-              for (unsigned int r = 0; r < 3; ++r)
-                F[r][2] = col3[r];
-
-              const Tensor<2, 3> &Fg = growth_at_qp[cell->active_cell_index() * nq + q];
-              material.evaluate(F, Fg, jacobian, d);
-              if (!d.admissible)
-                return 1; // recoverable: Newton's line search or the driver cuts back
-              energy += d.energy * dA;
-              minJ = std::min(minJ, determinant(F) / determinant(Fg));
-              const auto &P = d.P;
-
-              for (unsigned int i = 0; i < dpc; ++i)
-                {
-                  const double N = fev.shape_value(i, q);
-                  const auto   g = fev.shape_grad(i, q);
-                  const unsigned int c = comp[i];
-                  B[i].n               = 0;
-                  B[i].add(3 * c, g[0]);
-                  B[i].add(3 * c + 1, g[1]);
-                  for (unsigned int r = 0; r < 3; ++r)
-                    B[i].add(3 * r + 2, Kx[r][c] * N);
-                  double ri = 0;
-                  for (unsigned int z = 0; z < B[i].n; ++z)
-                    ri += P[B[i].a[z]] * B[i].v[z];
-                  cell_r[i] += ri * dA;
-                }
-              // dFbar/d(strain k): nu_k -> e_k in column 3; kappa_k -> e_k x w.
-              for (unsigned int k = 0; k < n_strains; ++k)
-                {
-                  D[k].n = 0;
-                  if (k < 3)
-                    D[k].add(3 * k + 2, 1.);
-                  else
-                    {
-                      Tensor<1, 3> ek;
-                      ek[k - 3]             = 1;
-                      const Tensor<1, 3> ew = cross_product_3d(ek, w);
-                      for (unsigned int r = 0; r < 3; ++r)
-                        D[k].add(3 * r + 2, ew[r]);
-                    }
-                  double nk = 0;
-                  for (unsigned int z = 0; z < D[k].n; ++z)
-                    nk += P[D[k].a[z]] * D[k].v[z];
-                  resultants[k] += nk * dA;
-                }
-
-              if (!jacobian)
-                continue;
-              const auto &C = d.C;
-              auto        apply_C = [&C](const SparseRow &s, std::array<double, 9> &out) {
-                for (unsigned int a = 0; a < 9; ++a)
-                  {
-                    double v = 0;
-                    for (unsigned int z = 0; z < s.n; ++z)
-                      v += C[9 * a + s.a[z]] * s.v[z];
-                    out[a] = v;
-                  }
-              };
-              for (unsigned int i = 0; i < dpc; ++i)
-                apply_C(B[i], CB[i]);
-              for (unsigned int k = 0; k < n_strains; ++k)
-                apply_C(D[k], CD[k]);
-
-              for (unsigned int i = 0; i < dpc; ++i)
-                {
-                  for (unsigned int j = 0; j <= i; ++j)
-                    {
-                      double kij = 0;
-                      for (unsigned int z = 0; z < B[j].n; ++z)
-                        kij += CB[i][B[j].a[z]] * B[j].v[z];
-                      cell_K(i, j) += kij * dA;
-                    }
-                  const double       N = fev.shape_value(i, q);
-                  const unsigned int c = comp[i];
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    {
-                      double bik = 0;
-                      for (unsigned int z = 0; z < D[k].n; ++z)
-                        bik += CB[i][D[k].a[z]] * D[k].v[z];
-                      if (k >= 3) // P : d2 Fbar / dU_i dkappa_k, column 3 = e_k x e_c N
-                        {
-                          const Tensor<1, 3> &ex = e_x_e[k - 3][c];
-                          for (unsigned int r = 0; r < 3; ++r)
-                            bik += P[3 * r + 2] * ex[r] * N;
-                        }
-                      cell_B(i, k) += bik * dA;
-                    }
-                }
-              for (unsigned int k = 0; k < n_strains; ++k)
-                for (unsigned int l = 0; l < n_strains; ++l)
-                  {
-                    double ekl = 0;
-                    for (unsigned int z = 0; z < D[l].n; ++z)
-                      ekl += CD[k][D[l].a[z]] * D[l].v[z];
-                    E(k, l) += ekl * dA;
-                  }
-            }
-
-          if (R)
+            (*R)[c.idx[i]] += c.r[i];
+        if (jacobian)
+          {
+            system->matrix.add(c.idx, c.K);
             for (unsigned int i = 0; i < dpc; ++i)
-              (*R)[idx[i]] += cell_r[i];
-          if (jacobian)
-            {
-              for (unsigned int i = 0; i < dpc; ++i)
-                for (unsigned int j = 0; j < i; ++j)
-                  cell_K(j, i) = cell_K(i, j);
-              system->matrix.add(idx, cell_K);
-              for (unsigned int i = 0; i < dpc; ++i)
-                for (unsigned int k = 0; k < n_strains; ++k)
-                  system->border_columns[k][idx[i]] += cell_B(i, k);
-            }
-        }
+              for (unsigned int k = 0; k < n_strains; ++k)
+                system->border_columns[k][c.idx[i]] += c.B(i, k);
+            E.add(1., c.E);
+          }
+      };
+      WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
+                      AssemblyScratch(*mapping, *fe, quadrature), CellContribution(dpc));
+      if (!admissible)
+        return 1; // recoverable: Newton's line search or the driver cuts back
 
       // Gauge constraints with their multipliers, and the strain rows.
       const unsigned int nu_ = n_u();
