@@ -259,16 +259,25 @@ namespace
     const double R = 1, tau = 0.6, poisson = 0.4995, E = 3.0, mu = E / (2 * (1 + poisson));
     const std::string geo = section(" set Shape = circle\n set Radius = 1", 3);
     const Strains     e   = {{0, 0, 1, 0, 0, tau}};
-    {
-      auto p = make_problem(geo + material(1, "1", E, poisson) + strains_block("prescribed strains", e));
-      const auto s = p->solve();
-      std::cout << "finite torsion at fixed length, Poisson " << poisson << "\n";
-      // The compressible model differs from the incompressible closed form
-      // by O(mu/kappa) = O(1 - 2 Poisson) = 1e-3 (measured 1.1e-3 in n3, 1.3e-4 in m3).
-      check_close("axial force n3 = -pi mu tau^2 R^4/4 (Poynting)", s.resultants[2],
-                  -M_PI * mu * tau * tau * std::pow(R, 4) / 4, 2e-3);
-      check_close("torque m3 = pi mu tau R^4/2", s.resultants[5], M_PI * mu * tau * std::pow(R, 4) / 2, 5e-4);
-    }
+    // Fixed length, two compressibilities: the compressible model must
+    // approach the incompressible closed form like O(1 - 2 Poisson).
+    // Measured relative errors: n3 1.13 (1 - 2 Poisson), m3 0.13 (1 - 2 Poisson)
+    // down to the Q2 mapping error of the circle (~6e-6).
+    std::vector<double> n3_errors;
+    for (const double v : {0.4995, 0.49995})
+      {
+        const double mu_v = E / (2 * (1 + v)), delta = 1 - 2 * v;
+        auto p = make_problem(geo + material(1, "1", E, v) + strains_block("prescribed strains", e));
+        const auto   s  = p->solve();
+        const double n3 = -M_PI * mu_v * tau * tau * std::pow(R, 4) / 4;
+        std::cout << "finite torsion at fixed length, Poisson " << v << "\n";
+        check_close("axial force n3 = -pi mu tau^2 R^4/4 (Poynting)", s.resultants[2], n3, 1.5 * delta);
+        check_close("torque m3 = pi mu tau R^4/2", s.resultants[5],
+                    M_PI * mu_v * tau * std::pow(R, 4) / 2, 0.2 * delta + 1e-5);
+        n3_errors.push_back(std::abs(s.resultants[2] / n3 - 1));
+      }
+    check_close("n3 error falls like 1 - 2 Poisson (ratio for a factor 10)",
+                n3_errors[0] / n3_errors[1], 10, 0.2);
     {
       auto p = make_problem(geo + material(1, "1", E, poisson) + strains_block("prescribed strains", e, "nu3"));
       const auto   s      = p->solve();
