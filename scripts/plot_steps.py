@@ -69,7 +69,7 @@ def reexec_with_system_python():
     env = dict(os.environ, PLOT_STEPS_REEXEC="1")
     sys.stdout.flush()
     os.execve(SYSTEM_PYTHON,
-              [SYSTEM_PYTHON, os.path.abspath(__file__)] + sys.argv[1:], env)
+              [SYSTEM_PYTHON, os.path.abspath(sys.argv[0])] + sys.argv[1:], env)
 
 
 def column_name(header):

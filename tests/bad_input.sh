@@ -41,6 +41,16 @@ expect "growth with det Fg <= 0" "det Fg" detfg.prm
 expect "region without a material" "no material covers region 2" region.prm
 { base; printf 'subsection Cross-section\n set Shape = gmsh\n set Mesh file = missing.msh\nend\n'; } > msh.prm
 expect "gmsh mesh file missing" "Mesh file" msh.prm
+{ base; printf 'subsection Cross-section\n set Shape = gmsh\n set Mesh file = missing.geo\nend\n'; } > geo.prm
+expect "gmsh .geo file missing" "'Mesh file' = 'missing.geo'" geo.prm
+printf 'Point(1) = {0, 0, 0 0.1};\n' > syntax.geo
+{ base; printf 'subsection Cross-section\n set Shape = gmsh\n set Mesh file = syntax.geo\nend\n'; } > geo_syntax.prm
+expect "gmsh .geo with a syntax error (gmsh's message)" "'Mesh file' = 'syntax.geo': gmsh failed" geo_syntax.prm
+printf 'Point(1) = {0,0,0,0.2}; Point(2) = {1,0,0,0.2}; Point(3) = {1,1,0,0.2};\nLine(1) = {1,2}; Line(2) = {2,3};\nCurve Loop(1) = {1,2}; Plane Surface(1) = {1};\n' > open.geo
+{ base; printf 'subsection Cross-section\n set Shape = gmsh\n set Mesh file = open.geo\nend\n'; } > geo_open.prm
+expect "gmsh .geo with an open curve loop" "'Mesh file' = 'open.geo'" geo_open.prm
+{ base; printf 'subsection Material 1\n set Regions = section, core\nend\n'; } > region_name.prm
+expect "unknown region name (lists the names)" "'Regions' = 'section, core': unknown region 'core'; this section has: section (1)" region_name.prm
 { base; printf 'subsection Rod strains\n set Strains = 0, 0, 1\nend\n'; } > strains.prm
 expect "wrong number of strains" "Strains" strains.prm
 expect "unknown option" "unknown option" --frobnicate

@@ -5,13 +5,50 @@
 # in the .prm state closed-form values -- then compare its key numbers from
 # summary.json with the stored reference with numdiff (relative 1e-6,
 # absolute 1e-9: far above the Newton tolerance, far below any physical change).
+# A parameter sweep (sweep.csv) is checked row by row instead: lines
+# '# sweep check: <python expression of the columns>' must hold at every
+# point, e.g. 'abs(kappa2 + value) < 1e-10', and '# sweep check all: ...'
+# over the whole columns (lists), e.g. odd symmetry of the twist in the
+# fibre angle: 'all(abs(a + b) < 1e-9 for a, b in zip(kappa3, kappa3[::-1]))'.
+# Its key numbers are the strains
+# and diagonal stiffnesses of every point.
 # usage: run_example.sh <rod_cross_section> <file.prm> <reference.output> <scratch dir>
 set -euo pipefail
 exe=$1 prm=$2 ref=$3 dir=$4
 rm -rf "$dir" && mkdir -p "$dir"
 # Redirect the example's output directory into the scratch directory.
 sed -e "s|^\( *set Output directory *=\).*|\1 $dir/out|" "$prm" > "$dir/run.prm"
+# Mesh files in the examples are relative to the repository root.
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
 "$exe" --quiet "$dir/run.prm"
+if [ -f "$dir/out/sweep.csv" ]; then
+python3 - "$dir/out/sweep.csv" "$prm" > "$dir/key_numbers.output" <<'PY'
+import csv, math, re, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+lines = open(sys.argv[2]).read().splitlines()
+checks = [m.group(1) for m in (re.match(r"#\s*sweep check:\s*(.+)", l) for l in lines) if m]
+table_checks = [m.group(1) for m in (re.match(r"#\s*sweep check all:\s*(.+)", l) for l in lines) if m]
+assert rows, "empty sweep"
+assert checks or table_checks, "a sweep example states at least one '# sweep check:'"
+columns = {}
+for r in rows:
+    for k, v in r.items():
+        columns.setdefault(k.split(" [")[0], []).append(float(v))
+for c in table_checks:
+    assert eval(c, {"abs": abs, "all": all, "zip": zip, "math": math, "len": len}, columns), "'%s' fails" % c
+for r in rows:
+    env = {k.split(" [")[0]: float(v) for k, v in r.items()}
+    assert env["converged"] == 1, "point %d did not converge" % env["point"]
+    env.update(abs=abs, math=math)
+    for c in checks:
+        assert eval(c, {}, env), "point %d (value %g): '%s' fails" % (env["point"], env["value"], c)
+print("%d points, %d sweep checks hold at each, %d over the table" % (len(rows), len(checks), len(table_checks)), file=sys.stderr)
+for r in rows:
+    env = {k.split(" [")[0]: v for k, v in r.items()}
+    print("value", env["value"], *[env[s] for s in ("nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3")])
+    print("K", *[env["K_%s_%s" % (s, s)] for s in ("nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3")])
+PY
+else
 python3 - "$dir/out/summary.json" "$prm" > "$dir/key_numbers.output" <<'PY'
 import json, re, sys
 s = json.load(open(sys.argv[1]))
@@ -41,6 +78,7 @@ for i, row in enumerate(s["stiffness"]):
 print("helix_radius", s["helix"]["radius"])
 print("handedness", s["helix"]["handedness"])
 PY
+fi
 if [ ! -f "$ref" ]; then
   echo "no reference $ref; produced $dir/key_numbers.output"; cat "$dir/key_numbers.output"; exit 1
 fi

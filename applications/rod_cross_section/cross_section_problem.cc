@@ -10,6 +10,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/parameter_sweep.h>
 
 #include "cross_section_problem.h"
 
@@ -57,6 +58,7 @@ namespace cosmo
     {
       geometry::CrossSectionGeometry::declare_parameters(prm);
       materials::MaterialLibrary::declare_parameters(prm);
+      materials::SurfaceLayerLibrary::declare_parameters(prm);
 
       prm.enter_subsection("Finite element");
       prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
@@ -108,6 +110,8 @@ namespace cosmo
                         "Compute the 6x6 stiffness (one more factorization) at every "
                         "step, not only at the final one.");
       prm.leave_subsection();
+
+      io::ParameterSweep::declare_parameters(prm);
     }
 
     void
@@ -115,6 +119,7 @@ namespace cosmo
     {
       geometry.parse_parameters(prm);
       materials.parse_parameters(prm);
+      surface_layers.parse_parameters(prm);
 
       prm.enter_subsection("Finite element");
       degree = prm.get_integer("Polynomial degree");
@@ -169,6 +174,7 @@ namespace cosmo
     CrossSectionProblem::setup_system()
     {
       geometry.create_triangulation(triangulation);
+      materials.resolve_regions(geometry.region_ids());
       {
         std::vector<types::material_id> ids;
         for (const auto &cell : triangulation.active_cell_iterators())
@@ -181,6 +187,7 @@ namespace cosmo
       dof_handler.reinit(triangulation);
       dof_handler.distribute_dofs(*fe);
       section_properties = geometry::CrossSectionGeometry::properties(triangulation, degree);
+      setup_surface_faces();
 
       // The six gauge constraints C U = 0, as integrals of the shape functions
       // (not sums of nodal values, which would weight nodes by the mesh).
@@ -307,7 +314,57 @@ namespace cosmo
               growth_at_qp[cell->active_cell_index() * quadrature.size() + q] = Fg;
             }
         }
+
+      const QGauss<1> face_quadrature(degree + 1);
+      FEFaceValues<2> ffv(*mapping, *fe, face_quadrature, update_quadrature_points);
+      const unsigned int nqf = face_quadrature.size();
+      surface_growth_at_qp.resize(surface_faces.size() * nqf);
+      for (unsigned int f = 0; f < surface_faces.size(); ++f)
+        {
+          const auto &sf    = surface_faces[f];
+          const auto &layer = surface_layers.layers()[sf.layer];
+          ffv.reinit(sf.cell, sf.face);
+          for (unsigned int q = 0; q < nqf; ++q)
+            {
+              const Point<2> &X = ffv.quadrature_point(q);
+              const auto      g = layer.growth(X, load_parameter);
+              if (!(g[0] > 0 && g[1] > 0))
+                throw io::InputError(
+                  layer.section, "Growth factor", layer.growth_text,
+                  "surface growth (gT, g3) = (" + std::to_string(g[0]) + ", " +
+                    std::to_string(g[1]) + ") at boundary point (" + std::to_string(X[0]) +
+                    ", " + std::to_string(X[1]) + "): both factors must stay positive");
+              surface_growth_at_qp[f * nqf + q] = g;
+            }
+        }
       growth_cached_for = load_parameter;
+    }
+
+    void
+    CrossSectionProblem::setup_surface_faces()
+    {
+      surface_faces.clear();
+      surface_length.assign(surface_layers.layers().size(), 0.);
+      const QGauss<1> face_quadrature(degree + 1);
+      FEFaceValues<2> ffv(*mapping, *fe, face_quadrature, update_JxW_values);
+      for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
+        {
+          const auto &layer = surface_layers.layers()[l];
+          geometry::BoundarySelection selection;
+          selection.parse(layer.boundary_parts, layer.section, "Boundary parts", geometry);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && selection.contains(cell->face(f)))
+                {
+                  surface_faces.push_back({cell, f, l});
+                  ffv.reinit(cell, f);
+                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                    surface_length[l] += ffv.JxW(q);
+                }
+          if (surface_length[l] == 0)
+            throw io::InputError(layer.section, "Boundary parts", layer.boundary_parts,
+                                 "selects no boundary face of this section");
+        }
     }
 
     namespace
@@ -571,6 +628,146 @@ namespace cosmo
                       AssemblyScratch(*mapping, *fe, quadrature), CellContribution(dpc));
       if (!admissible)
         return 1; // recoverable: Newton's line search or the driver cuts back
+
+      // Surface layers on boundary faces. Few faces: serial, in face order.
+      if (!surface_faces.empty())
+        {
+          const QGauss<1>    face_quadrature(degree + 1);
+          const unsigned int nqf = face_quadrature.size();
+          FEFaceValues<2>    ffv(*mapping, *fe, face_quadrature,
+                              update_values | update_gradients | update_quadrature_points |
+                                update_JxW_values | update_normal_vectors);
+          CellContribution                   out(dpc);
+          std::vector<double>                U_local(dpc);
+          std::vector<std::array<double, 6>> dF(dpc), CdF(dpc);
+          std::array<std::array<double, 6>, n_strains> D, CD;
+          materials::SurfaceEnergyDerivatives          d;
+          auto dot6 = [](const std::array<double, 6> &a, const std::array<double, 6> &b) {
+            double r = 0;
+            for (unsigned int z = 0; z < 6; ++z)
+              r += a[z] * b[z];
+            return r;
+          };
+          auto apply6 = [](const std::array<double, 36> &C, const std::array<double, 6> &a,
+                           std::array<double, 6> &b) {
+            for (unsigned int x = 0; x < 6; ++x)
+              {
+                double v = 0;
+                for (unsigned int z = 0; z < 6; ++z)
+                  v += C[6 * x + z] * a[z];
+                b[x] = v;
+              }
+          };
+          for (unsigned int f = 0; f < surface_faces.size(); ++f)
+            {
+              const auto &sf    = surface_faces[f];
+              const auto &layer = surface_layers.layers()[sf.layer];
+              ffv.reinit(sf.cell, sf.face);
+              sf.cell->get_dof_indices(out.idx);
+              for (unsigned int i = 0; i < dpc; ++i)
+                U_local[i] = U[out.idx[i]];
+              out.r = 0;
+              if (jacobian)
+                {
+                  out.K = 0;
+                  out.B = 0;
+                  out.E = 0;
+                }
+              for (unsigned int q = 0; q < nqf; ++q)
+                {
+                  const double        dS = ffv.JxW(q);
+                  const Point<2>      X  = ffv.quadrature_point(q);
+                  const Tensor<1, 2> &Nn = ffv.normal_vector(q);
+                  // Unit tangent of the boundary curve (counterclockwise on the
+                  // outer boundary; the energy is even in T).
+                  const Tensor<1, 2> T({-Nn[1], Nn[0]});
+                  Tensor<1, 3>       u, a;
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    {
+                      const auto g = ffv.shape_grad(i, q);
+                      u[comp[i]] += U_local[i] * ffv.shape_value(i, q);
+                      a[comp[i]] += U_local[i] * (g * T);
+                    }
+                  a[0] += T[0];
+                  a[1] += T[1];
+                  const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
+                  const Tensor<1, 3> b = nu + cross_product_3d(kappa, w);
+                  // Fs = [dw/dS | nu + kappa x w], row-major 3x2
+                  std::array<double, 6> Fs;
+                  for (unsigned int r = 0; r < 3; ++r)
+                    {
+                      Fs[2 * r]     = a[r];
+                      Fs[2 * r + 1] = b[r];
+                    }
+                  layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
+                                 jacobian, d);
+                  energy += d.energy * dS;
+
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    {
+                      const unsigned int c = comp[i];
+                      const double       N = ffv.shape_value(i, q);
+                      dF[i].fill(0.);
+                      dF[i][2 * c] = ffv.shape_grad(i, q) * T;
+                      for (unsigned int r = 0; r < 3; ++r)
+                        dF[i][2 * r + 1] += Kx[r][c] * N;
+                      out.r[i] += dot6(dF[i], d.P) * dS;
+                    }
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    {
+                      D[k].fill(0.);
+                      if (k < 3)
+                        D[k][2 * k + 1] = 1.;
+                      else
+                        {
+                          Tensor<1, 3> ek;
+                          ek[k - 3]             = 1;
+                          const Tensor<1, 3> ew = cross_product_3d(ek, w);
+                          for (unsigned int r = 0; r < 3; ++r)
+                            D[k][2 * r + 1] = ew[r];
+                        }
+                      resultants[k] += dot6(D[k], d.P) * dS;
+                    }
+                  if (!jacobian)
+                    continue;
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    apply6(d.C, dF[i], CdF[i]);
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    apply6(d.C, D[k], CD[k]);
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    {
+                      for (unsigned int j = 0; j < dpc; ++j)
+                        out.K(i, j) += dot6(dF[j], CdF[i]) * dS;
+                      const double       N = ffv.shape_value(i, q);
+                      const unsigned int c = comp[i];
+                      for (unsigned int k = 0; k < n_strains; ++k)
+                        {
+                          double bik = dot6(D[k], CdF[i]);
+                          if (k >= 3) // Ps : d2 Fs / dU_i dkappa_k (second column)
+                            {
+                              const Tensor<1, 3> &ex = e_x_e[k - 3][c];
+                              for (unsigned int r = 0; r < 3; ++r)
+                                bik += d.P[2 * r + 1] * ex[r] * N;
+                            }
+                          out.B(i, k) += bik * dS;
+                        }
+                    }
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    for (unsigned int l = 0; l < n_strains; ++l)
+                      E(k, l) += dot6(D[l], CD[k]) * dS;
+                }
+              if (R)
+                for (unsigned int i = 0; i < dpc; ++i)
+                  (*R)[out.idx[i]] += out.r[i];
+              if (jacobian)
+                {
+                  system->matrix.add(out.idx, out.K);
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    for (unsigned int k = 0; k < n_strains; ++k)
+                      system->border_columns[k][out.idx[i]] += out.B(i, k);
+                }
+            }
+        }
 
       // Gauge constraints with their multipliers, and the strain rows.
       const unsigned int nu_ = n_u();
@@ -1052,6 +1249,10 @@ namespace cosmo
       for (const auto &s : materials.descriptions())
         mats.push_back(s);
       j["materials"]          = mats;
+      JSON layers             = JSON::array();
+      for (const auto &s : surface_layers.descriptions())
+        layers.push_back(s);
+      j["surface_layers"]     = layers;
       j["energy"]             = last_state.energy;
       for (unsigned int k = 0; k < 6; ++k)
         {
@@ -1111,11 +1312,16 @@ namespace cosmo
            << " cells, Q" << degree << ", " << n_u() << " field DoFs + 6 multipliers + 6 strains; area "
            << section_properties.area;
       say(info.str());
+      if (!geometry.meshing_summary.empty())
+        say("  " + geometry.meshing_summary);
       if (geometry.applied_shift.norm() > 0)
         say("  mesh shifted by (" + fixed(geometry.applied_shift[0]) + ", " +
             fixed(geometry.applied_shift[1]) + ") to put its centroid at the origin");
       for (const auto &m : materials.descriptions())
         say("  " + m);
+      for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
+        say("  " + surface_layers.layers()[l].description() + " (arc length " +
+            fixed(surface_length[l]) + ")");
 
       steps_table = io::CSVTable();
       for (const auto &c : {"step", "t", "newton_iterations", "residual", "cutbacks"})
@@ -1174,6 +1380,96 @@ namespace cosmo
         out << "  " << p << " " << fixed(timer.seconds(p), 3);
       out << "\n  output in " << output_directory << "/";
       say(out.str());
+    }
+
+    void
+    run_study(ParameterHandler &prm, const io::RunOptions &options)
+    {
+      io::ParameterSweep sweep;
+      sweep.parse_parameters(prm);
+      if (!sweep.enabled())
+        {
+          CrossSectionProblem problem;
+          problem.parse_parameters(prm);
+          problem.run(options, prm);
+          return;
+        }
+
+      prm.enter_subsection("Output");
+      const std::string base = prm.get("Output directory");
+      prm.leave_subsection();
+      io::create_directory(base);
+      io::RunLog log(base + "/sweep-log.txt", options.quiet);
+      log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
+          ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
+
+      io::CSVTable table;
+      table.add_column("point");
+      table.add_column("value", sweep.axis_label());
+      table.add_column("converged");
+      table.add_column("energy", "E L^2");
+      for (const auto &s : kinematics::strain_names)
+        table.add_column(s, s[0] == 'n' ? "1" : "1/L");
+      for (unsigned int k = 0; k < 6; ++k)
+        table.add_column(kinematics::resultant_names[k], k < 3 ? "E L^2" : "E L^3");
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int b = a; b < 6; ++b)
+          table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
+      table.add_column("helix_radius", "L");
+      table.add_column("helix_pitch", "L");
+      table.add_column("n_negative_eigenvalues");
+
+      unsigned int n_failed = 0;
+      for (unsigned int k = 0; k < sweep.size(); ++k)
+        {
+          sweep.apply(prm, k);
+          const std::string dir = base + "/point-" + Utilities::int_to_string(k, 2);
+          io::ParameterSweep::set_entry(prm, "Output/Output directory", dir, "Output",
+                                        "Output directory");
+          io::RunOptions point_options = options;
+          point_options.quiet          = true; // the point's log.txt has the details
+          CrossSectionProblem problem;
+          problem.parse_parameters(prm);
+          std::vector<double> row = {double(k), sweep.value(k)};
+          std::ostringstream  line;
+          line << "point " << k + 1 << "/" << sweep.size() << ": " << sweep.label() << " = "
+               << sweep.text(k);
+          try
+            {
+              problem.run(point_options, prm);
+              const auto &s = problem.final_state();
+              const auto  h = kinematics::helix_geometry(kinematics::RodStrains(s.strains));
+              row.push_back(1);
+              row.push_back(s.energy);
+              row.insert(row.end(), s.strains.begin(), s.strains.end());
+              row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+              for (unsigned int a = 0; a < 6; ++a)
+                for (unsigned int b = a; b < 6; ++b)
+                  row.push_back(s.stiffness(a, b));
+              row.push_back(h.radius);
+              row.push_back(h.pitch);
+              row.push_back(s.n_negative);
+              line << "  strains (";
+              for (unsigned int i = 0; i < 6; ++i)
+                line << (i ? ", " : "") << fixed(s.strains[i], 6);
+              line << ")  " << h.description();
+            }
+          catch (io::RunFailure &e)
+            {
+              ++n_failed;
+              row.push_back(0);
+              row.resize(table.n_columns(), std::numeric_limits<double>::quiet_NaN());
+              line << "  FAILED: " << e.what();
+            }
+          log(line.str());
+          // Rewritten after every point: a killed sweep leaves a complete table.
+          table.add_row(row);
+          table.write(base + "/sweep.csv");
+        }
+      log("sweep table: " + base + "/sweep.csv");
+      if (n_failed > 0)
+        throw io::RunFailure(std::to_string(n_failed) + " of " + std::to_string(sweep.size()) +
+                             " sweep points failed (see " + base + "/sweep-log.txt)");
     }
   } // namespace rod
 } // namespace cosmo

@@ -15,6 +15,7 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/materials/material.h>
+#include <cosmo/materials/surface_layer.h>
 #include <cosmo/solvers/continuation.h>
 
 #include <array>
@@ -78,6 +79,13 @@ namespace cosmo
       /// Newton from the current solution to the state with these prescribed strains (t = 1).
       CrossSectionState
       resolve(const std::array<double, 6> &strains);
+
+      /// The state of the last converged step.
+      const CrossSectionState &
+      final_state() const
+      {
+        return last_state;
+      }
 
       /// The last assembled and factorized bordered Jacobian (tests).
       const assembly::BorderedSystem &
@@ -144,6 +152,7 @@ namespace cosmo
       // Parameters
       geometry::CrossSectionGeometry geometry;
       materials::MaterialLibrary     materials;
+      materials::SurfaceLayerLibrary surface_layers;
       unsigned int                   degree = 2;
       std::string                    mode;
       std::array<double, 6>          target_strains{};
@@ -172,6 +181,17 @@ namespace cosmo
       std::vector<Tensor<2, 3>>               growth_at_qp; // per cell and quadrature point
       double                                  growth_cached_for = -1;
 
+      /// A boundary face carrying a surface layer.
+      struct SurfaceFace
+      {
+        typename DoFHandler<2>::active_cell_iterator cell;
+        unsigned int                                 face;
+        unsigned int                                 layer;
+      };
+      std::vector<SurfaceFace>           surface_faces;
+      std::vector<std::array<double, 2>> surface_growth_at_qp; // (gT, g3) per face and point
+      std::vector<double>                surface_length;       // per layer, reference arc length
+
       // Output and bookkeeping
       io::PhaseTimer                   timer;
       std::unique_ptr<io::RunLog>      log;
@@ -193,6 +213,9 @@ namespace cosmo
       prescribed_strains_at(double t) const;
       void
       update_growth_cache();
+      /// The faces of every surface layer (after the mesh and DoFs exist).
+      void
+      setup_surface_faces();
 
       /// Integrals that come with every assembly.
       struct AssemblyResults
@@ -220,6 +243,14 @@ namespace cosmo
       void
       say(const std::string &line);
     };
+
+    /**
+     * The application: one run, or, with a 'Parameter sweep' in the .prm, one
+     * run per value (output in point-NN/ subdirectories) and sweep.csv, a
+     * table of the final strains, resultants and stiffness against the value.
+     */
+    void
+    run_study(ParameterHandler &prm, const io::RunOptions &options);
   } // namespace rod
 } // namespace cosmo
 

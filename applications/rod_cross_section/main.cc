@@ -13,9 +13,5 @@ main(int argc, char **argv)
      "stress resultants, 6x6 stiffness and natural shape of a growing rod "
      "from its cross-section (helical Cauchy-Born rule)"},
     &rod::CrossSectionProblem::declare_parameters,
-    [](dealii::ParameterHandler &prm, const io::RunOptions &options) {
-      rod::CrossSectionProblem problem;
-      problem.parse_parameters(prm);
-      problem.run(options, prm);
-    });
+    &rod::run_study);
 }

@@ -45,10 +45,8 @@ namespace cosmo
                         "f = cos(a) E3 + sin(a) E_theta; positive a winds right-handed.");
     }
 
-    namespace
-    {
-      std::unique_ptr<FunctionParser<2>>
-      make_parser(const std::string &text,
+    std::unique_ptr<FunctionParser<2>>
+      parse_expressions(const std::string &text,
                   unsigned int       n_components,
                   const std::string &where,
                   const std::string &entry)
@@ -83,7 +81,6 @@ namespace cosmo
           }
         return f;
       }
-    } // namespace
 
     void
     GrowthTensor::parse_parameters(ParameterHandler &prm, const std::string &where)
@@ -109,12 +106,12 @@ namespace cosmo
       fibre.reset();
       if (growth_kind == Kind::none)
         return;
-      factor = make_parser(factor_text,
+      factor = parse_expressions(factor_text,
                            growth_kind == Kind::orthotropic ? 3 : 1,
                            where,
                            "Growth factor");
       if (growth_kind == Kind::fibre)
-        fibre = make_parser(fibre_text, 3, where, "Fibre direction");
+        fibre = parse_expressions(fibre_text, 3, where, "Fibre direction");
     }
 
     Tensor<2, 3>

@@ -7,6 +7,8 @@
 
 #include <Sacado.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <sstream>
 
 namespace cosmo
@@ -118,11 +120,14 @@ namespace cosmo
           prm.enter_subsection("Material " + std::to_string(k));
           prm.declare_entry("Regions",
                             k == 1 ? "1" : "",
-                            Patterns::List(Patterns::Integer(0, 255)),
-                            "Region (material) ids of the cross-section made of this "
-                            "material: built-in sections use 1 (and 2 for the second "
-                            "layer of two-region sections); gmsh meshes use their "
-                            "physical surface tags. Empty: this section is unused.");
+                            Patterns::Anything(),
+                            "Comma-separated regions of the cross-section made of this "
+                            "material, each a region (material) id 0..255 or a region "
+                            "name. Built-in sections: id 1 (and 2 for the second region of "
+                            "two-region sections), names `section` (single-region shapes), "
+                            "`lower`/`upper` (bilayer), `left`/`right` (half disc). gmsh "
+                            "meshes: physical surface tags, or their physical names. "
+                            "Empty: this section is unused.");
           prm.declare_entry("Name", "material " + std::to_string(k), Patterns::Anything(),
                             "A name for output.");
           prm.declare_entry("Hyperelastic law",
@@ -146,14 +151,38 @@ namespace cosmo
     MaterialLibrary::parse_parameters(ParameterHandler &prm)
     {
       materials.clear();
+      region_lists.clear();
       region_to_material.clear();
       for (unsigned int k = 1; k <= max_materials; ++k)
         {
           const std::string section = "Material " + std::to_string(k);
           prm.enter_subsection(section);
-          const auto regions = Utilities::string_to_int(
-            Utilities::split_string_list(prm.get("Regions"), ','));
-          if (!regions.empty())
+          const std::string text = prm.get("Regions");
+          std::vector<std::string> items;
+          for (const auto &item : Utilities::split_string_list(text, ','))
+            if (!item.empty())
+              items.push_back(item);
+          // Integer ids are checked and mapped now, as before names existed;
+          // names wait for resolve_regions(). Something that starts like a
+          // number but is not a region id is an error here.
+          std::vector<int> regions;
+          for (const auto &item : items)
+            {
+              const bool numeric = std::isdigit(static_cast<unsigned char>(item[0])) ||
+                                   item[0] == '-' || item[0] == '+' || item[0] == '.';
+              if (!numeric)
+                continue;
+              const bool digits =
+                std::all_of(item.begin(), item.end(), [](unsigned char c) {
+                  return std::isdigit(c);
+                });
+              if (!digits || item.size() > 3 || std::stoi(item) > 255)
+                throw io::InputError(section, "Regions", text,
+                                     "'" + item + "' is neither a region id (an integer "
+                                                  "0..255) nor a region name");
+              regions.push_back(std::stoi(item));
+            }
+          if (!items.empty())
             {
               GrowingMaterial m;
               m.name    = prm.get("Name");
@@ -177,11 +206,58 @@ namespace cosmo
                   region_to_material[r] = materials.size();
                 }
               materials.push_back(std::move(m));
+              region_lists.push_back({section, text, items});
             }
           prm.leave_subsection();
         }
       if (materials.empty())
         throw io::InputError("Material 1", "Regions", "", "at least one material needs regions");
+    }
+
+    void
+    MaterialLibrary::resolve_regions(const std::map<std::string, types::material_id> &names)
+    {
+      auto available = [&names]() {
+        if (names.empty())
+          return std::string("no named regions (use region ids)");
+        std::string list;
+        for (const auto &n : names)
+          list += (list.empty() ? "" : ", ") + n.first + " (" +
+                  std::to_string(static_cast<unsigned int>(n.second)) + ")";
+        return list;
+      };
+      region_to_material.clear();
+      for (unsigned int m = 0; m < region_lists.size(); ++m)
+        {
+          const RegionList &list = region_lists[m];
+          for (const auto &item : list.items)
+            {
+              // Ids were validated by parse_parameters().
+              types::material_id r;
+              std::string        label;
+              if (std::isdigit(static_cast<unsigned char>(item[0])))
+                {
+                  r     = static_cast<types::material_id>(std::stoi(item));
+                  label = "region " + item;
+                }
+              else
+                {
+                  const auto it = names.find(item);
+                  if (it == names.end())
+                    throw io::InputError(list.section, "Regions", list.text,
+                                         "unknown region '" + item +
+                                           "'; this section has: " + available());
+                  r     = it->second;
+                  label = "region '" + item + "' (" +
+                          std::to_string(static_cast<unsigned int>(r)) + ")";
+                }
+              if (region_to_material.count(r))
+                throw io::InputError(list.section, "Regions", list.text,
+                                     label + " is already given to " +
+                                       materials[region_to_material[r]].section);
+              region_to_material[r] = m;
+            }
+        }
     }
 
     const GrowingMaterial &

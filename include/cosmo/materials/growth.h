@@ -28,6 +28,17 @@ namespace cosmo
   {
     using namespace dealii;
 
+    /**
+     * `n_components` muparser expressions of x, y (and the constant pi)
+     * separated by ';', as given in entry `entry` of section `where`; an
+     * io::InputError names both if the text does not parse.
+     */
+    std::unique_ptr<FunctionParser<2>>
+    parse_expressions(const std::string &text,
+                      unsigned int       n_components,
+                      const std::string &where,
+                      const std::string &entry);
+
     class GrowthTensor
     {
     public:

@@ -53,7 +53,10 @@ namespace cosmo
 
     /**
      * Materials by region: up to `max_materials` parameter sections
-     * "Material 1" ... each naming the region (material) ids it covers.
+     * "Material 1" ... each naming the regions it covers, by region
+     * (material) id or by region name. Names are only known once the mesh
+     * exists, so parse_parameters() keeps the lists and resolve_regions()
+     * maps them (integer ids are mapped already by parse_parameters()).
      */
     class MaterialLibrary
     {
@@ -64,6 +67,15 @@ namespace cosmo
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Map the Regions lists to region ids with the mesh's region names
+       * (CrossSectionGeometry::region_ids()); call after building the mesh.
+       * Unknown names and regions given twice are an io::InputError naming
+       * the material section, `Regions` and the available names.
+       */
+      void
+      resolve_regions(const std::map<std::string, types::material_id> &names);
 
       /// The material of a region; throws InputError if no section covers it.
       const GrowingMaterial &
@@ -80,7 +92,16 @@ namespace cosmo
       descriptions() const;
 
     private:
+      /// A material's `Regions` entry as given, for resolve_regions().
+      struct RegionList
+      {
+        std::string              section;
+        std::string              text;
+        std::vector<std::string> items;
+      };
+
       std::vector<GrowingMaterial>                materials;
+      std::vector<RegionList>                     region_lists; ///< one per material
       std::map<types::material_id, unsigned int> region_to_material;
     };
   } // namespace materials

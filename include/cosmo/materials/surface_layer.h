@@ -1,0 +1,116 @@
+#ifndef cosmo_materials_surface_layer_h
+#define cosmo_materials_surface_layer_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+/**
+ * A Gurtin-Murdoch surface layer on the lateral surface of the rod, i.e. on
+ * (part of) the boundary curve of the cross-section
+ * (rod-cross-section.md, "Energy with growth").
+ *
+ * The surface deformation gradient maps the reference tangent plane, spanned
+ * by the boundary tangent T and the axis E3, into space: a 3x2 matrix Fs with
+ * columns dw/dS and nu + kappa x w. Surface growth Fsg = diag(gT, g3) in the
+ * same (T, E3) basis; the elastic part Fse = Fs Fsg^-1 has the Green strain
+ * Es = (Fse^T Fse - I)/2 and the energy per unit reference area is
+ *
+ *   Jsg Ws(Es),   Ws = tau0 tr Es + lambda_s/2 (tr Es)^2 + mu_s Es:Es,
+ *
+ * Jsg = gT g3. tau0 is the surface tension of the reference state (its
+ * second Piola-Kirchhoff surface stress at Es = 0 is tau0 I); lambda_s and
+ * mu_s are the surface Lame moduli (force per length). Derivatives with
+ * respect to the six entries of Fs are taken by Sacado, as for the bulk.
+ */
+namespace cosmo
+{
+  namespace materials
+  {
+    using namespace dealii;
+
+    /// Surface energy density and derivatives; Fs row-major 3x2, Fs[2r+a].
+    struct SurfaceEnergyDerivatives
+    {
+      double                 energy = 0;
+      std::array<double, 6>  P{}; ///< dWs/dFs
+      std::array<double, 36> C{}; ///< d2Ws/dFs2, C[6*a+b]
+    };
+
+    class SurfaceLayer
+    {
+    public:
+      enum class GrowthKind
+      {
+        none,
+        isotropic,
+        tangential_axial
+      };
+
+      std::string name;
+      std::string section;        ///< its parameter section, for error messages
+      std::string boundary_parts; ///< which boundary it covers (resolved by the application)
+      double      tension  = 0;   ///< tau0
+      double      lambda_s = 0;   ///< surface Lame modulus
+      double      mu_s     = 0;   ///< surface shear modulus
+
+      /// Surface growth (gT, g3) at boundary point X, ramped as 1 + t (g - 1).
+      std::array<double, 2>
+      growth(const Point<2> &X, double t) const;
+
+      /// Jsg Ws and dWs/dFs (and d2Ws/dFs2 if `tangent`) for tension scaled by t_tension.
+      void
+      evaluate(const std::array<double, 6> &Fs,
+               const std::array<double, 2> &g,
+               double                       tension_factor,
+               bool                         tangent,
+               SurfaceEnergyDerivatives &   out) const;
+
+      /// The energy alone in doubles (tests, finite differences).
+      double
+      energy(const std::array<double, 6> &Fs,
+             const std::array<double, 2> &g,
+             double                       tension_factor) const;
+
+      std::string
+      description() const;
+
+      GrowthKind                         growth_kind = GrowthKind::none;
+      std::string                        growth_text;
+      std::shared_ptr<FunctionParser<2>> growth_factors; // 1 (isotropic) or 2 (gT; g3)
+    };
+
+    /**
+     * Surface layers by boundary part: parameter sections "Surface layer 1"
+     * and "Surface layer 2"; a layer with empty 'Boundary parts' is unused.
+     */
+    class SurfaceLayerLibrary
+    {
+    public:
+      static constexpr unsigned int max_layers = 2;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      const std::vector<SurfaceLayer> &
+      layers() const
+      {
+        return active_layers;
+      }
+      std::vector<std::string>
+      descriptions() const;
+
+    private:
+      std::vector<SurfaceLayer> active_layers;
+    };
+  } // namespace materials
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,159 @@
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/parameters.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace io
+  {
+    void
+    ParameterSweep::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Parameter sweep");
+      prm.declare_entry("Entry", "", Patterns::Anything(),
+                        "The parameter-file entry to vary, as its path of subsections "
+                        "and name separated by '/', e.g. 'Material 1/Growth factor' or "
+                        "'Surface layer 1/Surface shear modulus'. Empty: a single run.");
+      prm.declare_entry("Values", "", Patterns::List(Patterns::Double(), 0),
+                        "The values of the swept quantity, comma-separated. Empty: use "
+                        "'Range'.");
+      prm.declare_entry("Range", "0, 1, 5", Patterns::List(Patterns::Double(), 3, 3),
+                        "From, To, Number of values: equally spaced values, used when "
+                        "'Values' is empty.");
+      prm.declare_entry("Template", "", Patterns::Anything(),
+                        "The text the entry is set to, with '{}' standing for the "
+                        "value, e.g. '1 + {}*x' to sweep the magnitude of a growth law. "
+                        "Empty: the value itself.");
+      prm.leave_subsection();
+    }
+
+    void
+    ParameterSweep::set_entry(ParameterHandler & prm,
+                              const std::string &path,
+                              const std::string &value,
+                              const std::string &section,
+                              const std::string &entry)
+    {
+      const auto parts = Utilities::split_string_list(path, '/');
+      if (parts.empty() || parts.back().empty())
+        throw InputError(section, entry, path,
+                         "the path of an entry, subsections and name separated by '/'");
+      unsigned int depth = 0;
+      try
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i, ++depth)
+            prm.enter_subsection(parts[i]);
+          prm.set(parts.back(), value);
+        }
+      catch (ExceptionBase &e)
+        {
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+          std::ostringstream info;
+          e.print_info(info);
+          throw InputError(section, entry, path,
+                           "an existing entry that accepts '" + value +
+                             "' (see --print-parameters); deal.II said: " + info.str());
+        }
+      for (; depth > 0; --depth)
+        prm.leave_subsection();
+    }
+
+    void
+    ParameterSweep::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Parameter sweep");
+      entry_path    = Utilities::trim(prm.get("Entry"));
+      template_text = prm.get("Template");
+      const std::string values_text = prm.get("Values");
+      values = Utilities::string_to_double(Utilities::split_string_list(values_text, ','));
+      if (values.empty())
+        {
+          const auto r = get_double_list(prm, "Range", 3, "Parameter sweep");
+          const int  n = static_cast<int>(std::lround(r[2]));
+          if (n < 1 || std::abs(r[2] - n) > 1e-12)
+            throw InputError("Parameter sweep", "Range", prm.get("Range"),
+                             "From, To, Number of values with a whole number >= 1");
+          for (int k = 0; k < n; ++k)
+            values.push_back(n == 1 ? r[0] : r[0] + (r[1] - r[0]) * k / (n - 1));
+        }
+      prm.leave_subsection();
+      if (!enabled())
+        return;
+      if (!template_text.empty() && template_text.find("{}") == std::string::npos)
+        throw InputError("Parameter sweep", "Template", template_text,
+                         "a text containing '{}' where the value goes (or empty)");
+      // Fail now, not after the first points have run: the entry must exist
+      // and accept every value. Restore the file's value afterwards.
+      const auto  parts = Utilities::split_string_list(entry_path, '/');
+      std::string original;
+      try
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.enter_subsection(parts[i]);
+          original = prm.get(parts.back());
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+        }
+      catch (ExceptionBase &)
+        {
+          throw InputError("Parameter sweep", "Entry", entry_path,
+                           "the path of an existing entry, subsections and name "
+                           "separated by '/' (see --print-parameters)");
+        }
+      for (unsigned int k = 0; k < values.size(); ++k)
+        apply(prm, k);
+      set_entry(prm, entry_path, original, "Parameter sweep", "Entry");
+    }
+
+    std::string
+    ParameterSweep::label() const
+    {
+      const auto parts = Utilities::split_string_list(entry_path, '/');
+      return parts.empty() ? std::string("value") : parts.back();
+    }
+
+    std::string
+    ParameterSweep::axis_label() const
+    {
+      std::string l = entry_path;
+      if (!template_text.empty())
+        l += " = " + template_text;
+      // It goes into a CSV header (as the unit of the value column).
+      std::replace(l.begin(), l.end(), ',', ';');
+      return l;
+    }
+
+    std::string
+    ParameterSweep::text(const unsigned int k) const
+    {
+      std::ostringstream v;
+      v << std::setprecision(15) << values[k];
+      if (template_text.empty())
+        return v.str();
+      std::string t = template_text;
+      for (auto pos = t.find("{}"); pos != std::string::npos; pos = t.find("{}", pos))
+        {
+          // Parenthesize a negative value inside an expression, so that
+          // '1 - {}*x' stays right; a bare '{}' keeps the plain number for
+          // numeric entries.
+          const std::string s =
+            (values[k] < 0 && template_text != "{}") ? "(" + v.str() + ")" : v.str();
+          t.replace(pos, 2, s);
+          pos += s.size();
+        }
+      return t;
+    }
+
+    void
+    ParameterSweep::apply(ParameterHandler &prm, const unsigned int k) const
+    {
+      set_entry(prm, entry_path, text(k), "Parameter sweep", "Entry");
+    }
+  } // namespace io
+} // namespace cosmo
