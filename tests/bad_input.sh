@@ -51,6 +51,24 @@ printf 'Point(1) = {0,0,0,0.2}; Point(2) = {1,0,0,0.2}; Point(3) = {1,1,0,0.2};\
 expect "gmsh .geo with an open curve loop" "'Mesh file' = 'open.geo'" geo_open.prm
 { base; printf 'subsection Material 1\n set Regions = section, core\nend\n'; } > region_name.prm
 expect "unknown region name (lists the names)" "'Regions' = 'section, core': unknown region 'core'; this section has: section (1)" region_name.prm
+{ base; printf 'subsection Surface layer 1\n set Boundary parts = outer, lumen\nend\n'; } > part.prm
+expect "unknown boundary part (lists the parts)" "unknown boundary part 'lumen'; this section has: outer" part.prm
+{ base; printf 'subsection Surface layer 1\n set Boundary parts = arc 200 100\nend\n'; } > arc.prm
+expect "arc with A >= B" "Boundary parts" arc.prm
+{ base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = isotropic\n set Growth factor = 1 + q\nend\n'; } > sexpr.prm
+expect "surface growth expression that does not parse" "'Surface layer 1', entry 'Growth factor'" sexpr.prm
+{ base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = tangential and axial\n set Growth factor = 1.1\nend\n'; } > stwo.prm
+expect "surface growth with one factor for two" "expected 2 expression(s)" stwo.prm
+{ base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = isotropic\n set Growth factor = x\nend\n'; } > sneg.prm
+expect "surface growth factor <= 0 somewhere" "both factors must stay positive" sneg.prm
+{ base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Surface Lame modulus = -1\n set Surface shear modulus = 0.5\nend\n'; } > slame.prm
+expect "surface moduli with a negative areal modulus" "lambda_s + mu_s must be >= 0" slame.prm
+{ base; printf 'subsection Parameter sweep\n set Entry = Material 1/Youngs modulus\nend\n'; } > sweep_entry.prm
+expect "sweep of an entry that does not exist" "'Parameter sweep', entry 'Entry'" sweep_entry.prm
+{ base; printf 'subsection Parameter sweep\n set Entry = Material 1/Poisson'"'"'s ratio\n set Values = 0.3, 0.6\nend\n'; } > sweep_value.prm
+expect "sweep value outside the entry's range" "accepts '0.6'" sweep_value.prm
+{ base; printf 'subsection Parameter sweep\n set Entry = Material 1/Growth factor\n set Template = 1 + x\nend\n'; } > sweep_template.prm
+expect "sweep template without {}" "Template" sweep_template.prm
 { base; printf 'subsection Rod strains\n set Strains = 0, 0, 1\nend\n'; } > strains.prm
 expect "wrong number of strains" "Strains" strains.prm
 expect "unknown option" "unknown option" --frobnicate

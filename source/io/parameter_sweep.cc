@@ -89,26 +89,10 @@ namespace cosmo
         throw InputError("Parameter sweep", "Template", template_text,
                          "a text containing '{}' where the value goes (or empty)");
       // Fail now, not after the first points have run: the entry must exist
-      // and accept every value. Restore the file's value afterwards.
-      const auto  parts = Utilities::split_string_list(entry_path, '/');
-      std::string original;
-      try
-        {
-          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-            prm.enter_subsection(parts[i]);
-          original = prm.get(parts.back());
-          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
-            prm.leave_subsection();
-        }
-      catch (ExceptionBase &)
-        {
-          throw InputError("Parameter sweep", "Entry", entry_path,
-                           "the path of an existing entry, subsections and name "
-                           "separated by '/' (see --print-parameters)");
-        }
+      // and accept every value. (This leaves the last value in `prm`; each
+      // point sets its own before it is parsed.)
       for (unsigned int k = 0; k < values.size(); ++k)
         apply(prm, k);
-      set_entry(prm, entry_path, original, "Parameter sweep", "Entry");
     }
 
     std::string
