@@ -38,6 +38,28 @@ namespace cosmo
         return cross_product_3d(a, b);
       }
 
+      /**
+       * The surface deformation gradient Fs = [dw/dS | nu + kappa x w]
+       * (row-major 3x2) at a boundary point with deformed position w,
+       * tangential derivative du/dS of the displacement and unit tangent T.
+       */
+      std::array<double, 6>
+      surface_deformation_gradient(const Tensor<1, 3> &w,
+                                   const Tensor<1, 3> &du_dS,
+                                   const Tensor<1, 2> &T,
+                                   const Tensor<1, 3> &nu,
+                                   const Tensor<1, 3> &kappa)
+      {
+        const Tensor<1, 3>    b = nu + cross_product_3d(kappa, w);
+        std::array<double, 6> Fs;
+        for (unsigned int r = 0; r < 3; ++r)
+          {
+            Fs[2 * r]     = du_dS[r] + (r < 2 ? T[r] : 0.);
+            Fs[2 * r + 1] = b[r];
+          }
+        return Fs;
+      }
+
       std::string
       fixed(const double v, const int precision = 6)
       {
@@ -681,24 +703,15 @@ namespace cosmo
                   // Unit tangent of the boundary curve (counterclockwise on the
                   // outer boundary; the energy is even in T).
                   const Tensor<1, 2> T({-Nn[1], Nn[0]});
-                  Tensor<1, 3>       u, a;
+                  Tensor<1, 3>       u, du_dS;
                   for (unsigned int i = 0; i < dpc; ++i)
                     {
                       const auto g = ffv.shape_grad(i, q);
                       u[comp[i]] += U_local[i] * ffv.shape_value(i, q);
-                      a[comp[i]] += U_local[i] * (g * T);
+                      du_dS[comp[i]] += U_local[i] * (g * T);
                     }
-                  a[0] += T[0];
-                  a[1] += T[1];
                   const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
-                  const Tensor<1, 3> b = nu + cross_product_3d(kappa, w);
-                  // Fs = [dw/dS | nu + kappa x w], row-major 3x2
-                  std::array<double, 6> Fs;
-                  for (unsigned int r = 0; r < 3; ++r)
-                    {
-                      Fs[2 * r]     = a[r];
-                      Fs[2 * r + 1] = b[r];
-                    }
+                  const auto Fs = surface_deformation_gradient(w, du_dS, T, nu, kappa);
                   layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
                                  jacobian, d);
                   energy += d.energy * dS;
@@ -1139,6 +1152,79 @@ namespace cosmo
       const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
       write_rod_piece(output_directory + "/" + rod_name);
       pvd_rod->add(t, rod_name);
+      if (!surface_faces.empty())
+        {
+          const std::string surface_name = "surface-" + Utilities::int_to_string(step, 4) + ".vtu";
+          write_surface_layers(output_directory + "/" + surface_name, t);
+          pvd_surface->add(t, surface_name);
+        }
+    }
+
+    void
+    CrossSectionProblem::write_surface_layers(const std::string &file, const double t) const
+    {
+      // The layers as polylines on the reference boundary (points (X1, X2, 0),
+      // with the displacement to warp by), with their growth and stress.
+      const auto         e = strains_of(solution);
+      const Tensor<1, 3> nu({e[0], e[1], e[2]}), kappa({e[3], e[4], e[5]});
+      const unsigned int p = degree;
+      std::vector<Point<1>> unit_points;
+      for (unsigned int i = 0; i <= p; ++i)
+        unit_points.emplace_back(double(i) / p);
+      const Quadrature<1> points(unit_points);
+      FEFaceValues<2>     ffv(*mapping, *fe, points,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_normal_vectors);
+      Vector<double>                   u(solution.begin(), solution.begin() + n_u());
+      std::vector<Vector<double>>      u_values(p + 1, Vector<double>(3));
+      std::vector<std::vector<Tensor<1, 2>>> u_grads(p + 1, std::vector<Tensor<1, 2>>(3));
+      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
+                                              "growth_T", "growth_3", "stress_TT", "stress_33",
+                                              "stress_T3", "layer"};
+      std::vector<DataOutBase::Patch<1, 3>> patches;
+      for (const auto &sf : surface_faces)
+        {
+          const auto &layer = surface_layers.layers()[sf.layer];
+          ffv.reinit(sf.cell, sf.face);
+          ffv.get_function_values(u, u_values);
+          ffv.get_function_gradients(u, u_grads);
+          DataOutBase::Patch<1, 3> patch;
+          patch.n_subdivisions       = p;
+          patch.reference_cell       = ReferenceCells::Line;
+          patch.points_are_available = true;
+          patch.data.reinit(names.size() + 3, p + 1);
+          for (unsigned int k = 0; k <= p; ++k)
+            {
+              const Point<2> &   X  = ffv.quadrature_point(k);
+              const Tensor<1, 2> &N = ffv.normal_vector(k);
+              const Tensor<1, 2> T({-N[1], N[0]});
+              Tensor<1, 3>       du_dS;
+              for (unsigned int c = 0; c < 3; ++c)
+                du_dS[c] = u_grads[k][c] * T;
+              const Tensor<1, 3> w({X[0] + u_values[k][0], X[1] + u_values[k][1], u_values[k][2]});
+              const auto         g  = layer.growth(X, t);
+              const auto         S  = layer.stress(surface_deformation_gradient(w, du_dS, T, nu, kappa), g, t);
+              const std::vector<double> v = {u_values[k][0], u_values[k][1], u_values[k][2],
+                                             g[0], g[1], S[0], S[1], S[2], double(sf.layer + 1)};
+              for (unsigned int r = 0; r < v.size(); ++r)
+                patch.data(r, k) = v[r];
+              patch.data(names.size(), k)     = X[0];
+              patch.data(names.size() + 1, k) = X[1];
+              patch.data(names.size() + 2, k) = 0;
+            }
+          patch.vertices[0] = Point<3>(patch.data(names.size(), 0), patch.data(names.size() + 1, 0), 0);
+          patch.vertices[1] = Point<3>(patch.data(names.size(), p), patch.data(names.size() + 1, p), 0);
+          patch.patch_index = patches.size();
+          patches.push_back(std::move(patch));
+        }
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      flags.write_higher_order_cells = false;
+      io::write_file_atomically(file, [&](std::ostream &out) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, out);
+      });
     }
 
     void
@@ -1298,6 +1384,8 @@ namespace cosmo
       log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
       pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
       pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
+      if (!surface_faces.empty() || !surface_layers.layers().empty())
+        pvd_surface = std::make_unique<io::PVDSeries>(output_directory + "/surface.pvd");
       io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &out) {
         prm.print_parameters(out, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
       });

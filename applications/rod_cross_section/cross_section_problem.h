@@ -195,7 +195,7 @@ namespace cosmo
       // Output and bookkeeping
       io::PhaseTimer                   timer;
       std::unique_ptr<io::RunLog>      log;
-      std::unique_ptr<io::PVDSeries>   pvd, pvd_rod;
+      std::unique_ptr<io::PVDSeries>   pvd, pvd_rod, pvd_surface;
       io::CSVTable                     steps_table;
       std::vector<io::JSON>            step_records;
       CrossSectionState                last_state;
@@ -238,6 +238,9 @@ namespace cosmo
       write_vtu(unsigned int step, double t);
       void
       write_rod_piece(const std::string &file) const;
+      /// surface-NNNN.vtu: the surface layers with their growth and stress.
+      void
+      write_surface_layers(const std::string &file, double t) const;
       void
       write_summary(const std::string &status, const std::string &message) const;
       void

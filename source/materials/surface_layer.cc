@@ -113,6 +113,20 @@ namespace cosmo
       return surface_energy(Fs, g, tension_factor * tension, lambda_s, mu_s);
     }
 
+    std::array<double, 3>
+    SurfaceLayer::stress(const std::array<double, 6> &Fs,
+                         const std::array<double, 2> &g,
+                         const double                 tension_factor) const
+    {
+      const double c00 = Fs[0] * Fs[0] + Fs[2] * Fs[2] + Fs[4] * Fs[4];
+      const double c11 = Fs[1] * Fs[1] + Fs[3] * Fs[3] + Fs[5] * Fs[5];
+      const double c01 = Fs[0] * Fs[1] + Fs[2] * Fs[3] + Fs[4] * Fs[5];
+      const double e00 = 0.5 * (c00 / (g[0] * g[0]) - 1.), e11 = 0.5 * (c11 / (g[1] * g[1]) - 1.),
+                   e01 = 0.5 * c01 / (g[0] * g[1]);
+      const double p = tension_factor * tension + lambda_s * (e00 + e11);
+      return {{p + 2 * mu_s * e00, p + 2 * mu_s * e11, 2 * mu_s * e01}};
+    }
+
     std::string
     SurfaceLayer::description() const
     {

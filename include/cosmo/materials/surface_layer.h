@@ -71,6 +71,16 @@ namespace cosmo
                bool                         tangent,
                SurfaceEnergyDerivatives &   out) const;
 
+      /**
+       * The second Piola-Kirchhoff surface stress dWs/dEs in the (T, E3)
+       * basis of the grown layer, {S_TT, S_33, S_T3} (force per length;
+       * negative: compression), for output.
+       */
+      std::array<double, 3>
+      stress(const std::array<double, 6> &Fs,
+             const std::array<double, 2> &g,
+             double                       tension_factor) const;
+
       /// The energy alone in doubles (tests, finite differences).
       double
       energy(const std::array<double, 6> &Fs,
