@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Build, then run every default rod_cross_section example from the repository
-# root (the .prm files set output directories relative to it, under output/).
-# Each run's console output goes to output/logs/<name>.log.
+# Build, then run every default rod_cross_section example and every study
+# (parameter sweep, parameter_files/rod_cross_section/studies/) from the
+# repository root (the .prm files set output directories relative to it, under
+# output/ and output/studies/). Each run's console output goes to
+# output/logs/<name>.log. Then plot: output/<example>/steps.png and
+# output/studies/<study>/sweep.png.
 set -euo pipefail
 
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -18,10 +21,11 @@ cd "$REPO"
 shopt -s nullglob
 prms=(parameter_files/rod_cross_section/*.prm)
 ((${#prms[@]})) || { log "no parameter files in parameter_files/rod_cross_section/" >&2; exit 1; }
+studies=(parameter_files/rod_cross_section/studies/*.prm)
 
 mkdir -p output/logs
 failed=0
-for prm in "${prms[@]}"; do
+for prm in "${prms[@]}" "${studies[@]}"; do
   name="$(basename "$prm" .prm)"
   logfile="output/logs/$name.log"
   start=$EPOCHREALTIME
@@ -35,6 +39,10 @@ done
 if [[ -f scripts/plot_steps.py ]]; then
   log "plotting"
   python3 scripts/plot_steps.py output || { log "plotting FAILED" >&2; failed=1; }
+fi
+if ((${#studies[@]})) && [[ -f scripts/plot_sweep.py ]]; then
+  log "plotting sweeps"
+  python3 scripts/plot_sweep.py output/studies || { log "plotting sweeps FAILED" >&2; failed=1; }
 fi
 
 log "output is in $REPO/output/ (logs in output/logs/)"

@@ -718,7 +718,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::map<std::string, std::function<void()>> cases = {
+  const cosmo_test::Cases cases = {
     {"small_strain_circle", small_strain_circle},
     {"small_strain_rectangle", small_strain_rectangle},
     {"natural_curvature_linear_growth", natural_curvature_linear_growth},
@@ -738,22 +738,5 @@ main(int argc, char **argv)
     {"gmsh_geo_section", gmsh_geo_section}};
   if (argc == 3)
     data_directory = argv[2];
-  if (argc < 2 || argc > 3 || !cases.count(argv[1]))
-    {
-      std::cerr << "usage: test_cross_section <case> [tests/data directory]; cases:";
-      for (const auto &c : cases)
-        std::cerr << " " << c.first;
-      std::cerr << "\n";
-      return 2;
-    }
-  try
-    {
-      cases.at(argv[1])();
-    }
-  catch (std::exception &e)
-    {
-      std::cout << "FAIL: exception: " << e.what() << "\n";
-      return 1;
-    }
-  return cosmo_test::report();
+  return cosmo_test::run_case("test_cross_section", "[tests/data directory]", cases, argc, argv, 2, 3);
 }

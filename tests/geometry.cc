@@ -645,7 +645,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::map<std::string, std::function<void()>> cases = {
+  const cosmo_test::Cases cases = {
     {"rectangle_geo", rectangle_geo},
     {"circle_area_convergence", circle_area_convergence},
     {"example_geometries", example_geometries},
@@ -653,25 +653,11 @@ main(int argc, char **argv)
     {"boundary_selection", boundary_selection},
     {"material_regions", material_regions},
     {"mesh_file_errors", mesh_file_errors}};
-  if (argc != 4 || !cases.count(argv[1]))
+  if (argc == 4)
     {
-      std::cerr << "usage: test_geometry <case> <tests/data directory> <example .geo "
-                   "directory>; cases:";
-      for (const auto &c : cases)
-        std::cerr << " " << c.first;
-      std::cerr << "\n";
-      return 2;
+      data_directory    = argv[2];
+      example_directory = argv[3];
     }
-  data_directory    = argv[2];
-  example_directory = argv[3];
-  try
-    {
-      cases.at(argv[1])();
-    }
-  catch (std::exception &e)
-    {
-      std::cout << "FAIL: exception: " << e.what() << "\n";
-      return 1;
-    }
-  return cosmo_test::report();
+  return cosmo_test::run_case("test_geometry", "<tests/data directory> <example .geo directory>",
+                              cases, argc, argv, 4, 4);
 }

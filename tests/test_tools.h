@@ -7,6 +7,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <exception>
+#include <functional>
+#include <map>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -56,6 +59,42 @@ namespace cosmo_test
     else
       std::cout << "all checks passed\n";
     return failures() > 0 ? 1 : 0;
+  }
+
+  using Cases = std::map<std::string, std::function<void()>>;
+
+  /**
+   * `program <case> <arguments...>`: run the named case (after the caller
+   * has read the extra arguments) and report. Status 2 on bad usage, 1 on a
+   * failed check or an exception, 0 otherwise.
+   */
+  inline int
+  run_case(const std::string &program,
+           const std::string &arguments,
+           const Cases &      cases,
+           int                argc,
+           char **            argv,
+           int                min_argc,
+           int                max_argc)
+  {
+    if (argc < min_argc || argc > max_argc || !cases.count(argv[1]))
+      {
+        std::cerr << "usage: " << program << " <case> " << arguments << "; cases:";
+        for (const auto &c : cases)
+          std::cerr << " " << c.first;
+        std::cerr << "\n";
+        return 2;
+      }
+    try
+      {
+        cases.at(argv[1])();
+      }
+    catch (std::exception &e)
+      {
+        std::cout << "FAIL: exception: " << e.what() << "\n";
+        return 1;
+      }
+    return report();
   }
 } // namespace cosmo_test
 

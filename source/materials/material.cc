@@ -1,11 +1,11 @@
-// The only translation unit that instantiates the nested Sacado types: it is
-// the expensive one to compile, so nothing else lives here.
+// One of the two translation units that instantiate the nested Sacado types
+// (with surface_layer.cc; energy_derivatives.h): the expensive ones to compile.
 #include <deal.II/base/utilities.h>
 
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/material.h>
 
-#include <Sacado.hpp>
+#include <cosmo/materials/energy_derivatives.h>
 
 #include <algorithm>
 #include <cctype>
@@ -17,9 +17,6 @@ namespace cosmo
   {
     namespace
     {
-      using FirstOrder  = Sacado::Fad::SFad<double, 9>;
-      using SecondOrder = Sacado::Fad::SFad<FirstOrder, 9>;
-
       // Fe = F Fg^-1 for a constant Fg^-1, in the AD number type.
       template <typename Number>
       std::array<Number, 9>
@@ -55,32 +52,13 @@ namespace cosmo
           out.energy = std::numeric_limits<double>::infinity();
           return;
         }
-      if (tangent)
-        {
-          std::array<SecondOrder, 9> Fad;
-          for (unsigned int a = 0; a < 9; ++a)
-            {
-              Fad[a] = SecondOrder(9, a, FirstOrder(9, a, F[a / 3][a % 3]));
-            }
-          const SecondOrder W = Jg * law.energy(elastic_part(Fad, Fg_inv));
-          out.energy          = W.val().val();
-          for (unsigned int a = 0; a < 9; ++a)
-            {
-              out.P[a] = W.dx(a).val();
-              for (unsigned int b = 0; b < 9; ++b)
-                out.C[9 * a + b] = W.dx(a).dx(b);
-            }
-        }
-      else
-        {
-          std::array<FirstOrder, 9> Fad;
-          for (unsigned int a = 0; a < 9; ++a)
-            Fad[a] = FirstOrder(9, a, F[a / 3][a % 3]);
-          const FirstOrder W = Jg * law.energy(elastic_part(Fad, Fg_inv));
-          out.energy         = W.val();
-          for (unsigned int a = 0; a < 9; ++a)
-            out.P[a] = W.dx(a);
-        }
+      std::array<double, 9> f;
+      for (unsigned int a = 0; a < 9; ++a)
+        f[a] = F[a / 3][a % 3];
+      internal::differentiate<9>(
+        f,
+        [&](const auto &x) { return Jg * law.energy(elastic_part(x, Fg_inv)); },
+        tangent, out.energy, out.P, out.C);
     }
 
     HyperelasticModel

@@ -6,7 +6,7 @@
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/surface_layer.h>
 
-#include <Sacado.hpp>
+#include <cosmo/materials/energy_derivatives.h>
 
 #include <sstream>
 
@@ -16,9 +16,6 @@ namespace cosmo
   {
     namespace
     {
-      using FirstOrder  = Sacado::Fad::SFad<double, 6>;
-      using SecondOrder = Sacado::Fad::SFad<FirstOrder, 6>;
-
       /// Jsg Ws(Es) with Fse = Fs diag(1/gT, 1/g3), in any number type.
       template <typename Number>
       Number
@@ -79,30 +76,10 @@ namespace cosmo
                            SurfaceEnergyDerivatives &   out) const
     {
       const double tau = tension_factor * tension;
-      if (tangent)
-        {
-          std::array<SecondOrder, 6> F;
-          for (unsigned int a = 0; a < 6; ++a)
-            F[a] = SecondOrder(6, a, FirstOrder(6, a, Fs[a]));
-          const SecondOrder W = surface_energy(F, g, tau, lambda_s, mu_s);
-          out.energy          = W.val().val();
-          for (unsigned int a = 0; a < 6; ++a)
-            {
-              out.P[a] = W.dx(a).val();
-              for (unsigned int b = 0; b < 6; ++b)
-                out.C[6 * a + b] = W.dx(a).dx(b);
-            }
-        }
-      else
-        {
-          std::array<FirstOrder, 6> F;
-          for (unsigned int a = 0; a < 6; ++a)
-            F[a] = FirstOrder(6, a, Fs[a]);
-          const FirstOrder W = surface_energy(F, g, tau, lambda_s, mu_s);
-          out.energy         = W.val();
-          for (unsigned int a = 0; a < 6; ++a)
-            out.P[a] = W.dx(a);
-        }
+      internal::differentiate<6>(
+        Fs,
+        [&](const auto &x) { return surface_energy(x, g, tau, lambda_s, mu_s); },
+        tangent, out.energy, out.P, out.C);
     }
 
     double

@@ -1,0 +1,65 @@
+#ifndef cosmo_materials_energy_derivatives_h
+#define cosmo_materials_energy_derivatives_h
+
+#include <Sacado.hpp>
+
+#include <array>
+
+/**
+ * The one place where an energy density is differentiated: value, gradient
+ * and (on request) Hessian with respect to N variables by nested static
+ * forward-mode Sacado numbers. Included only by the translation units that
+ * instantiate it (bulk and surface materials): it is what makes them
+ * expensive to compile.
+ */
+namespace cosmo
+{
+  namespace materials
+  {
+    namespace internal
+    {
+      /**
+       * `energy` is a generic callable returning the energy for an array of N
+       * numbers of any Sacado type (write it with `const auto &x`).
+       */
+      template <int N, typename Energy>
+      void
+      differentiate(const std::array<double, N> &x,
+                    const Energy &               energy,
+                    const bool                   with_hessian,
+                    double &                     value,
+                    std::array<double, N> &      gradient,
+                    std::array<double, N * N> &  hessian)
+      {
+        using FirstOrder  = Sacado::Fad::SFad<double, N>;
+        using SecondOrder = Sacado::Fad::SFad<FirstOrder, N>;
+        if (with_hessian)
+          {
+            std::array<SecondOrder, N> X;
+            for (int a = 0; a < N; ++a)
+              X[a] = SecondOrder(N, a, FirstOrder(N, a, x[a]));
+            const SecondOrder W = energy(X);
+            value               = W.val().val();
+            for (int a = 0; a < N; ++a)
+              {
+                gradient[a] = W.dx(a).val();
+                for (int b = 0; b < N; ++b)
+                  hessian[N * a + b] = W.dx(a).dx(b);
+              }
+          }
+        else
+          {
+            std::array<FirstOrder, N> X;
+            for (int a = 0; a < N; ++a)
+              X[a] = FirstOrder(N, a, x[a]);
+            const FirstOrder W = energy(X);
+            value              = W.val();
+            for (int a = 0; a < N; ++a)
+              gradient[a] = W.dx(a);
+          }
+      }
+    } // namespace internal
+  }   // namespace materials
+} // namespace cosmo
+
+#endif

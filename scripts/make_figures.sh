@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Regenerate the figures of the user guide, doc/figures/*.png, from the
+# example output under output/. Run `bash scripts/run_examples.sh` first (it
+# runs the examples and studies and writes their steps.png and sweep.png);
+# this script only copies and plots, it neither builds nor runs anything.
+#   doc/figures/sweep_<study>.png   output/studies/<study>/sweep.png
+#   doc/figures/steps_<name>.png    output/<name>/steps.png (surface_growth,
+#                                   differential_axial_growth)
+#   doc/figures/section_embedded_filaments.png
+#                                   deformed section of embedded_filaments
+#                                   coloured by von_Mises_stress
+#                                   (scripts/plot_section.py)
+# Exit status 1 if an expected input is missing (run run_examples.sh).
+set -euo pipefail
+
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$REPO"
+log() { echo "[cosmo] $*"; }
+
+STUDIES=(curvature_vs_differential_growth stretch_vs_surface_growth
+         twist_vs_activation twist_vs_fibre_angle)
+STEPS=(surface_growth differential_axial_growth)
+SECTION=embedded_filaments
+
+missing=0
+for s in "${STUDIES[@]}"; do
+  [[ -f "output/studies/$s/sweep.png" ]] || { log "missing output/studies/$s/sweep.png" >&2; missing=1; }
+done
+for n in "${STEPS[@]}"; do
+  [[ -f "output/$n/steps.png" ]] || { log "missing output/$n/steps.png" >&2; missing=1; }
+done
+[[ -f "output/$SECTION/solution.pvd" ]] || { log "missing output/$SECTION/solution.pvd" >&2; missing=1; }
+if ((missing)); then
+  log "run 'bash scripts/run_examples.sh' first" >&2
+  exit 1
+fi
+
+mkdir -p doc/figures
+for s in "${STUDIES[@]}"; do
+  cp "output/studies/$s/sweep.png" "doc/figures/sweep_$s.png"
+done
+for n in "${STEPS[@]}"; do
+  cp "output/$n/steps.png" "doc/figures/steps_$n.png"
+done
+python3 scripts/plot_section.py "output/$SECTION" "doc/figures/section_$SECTION.png" von_Mises_stress >/dev/null
+for f in doc/figures/*.png; do
+  printf '[cosmo] %-55s %6s bytes\n' "$f" "$(wc -c <"$f")"
+done
