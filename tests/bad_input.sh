@@ -54,7 +54,7 @@ expect "unknown region name (lists the names)" "'Regions' = 'section, core': unk
 { base; printf 'subsection Surface layer 1\n set Boundary parts = outer, lumen\nend\n'; } > part.prm
 expect "unknown boundary part (lists the parts)" "unknown boundary part 'lumen'; this section has: outer" part.prm
 { base; printf 'subsection Surface layer 1\n set Boundary parts = arc 200 100\nend\n'; } > arc.prm
-expect "arc with A >= B" "Boundary parts" arc.prm
+expect "arc with A >= B" "needs A < B" arc.prm
 { base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = isotropic\n set Growth factor = 1 + q\nend\n'; } > sexpr.prm
 expect "surface growth expression that does not parse" "'Surface layer 1', entry 'Growth factor'" sexpr.prm
 { base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = tangential and axial\n set Growth factor = 1.1\nend\n'; } > stwo.prm
@@ -69,6 +69,13 @@ expect "sweep of an entry that does not exist" "'Parameter sweep', entry 'Entry'
 expect "sweep value outside the entry's range" "accepts '0.6'" sweep_value.prm
 { base; printf 'subsection Parameter sweep\n set Entry = Material 1/Growth factor\n set Template = 1 + x\nend\n'; } > sweep_template.prm
 expect "sweep template without {}" "Template" sweep_template.prm
+{ base; printf 'subsection Material 1\n set Growth kind = isotropic\nend\nsubsection Parameter sweep\n set Entry = Material 1/Growth factor\n set Template = 1 + {}*x\n set Values = 0.2, 1.5, 0.4\nend\n'; } > sweep_reject.prm
+expect "sweep point rejected by the problem (names it)" "1 of 3 values were rejected by the problem: '1 + 1.5\*x'" sweep_reject.prm
+if [ "$(grep -c '^[0-9]' out/sweep.csv)" = 3 ] && grep -q '^2,0.4,1,' out/sweep.csv; then
+  echo "  ok    the other sweep points ran (sweep.csv has 3 rows, point 2 converged)"
+else
+  echo "  FAIL  after a rejected point the sweep must go on:"; cat out/sweep.csv; fail=1
+fi
 { base; printf 'subsection Rod strains\n set Strains = 0, 0, 1\nend\n'; } > strains.prm
 expect "wrong number of strains" "Strains" strains.prm
 expect "unknown option" "unknown option" --frobnicate

@@ -512,6 +512,31 @@ namespace
                     }),
                     {"unknown boundary part 'inner'", "this section has: outer, all, arc A B"});
     }
+    {
+      // Arcs are half-open: on the coarse circle the face midpoints lie
+      // exactly on the arc ends (0, 90, 180, 270 degrees), and adjacent arcs
+      // must still split the boundary without sharing or dropping a face.
+      const auto g = geometry_from(" set Shape = circle\n set Global refinements = 0");
+      Triangulation<2> tria;
+      g.create_triangulation(tria);
+      geometry::BoundarySelection right, left;
+      right.parse("arc -90 90", "S", "B", g);
+      left.parse("arc 90 270", "S", "B", g);
+      unsigned int n_all = 0, n_right = 0, n_left = 0, n_both = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              ++n_all;
+              n_right += right.contains(cell->face(f));
+              n_left += left.contains(cell->face(f));
+              n_both += right.contains(cell->face(f)) && left.contains(cell->face(f));
+            }
+      check("coarse circle: 'arc -90 90' (" + std::to_string(n_right) + ") and 'arc 90 270' (" +
+              std::to_string(n_left) + ") split its " + std::to_string(n_all) +
+              " faces, sharing " + std::to_string(n_both),
+            n_both == 0 && n_right + n_left == n_all && n_right == n_left);
+    }
   }
 
   // Materials by region name: resolve_regions() with the mesh's names.

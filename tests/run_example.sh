@@ -14,7 +14,7 @@
 # and diagonal stiffnesses of every point.
 # usage: run_example.sh <rod_cross_section> <file.prm> <reference.output> <scratch dir>
 set -euo pipefail
-exe=$1 prm=$2 ref=$3 dir=$4
+exe=$(realpath "$1") prm=$(realpath "$2") ref=$(realpath -m "$3") dir=$(realpath -m "$4")
 rm -rf "$dir" && mkdir -p "$dir"
 # Redirect the example's output directory into the scratch directory.
 sed -e "s|^\( *set Output directory *=\).*|\1 $dir/out|" "$prm" > "$dir/run.prm"
@@ -35,7 +35,8 @@ for r in rows:
     for k, v in r.items():
         columns.setdefault(k.split(" [")[0], []).append(float(v))
 for c in table_checks:
-    assert eval(c, {"abs": abs, "all": all, "zip": zip, "math": math, "len": len}, columns), "'%s' fails" % c
+    # Columns as globals: a generator expression sees only globals.
+    assert eval(c, {"abs": abs, "all": all, "zip": zip, "math": math, "len": len, **columns}), "'%s' fails" % c
 for r in rows:
     env = {k.split(" [")[0]: float(v) for k, v in r.items()}
     assert env["converged"] == 1, "point %d did not converge" % env["point"]

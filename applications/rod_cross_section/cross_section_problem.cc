@@ -1507,23 +1507,26 @@ namespace cosmo
       table.add_column("helix_pitch", "L");
       table.add_column("n_negative_eigenvalues");
 
-      unsigned int n_failed = 0;
+      unsigned int             n_failed = 0;
+      std::vector<std::string> rejected;
       for (unsigned int k = 0; k < sweep.size(); ++k)
         {
           sweep.apply(prm, k);
           const std::string dir = base + "/point-" + Utilities::int_to_string(k, 2);
           io::ParameterSweep::set_entry(prm, "Output/Output directory", dir, "Output",
                                         "Output directory");
+          // A point's parameters.prm reproduces that point alone.
+          io::ParameterSweep::set_entry(prm, "Parameter sweep/Entry", "", "Parameter sweep", "Entry");
           io::RunOptions point_options = options;
           point_options.quiet          = true; // the point's log.txt has the details
-          CrossSectionProblem problem;
-          problem.parse_parameters(prm);
           std::vector<double> row = {double(k), sweep.value(k)};
           std::ostringstream  line;
           line << "point " << k + 1 << "/" << sweep.size() << ": " << sweep.label() << " = "
                << sweep.text(k);
           try
             {
+              CrossSectionProblem problem;
+              problem.parse_parameters(prm);
               problem.run(point_options, prm);
               const auto &s = problem.final_state();
               const auto  h = kinematics::helix_geometry(kinematics::RodStrains(s.strains));
@@ -1549,12 +1552,33 @@ namespace cosmo
               row.resize(table.n_columns(), std::numeric_limits<double>::quiet_NaN());
               line << "  FAILED: " << e.what();
             }
+          catch (io::InputError &e)
+            {
+              // A value can pass the entry's pattern and still be rejected
+              // by the problem (det Fg <= 0 somewhere, ...): that point is
+              // bad input, the others still run.
+              rejected.push_back(sweep.text(k));
+              row.push_back(0);
+              row.resize(table.n_columns(), std::numeric_limits<double>::quiet_NaN());
+              line << "  REJECTED: " << e.what();
+            }
           log(line.str());
           // Rewritten after every point: a killed sweep leaves a complete table.
           table.add_row(row);
           table.write(base + "/sweep.csv");
         }
       log("sweep table: " + base + "/sweep.csv");
+      if (!rejected.empty())
+        {
+          std::string values;
+          for (const auto &v : rejected)
+            values += (values.empty() ? "'" : ", '") + v + "'";
+          throw io::InputError("Parameter sweep", "Entry", sweep.entry(),
+                               std::to_string(rejected.size()) + " of " +
+                                 std::to_string(sweep.size()) +
+                                 " values were rejected by the problem: " + values +
+                                 " (the other points ran; see " + base + "/sweep-log.txt)");
+        }
       if (n_failed > 0)
         throw io::RunFailure(std::to_string(n_failed) + " of " + std::to_string(sweep.size()) +
                              " sweep points failed (see " + base + "/sweep-log.txt)");

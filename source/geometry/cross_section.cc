@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -227,9 +228,24 @@ namespace cosmo
             const int status = std::system(command.c_str());
             if (status == -1)
               throw std::runtime_error("cannot start the gmsh program '" + program + "'");
-            const bool signalled = WIFSIGNALED(status) ||
-                                   (WIFEXITED(status) && WEXITSTATUS(status) > 128);
-            if (signalled && algorithm == 8)
+            // The shell reports a signal of its child as 128 + signal.
+            const int signal = WIFSIGNALED(status) ? WTERMSIG(status) :
+                               (WIFEXITED(status) && WEXITSTATUS(status) > 128) ?
+                                                     WEXITSTATUS(status) - 128 :
+                                                     0;
+            // std::system ignores SIGINT/SIGQUIT in this process while gmsh
+            // runs; a user's Ctrl-C that killed gmsh is passed on, not taken
+            // for a crash or for bad input.
+            if (signal == SIGINT || signal == SIGQUIT || signal == SIGTERM)
+              {
+                std::error_code ignore;
+                std::filesystem::remove_all(directory, ignore);
+                std::raise(signal);
+              }
+            const bool crashed_here = (signal == SIGSEGV || signal == SIGABRT ||
+                                       signal == SIGBUS || signal == SIGFPE ||
+                                       signal == SIGILL);
+            if (crashed_here && algorithm == 8)
               {
                 crashed = " (gmsh crashed with Mesh.Algorithm 8, used 6)";
                 continue;
@@ -775,15 +791,17 @@ namespace cosmo
         return false;
       const Point<2> c     = face->center();
       const double   theta = std::atan2(c[1], c[0]) * 180 / M_PI;
-      // Angles of midpoints that lie exactly on an arc end (e.g. 0 or 90 on
-      // a symmetric mesh) must not drop out by round-off.
+      // Half-open [A, B): a midpoint exactly on an arc end (0 or 90 degrees
+      // on a symmetric mesh) belongs to the arc that starts there, so that
+      // 'arc -90 90' and 'arc 90 270' split the boundary without sharing a
+      // face. The tolerance keeps round-off from moving it across.
       const double tolerance = 1e-9;
       for (const auto &arc : arcs)
         {
           double d = std::fmod(theta - arc.first, 360.);
           if (d < 0)
             d += 360;
-          if (d <= arc.second - arc.first + tolerance || d >= 360 - tolerance)
+          if (d >= 360 - tolerance || d < arc.second - arc.first - tolerance)
             return true;
         }
       return false;

@@ -4,6 +4,7 @@
 #include <cosmo/io/parameters.h>
 
 #include <algorithm>
+#include <cctype>
 #include <iomanip>
 #include <sstream>
 
@@ -121,13 +122,25 @@ namespace cosmo
       if (template_text.empty())
         return v.str();
       std::string t = template_text;
+      // A negative value inside an expression needs parentheses ('{}^2' with
+      // -0.1 must not become '-0.1^2', which is -0.01); in a list
+      // ('0, 0, 1, {}, 0, 0') or alone it must stay a plain number for the
+      // entry's pattern.
+      auto binds = [](const char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ||
+               std::string("+-*/^").find(c) != std::string::npos;
+      };
       for (auto pos = t.find("{}"); pos != std::string::npos; pos = t.find("{}", pos))
         {
-          // Parenthesize a negative value inside an expression, so that
-          // '1 - {}*x' stays right; a bare '{}' keeps the plain number for
-          // numeric entries.
+          auto before = pos, after = pos + 2;
+          while (before > 0 && t[before - 1] == ' ')
+            --before;
+          while (after < t.size() && t[after] == ' ')
+            ++after;
+          const bool in_expression =
+            (before > 0 && binds(t[before - 1])) || (after < t.size() && binds(t[after]));
           const std::string s =
-            (values[k] < 0 && template_text != "{}") ? "(" + v.str() + ")" : v.str();
+            (values[k] < 0 && in_expression) ? "(" + v.str() + ")" : v.str();
           t.replace(pos, 2, s);
           pos += s.size();
         }

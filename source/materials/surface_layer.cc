@@ -137,7 +137,7 @@ namespace cosmo
                             "of 'all', boundary part names ('outer'; annulus: 'inner'; "
                             "rectangle and bilayer: 'left', 'right', 'bottom', 'top'; gmsh: "
                             "the names of physical curves) and arcs 'arc A B' (the faces "
-                            "whose midpoint has polar angle in [A, B] degrees about the "
+                            "whose midpoint has polar angle in [A, B) degrees about the "
                             "centroid, counterclockwise from X1). Empty: no layer.");
           prm.declare_entry("Name", "surface layer " + std::to_string(k), Patterns::Anything(),
                             "A name for output.");

@@ -115,7 +115,7 @@ namespace cosmo
      *   boundary_part_ids(), e.g. a gmsh physical line name);
      * - `arc A B` (degrees, A < B, B - A <= 360): boundary faces whose
      *   midpoint has its polar angle about the origin (the centroid, after
-     *   the gmsh shift), counterclockwise from X1, in [A, B] modulo 360.
+     *   the gmsh shift), counterclockwise from X1, in [A, B) modulo 360 (half-open: adjacent arcs share no face).
      *
      * An empty specification selects nothing. parse() needs the names, so
      * call it after the geometry's create_triangulation().
@@ -146,7 +146,7 @@ namespace cosmo
       bool                                     everything = false;
       std::vector<std::pair<std::string, types::boundary_id>> parts;
       std::set<types::boundary_id>             ids;
-      std::vector<std::pair<double, double>>   arcs; ///< [A, B] in degrees
+      std::vector<std::pair<double, double>>   arcs; ///< [A, B) in degrees
     };
   } // namespace geometry
 } // namespace cosmo

@@ -1,0 +1,109 @@
+// Unit tests of the parameter sweep (io/parameter_sweep.h): values from a
+// list or a range, the template substitution (a negative value is
+// parenthesized inside an expression, not in a list or alone), and the
+// checks that the swept entry exists and accepts every value.
+#include <deal.II/base/parameter_handler.h>
+
+#include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/parameters.h>
+
+#include "test_tools.h"
+
+using namespace dealii;
+using cosmo_test::check;
+
+namespace
+{
+  /// A handler with a sweep and two entries to sweep.
+  void
+  declare(ParameterHandler &prm)
+  {
+    cosmo::io::ParameterSweep::declare_parameters(prm);
+    prm.enter_subsection("Material 1");
+    prm.declare_entry("Growth factor", "1", Patterns::Anything());
+    prm.declare_entry("Poisson's ratio", "0.3", Patterns::Double(-1, 0.5));
+    prm.leave_subsection();
+    prm.declare_entry("Strains", "0, 0, 1, 0, 0, 0", Patterns::List(Patterns::Double(), 6, 6));
+  }
+
+  cosmo::io::ParameterSweep
+  sweep(const std::string &text, ParameterHandler &prm)
+  {
+    declare(prm);
+    prm.parse_input_from_string(text);
+    cosmo::io::ParameterSweep s;
+    s.parse_parameters(prm);
+    return s;
+  }
+
+  bool
+  rejected(const std::string &text, const std::string &message_part)
+  {
+    try
+      {
+        ParameterHandler prm;
+        sweep(text, prm);
+      }
+    catch (cosmo::io::InputError &e)
+      {
+        std::cout << "        (" << e.what() << ")\n";
+        return std::string(e.what()).find(message_part) != std::string::npos;
+      }
+    return false;
+  }
+} // namespace
+
+int
+main()
+{
+  {
+    ParameterHandler prm;
+    const auto       s = sweep("subsection Parameter sweep\n set Entry = Material 1/Growth factor\n"
+                         " set Template = 1 + {}*x\n set Range = -0.2, 0.2, 3\nend\n",
+                         prm);
+    check("range -0.2 .. 0.2 in 3 values: " + s.text(0) + " | " + s.text(1) + " | " + s.text(2),
+          s.size() == 3 && s.text(0) == "1 + (-0.2)*x" && s.text(1) == "1 + 0*x" &&
+            s.text(2) == "1 + 0.2*x");
+    s.apply(prm, 0);
+    prm.enter_subsection("Material 1");
+    check("apply sets the entry: '" + prm.get("Growth factor") + "'",
+          prm.get("Growth factor") == "1 + (-0.2)*x");
+    prm.leave_subsection();
+    check("axis label names entry and template: '" + s.axis_label() + "'",
+          s.axis_label() == "Material 1/Growth factor = 1 + {}*x");
+  }
+  {
+    ParameterHandler prm;
+    const auto       s = sweep("subsection Parameter sweep\n set Entry = Strains\n"
+                         " set Template = 0, 0, 1, {}, 0, 0\n set Values = -0.1, 0.1\nend\n",
+                         prm);
+    check("a negative value in a list stays a number: '" + s.text(0) + "'",
+          s.text(0) == "0, 0, 1, -0.1, 0, 0");
+  }
+  {
+    ParameterHandler prm;
+    const auto       s = sweep("subsection Parameter sweep\n set Entry = Material 1/Growth factor\n"
+                         " set Template = {}^2\n set Values = -0.5\nend\n",
+                         prm);
+    check("a negative value before an operator is parenthesized: '" + s.text(0) + "'",
+          s.text(0) == "(-0.5)^2");
+  }
+  {
+    ParameterHandler prm;
+    const auto       s = sweep("", prm);
+    check("no entry: no sweep", !s.enabled());
+  }
+  check("an entry that does not exist is rejected",
+        rejected("subsection Parameter sweep\n set Entry = Material 1/Youngs modulus\n"
+                 " set Values = 1\nend\n",
+                 "entry 'Entry' = 'Material 1/Youngs modulus'"));
+  check("a value outside the entry's pattern is rejected",
+        rejected("subsection Parameter sweep\n set Entry = Material 1/Poisson's ratio\n"
+                 " set Values = 0.2, 0.7\nend\n",
+                 "accepts '0.7'"));
+  check("a range with a fractional count is rejected",
+        rejected("subsection Parameter sweep\n set Entry = Material 1/Poisson's ratio\n"
+                 " set Range = 0, 0.4, 2.5\nend\n",
+                 "whole number"));
+  return cosmo_test::report();
+}
