@@ -33,6 +33,8 @@ namespace cosmo
       double       residual_norm     = 0;
       unsigned int cutbacks          = 0; ///< failed attempts before this step converged
       bool         final             = false;
+      unsigned int branch            = 0;  ///< arclength continuation: 0 the first branch
+      int          n_negative        = -1; ///< arclength continuation: stability count, -1 unknown
     };
 
     /// A nonlinear system with a load parameter and an output hook.

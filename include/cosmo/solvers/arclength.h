@@ -1,0 +1,193 @@
+#ifndef cosmo_solvers_arclength_h
+#define cosmo_solvers_arclength_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/solvers/continuation.h>
+#include <cosmo/solvers/newton.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+/**
+ * Pseudo-arclength continuation with stability tracking, event location and
+ * branch switching (continuation.md).
+ *
+ * The branch (U(s), lambda(s)) of R(U, lambda) = 0 is followed in its
+ * arclength s, ds^2 = theta |dU|^2 + dlambda^2 (theta = 1/n by default), so
+ * that folds, where lambda turns back, are passed. Each step: the tangent
+ * (one solve with the factorized Jacobian J), a predictor along it, and a
+ * checked Newton corrector on the augmented system
+ *
+ *   R(U, lambda) = 0,   theta t_U.(U - U_p) + t_lambda (lambda - lambda_p) = 0
+ *
+ * solved by bordering with the problem's own factorization (two solves per
+ * iteration). After every converged step the problem reports the number of
+ * negative eigenvalues of its Hessian on the constrained space (for an
+ * LDL^T factorization this is the inertia, which comes free). A change of
+ * that count between two steps is an event: it is located by bisection in
+ * the arclength to a tolerance and classified as a fold (lambda turns: the
+ * lambda-component of the tangent changes sign) or a branch point. At a
+ * simple branch point the null vector phi of J is found by inverse
+ * iteration; the new branch starts at U* + a phi with the corrector
+ * condition phi.(U - U*) = a (orthogonal to the old branch) and is followed
+ * like the first.
+ */
+namespace cosmo
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    /**
+     * A problem whose branches can be followed: a ContinuationProblem (R(U) at
+     * the load parameter last set, its Jacobian and solves) with dR/dlambda
+     * and the stability indicator.
+     */
+    class BifurcationProblem : public ContinuationProblem
+    {
+    public:
+      /**
+       * dR/dlambda at U and the current load parameter. The default is a
+       * central difference with step 1e-6 (1 + |lambda|); it restores lambda.
+       */
+      virtual int
+      load_derivative(const Vector<double> &U, double lambda, Vector<double> &dR_dlambda);
+
+      /**
+       * Number of negative eigenvalues of the Hessian on the constrained space
+       * at the state of the last setup_jacobian(); -1 if unknown.
+       */
+      virtual int
+      n_negative_eigenvalues() = 0;
+
+      /**
+       * 1 for the unknowns that carry a mode shape (field DoFs), 0 for those
+       * that do not (Lagrange multipliers, bordered unknowns). Used for the
+       * null vector at a branch point and the arclength norm. Default: all 1.
+       */
+      virtual void
+      mode_mask(Vector<double> &mask) const;
+
+      /// Called at every located event with the state there and, for a branch point, its mode.
+      struct Event
+      {
+        enum class Kind
+        {
+          fold,
+          branch_point
+        };
+        Kind         kind;
+        double       lambda        = 0;
+        double       arclength     = 0;
+        unsigned int branch        = 0;
+        int          n_negative_before = 0, n_negative_after = 0;
+        double       eigenvalue    = 0; ///< of J along the mode (branch points)
+        std::string
+        name() const
+        {
+          return kind == Kind::fold ? "fold" : "branch point";
+        }
+      };
+      virtual void
+      located_event(const Event &, const Vector<double> & /*U*/, const Vector<double> * /*mode*/)
+      {}
+    };
+
+    struct ArclengthSettings
+    {
+      double       initial_step       = 0.05;
+      double       minimum_step       = 1e-8;
+      double       maximum_step       = 0.2;
+      unsigned int maximum_steps      = 200; ///< per branch
+      unsigned int easy_iterations    = 4;
+      double       growth_factor      = 1.5;
+      double       lambda_min         = -1e300; ///< a branch stops when lambda leaves
+      double       lambda_max         = 1e300;  ///< [lambda_min, lambda_max]
+      double       direction          = 1;      ///< initial sign of dlambda/ds
+      double       theta              = 0;      ///< 0: 1/(number of mode unknowns)
+      double       event_tolerance    = 1e-8;   ///< arclength interval of a located event
+      bool         switch_branches    = true;
+      bool         both_directions    = true;  ///< follow +phi and -phi
+      double       switch_amplitude   = 1e-2;  ///< a in U* + a phi (phi unit in the theta norm)
+      unsigned int maximum_branches   = 4;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// What the driver found: one record per located event.
+    struct EventRecord
+    {
+      BifurcationProblem::Event event;
+      std::vector<double>       state; ///< U at the event
+      std::vector<double>       mode;  ///< null vector (branch points)
+    };
+
+    class ArclengthContinuation
+    {
+    public:
+      ArclengthContinuation(const ArclengthSettings &settings, const NewtonSettings &newton);
+
+      std::function<void(const std::string &)> progress;
+
+      /**
+       * Follow the branch through (U, lambda), which must be (nearly) a
+       * solution, then every branch switched to at a located simple branch
+       * point (up to maximum_branches). Reports every converged state
+       * through problem.converged_step() with its branch id (0: the first)
+       * and stability count. Returns the located events.
+       */
+      std::vector<EventRecord>
+      run(BifurcationProblem &problem, Vector<double> &U, double lambda);
+
+    private:
+      struct State
+      {
+        Vector<double> U;
+        double         lambda     = 0;
+        Vector<double> tU;             ///< tangent, U part
+        double         tlambda    = 0; ///< tangent, lambda part
+        int            n_negative = -1;
+      };
+
+      ArclengthSettings settings;
+      NewtonSettings    newton;
+      double            theta = 1;
+      Vector<double>    mask;
+
+      void
+      say(const std::string &s) const;
+      /// Converge the augmented system from the predictor; throws NewtonFailure.
+      NewtonResult
+      correct(BifurcationProblem &problem,
+              State &             s,
+              const Vector<double> &direction_U,
+              double               direction_lambda,
+              const Vector<double> &predictor_U,
+              double               predictor_lambda);
+      /// Factorize at s, set its stability count and its unit tangent, oriented along (oU, ol).
+      void
+      analyse(BifurcationProblem &problem, State &s, const Vector<double> *oU, double ol);
+      /// Follow one branch from s (already analysed); appends events, queues switches.
+      void
+      follow(BifurcationProblem &      problem,
+             State                     s,
+             unsigned int              branch,
+             bool                      may_switch,
+             std::vector<EventRecord> &events,
+             std::vector<State> &      switches,
+             unsigned int &            step);
+      double
+      norm2(const Vector<double> &v) const;
+      double
+      dot(const Vector<double> &a, const Vector<double> &b) const;
+    };
+  } // namespace solvers
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,529 @@
+#include <cosmo/io/parameters.h>
+#include <cosmo/solvers/arclength.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    int
+    BifurcationProblem::load_derivative(const Vector<double> &U,
+                                        const double          lambda,
+                                        Vector<double> &      dR_dlambda)
+    {
+      const double   h = 1e-6 * (1 + std::abs(lambda));
+      Vector<double> Rp(U.size()), Rm(U.size());
+      set_load_parameter(lambda + h);
+      int status = residual(U, Rp);
+      set_load_parameter(lambda - h);
+      status += residual(U, Rm);
+      set_load_parameter(lambda);
+      dR_dlambda = Rp;
+      dR_dlambda -= Rm;
+      dR_dlambda /= 2 * h;
+      return status;
+    }
+
+    void
+    BifurcationProblem::mode_mask(Vector<double> &mask) const
+    {
+      mask.reinit(n_unknowns());
+      mask = 1.;
+    }
+
+    void
+    ArclengthSettings::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Arclength continuation");
+      prm.declare_entry("Initial step", "0.05", Patterns::Double(1e-14),
+                        "First arclength step (ds^2 = theta |dU|^2 + dlambda^2).");
+      prm.declare_entry("Minimum step", "1e-8", Patterns::Double(1e-16),
+                        "A branch ends (with a message) when its step falls below this.");
+      prm.declare_entry("Maximum step", "0.2", Patterns::Double(1e-14),
+                        "Largest arclength step.");
+      prm.declare_entry("Maximum number of steps", "200", Patterns::Integer(1),
+                        "Steps per branch.");
+      prm.declare_entry("Easy step iterations", "4", Patterns::Integer(1),
+                        "A step converging in at most this many Newton iterations lets "
+                        "the next one grow by 'Step growth factor'.");
+      prm.declare_entry("Step growth factor", "1.5", Patterns::Double(1, 10),
+                        "Growth of the step after an easy one.");
+      prm.declare_entry("Parameter range", "-1e300, 1e300", Patterns::List(Patterns::Double(), 2, 2),
+                        "A branch ends when its parameter lambda leaves [min, max].");
+      prm.declare_entry("Initial direction", "increasing",
+                        Patterns::Selection("increasing|decreasing"),
+                        "Whether the first branch starts with lambda increasing or decreasing.");
+      prm.declare_entry("Field weight", "0", Patterns::Double(0),
+                        "theta in ds^2 = theta |dU|^2 + dlambda^2; 0: 1/(number of mode "
+                        "unknowns), i.e. the mean square of the field.");
+      prm.declare_entry("Event tolerance", "1e-8", Patterns::Double(1e-15),
+                        "Folds and branch points are located by bisection until their "
+                        "arclength interval is below this.");
+      prm.declare_entry("Switch branches", "true", Patterns::Bool(),
+                        "At a simple branch point on the first branch, switch to the "
+                        "bifurcated branch and follow it.");
+      prm.declare_entry("Both directions", "true", Patterns::Bool(),
+                        "Follow the bifurcated branch on both sides (+phi and -phi).");
+      prm.declare_entry("Switch amplitude", "1e-2", Patterns::Double(1e-14),
+                        "Distance a (in the arclength norm) of the first point of a new "
+                        "branch from the branch point, along the mode.");
+      prm.declare_entry("Maximum number of branches", "4", Patterns::Integer(1, 100),
+                        "Branches followed in all, the first included.");
+      prm.leave_subsection();
+    }
+
+    void
+    ArclengthSettings::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Arclength continuation");
+      initial_step     = prm.get_double("Initial step");
+      minimum_step     = prm.get_double("Minimum step");
+      maximum_step     = prm.get_double("Maximum step");
+      maximum_steps    = prm.get_integer("Maximum number of steps");
+      easy_iterations  = prm.get_integer("Easy step iterations");
+      growth_factor    = prm.get_double("Step growth factor");
+      const auto range = io::get_double_list(prm, "Parameter range", 2, "Arclength continuation");
+      lambda_min       = range[0];
+      lambda_max       = range[1];
+      direction        = prm.get("Initial direction") == "increasing" ? 1. : -1.;
+      theta            = prm.get_double("Field weight");
+      event_tolerance  = prm.get_double("Event tolerance");
+      switch_branches  = prm.get_bool("Switch branches");
+      both_directions  = prm.get_bool("Both directions");
+      switch_amplitude = prm.get_double("Switch amplitude");
+      maximum_branches = prm.get_integer("Maximum number of branches");
+      if (!(lambda_min < lambda_max))
+        throw io::InputError("Arclength continuation", "Parameter range",
+                             prm.get("Parameter range"), "min < max");
+      if (minimum_step > initial_step || initial_step > maximum_step)
+        throw io::InputError("Arclength continuation", "Initial step", prm.get("Initial step"),
+                             "between 'Minimum step' and 'Maximum step'");
+      prm.leave_subsection();
+    }
+
+    namespace
+    {
+      /**
+       * The augmented system [R(U, lambda); theta (m o dU).(U - Up) +
+       * dl (lambda - lp)] in the unknowns [U; lambda], solved by bordering
+       * with the problem's factorization of J = dR/dU.
+       */
+      class AugmentedSystem : public NonlinearSystem
+      {
+      public:
+        AugmentedSystem(BifurcationProblem &  problem,
+                        const double          theta,
+                        const Vector<double> &mask,
+                        const Vector<double> &dU,
+                        const double          dl,
+                        const Vector<double> &Up,
+                        const double          lp)
+          : problem(problem)
+          , n(problem.n_unknowns())
+          , theta(theta)
+          , dl(dl)
+          , lp(lp)
+          , c(dU)
+          , Up(Up)
+          , b(n)
+        {
+          c.scale(mask);
+          c *= theta;
+        }
+
+        unsigned int
+        n_unknowns() const override
+        {
+          return n + 1;
+        }
+
+        int
+        residual(const Vector<double> &X, Vector<double> &R) override
+        {
+          Vector<double> U(X.begin(), X.begin() + n), RU(n);
+          problem.set_load_parameter(X[n]);
+          const int status = problem.residual(U, RU);
+          if (status != 0)
+            return status;
+          R.reinit(n + 1);
+          std::copy(RU.begin(), RU.end(), R.begin());
+          double s = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            s += c[i] * (U[i] - Up[i]);
+          R[n] = s + dl * (X[n] - lp);
+          return 0;
+        }
+
+        int
+        setup_jacobian(const Vector<double> &X) override
+        {
+          Vector<double> U(X.begin(), X.begin() + n), Rl(n);
+          problem.set_load_parameter(X[n]);
+          if (problem.load_derivative(U, X[n], Rl) != 0)
+            return 1;
+          if (problem.setup_jacobian(U) != 0)
+            return 1;
+          return problem.solve_with_jacobian(Rl, b); // b = J^-1 dR/dlambda
+        }
+
+        int
+        solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override
+        {
+          Vector<double> r(rhs.begin(), rhs.begin() + n), a(n);
+          if (problem.solve_with_jacobian(r, a) != 0)
+            return 1;
+          const double denominator = dl - (c * b);
+          if (denominator == 0)
+            return 1;
+          const double x_lambda = (rhs[n] - (c * a)) / denominator;
+          dst.reinit(n + 1);
+          for (unsigned int i = 0; i < n; ++i)
+            dst[i] = a[i] - b[i] * x_lambda;
+          dst[n] = x_lambda;
+          return 0;
+        }
+
+        void
+        residual_weights(Vector<double> &w) const override
+        {
+          Vector<double> wU;
+          problem.residual_weights(wU);
+          w.reinit(n + 1);
+          std::copy(wU.begin(), wU.end(), w.begin());
+          w[n] = 1;
+        }
+
+      private:
+        BifurcationProblem &problem;
+        const unsigned int  n;
+        const double        theta, dl, lp;
+        Vector<double>      c;  // theta (mask o dU)
+        const Vector<double> Up;
+        Vector<double>      b;
+      };
+    } // namespace
+
+    ArclengthContinuation::ArclengthContinuation(const ArclengthSettings &settings,
+                                                 const NewtonSettings &   newton)
+      : settings(settings)
+      , newton(newton)
+    {}
+
+    void
+    ArclengthContinuation::say(const std::string &s) const
+    {
+      if (progress)
+        progress(s);
+    }
+
+    double
+    ArclengthContinuation::dot(const Vector<double> &a, const Vector<double> &b) const
+    {
+      double s = 0;
+      for (unsigned int i = 0; i < a.size(); ++i)
+        s += mask[i] * a[i] * b[i];
+      return theta * s;
+    }
+
+    double
+    ArclengthContinuation::norm2(const Vector<double> &v) const
+    {
+      return dot(v, v);
+    }
+
+    NewtonResult
+    ArclengthContinuation::correct(BifurcationProblem &  problem,
+                                   State &               s,
+                                   const Vector<double> &direction_U,
+                                   const double          direction_lambda,
+                                   const Vector<double> &predictor_U,
+                                   const double          predictor_lambda)
+    {
+      const unsigned int n = problem.n_unknowns();
+      AugmentedSystem    system(problem, theta, mask, direction_U, direction_lambda, predictor_U,
+                             predictor_lambda);
+      Vector<double> X(n + 1);
+      std::copy(predictor_U.begin(), predictor_U.end(), X.begin());
+      X[n]                 = predictor_lambda;
+      const NewtonResult r = newton_solve(system, X, newton);
+      s.U.reinit(n);
+      std::copy(X.begin(), X.begin() + n, s.U.begin());
+      s.lambda = X[n];
+      problem.set_load_parameter(s.lambda);
+      return r;
+    }
+
+    void
+    ArclengthContinuation::analyse(BifurcationProblem &  problem,
+                                   State &               s,
+                                   const Vector<double> *oU,
+                                   const double          ol)
+    {
+      const unsigned int n = problem.n_unknowns();
+      problem.set_load_parameter(s.lambda);
+      Vector<double> Rl(n), z(n);
+      if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
+        throw NewtonFailure("the Jacobian cannot be set up at a converged state");
+      s.n_negative = problem.n_negative_eigenvalues();
+      problem.solve_with_jacobian(Rl, z); // z = J^-1 R_lambda; tangent (-z, 1) up to scale
+      z *= -1.;
+      const double tl = 1. / std::sqrt(1. + norm2(z));
+      s.tU            = z;
+      s.tU *= tl;
+      s.tlambda = tl;
+      const double orientation = oU ? dot(s.tU, *oU) + s.tlambda * ol : s.tlambda * ol;
+      if (orientation < 0)
+        {
+          s.tU *= -1.;
+          s.tlambda *= -1.;
+        }
+    }
+
+    void
+    ArclengthContinuation::follow(BifurcationProblem &      problem,
+                                  State                     s,
+                                  const unsigned int        branch,
+                                  const bool                may_switch,
+                                  std::vector<EventRecord> &events,
+                                  std::vector<State> &      switches,
+                                  unsigned int &            step)
+    {
+      double       ds       = settings.initial_step;
+      unsigned int cutbacks = 0;
+      for (unsigned int k = 0; k < settings.maximum_steps; ++k)
+        {
+          if (s.lambda < settings.lambda_min || s.lambda > settings.lambda_max)
+            {
+              say("  branch " + std::to_string(branch) + " left the parameter range at lambda = " +
+                  std::to_string(s.lambda));
+              return;
+            }
+          Vector<double> Up = s.U;
+          Up.add(ds, s.tU);
+          const double lp = s.lambda + ds * s.tlambda;
+          State        next;
+          NewtonResult r;
+          try
+            {
+              r = correct(problem, next, s.tU, s.tlambda, Up, lp);
+              analyse(problem, next, &s.tU, s.tlambda);
+            }
+          catch (NewtonFailure &e)
+            {
+              ++cutbacks;
+              ds /= 2;
+              std::ostringstream m;
+              m << "  branch " << branch << ": step failed (" << e.what() << "); cutting back to "
+                << ds;
+              say(m.str());
+              if (ds < settings.minimum_step)
+                {
+                  say("  branch " + std::to_string(branch) +
+                      " ends: the step fell below the minimum at lambda = " +
+                      std::to_string(s.lambda));
+                  return;
+                }
+              --k;
+              continue;
+            }
+
+          // An event between s and next: locate it by bisection in the arclength.
+          if (s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != s.n_negative)
+            {
+              double sigma_lo = 0, sigma_hi = ds;
+              State  lo = s, hi = next;
+              while (sigma_hi - sigma_lo > settings.event_tolerance)
+                {
+                  // The midpoint, or next to it if the Jacobian is exactly
+                  // singular there (a dyadic midpoint can hit the event).
+                  double sigma = 0.5 * (sigma_lo + sigma_hi);
+                  State  mid;
+                  bool   found = false;
+                  for (const double fraction : {0.5, 0.49, 0.51})
+                    {
+                      sigma             = sigma_lo + fraction * (sigma_hi - sigma_lo);
+                      Vector<double> Um = s.U;
+                      Um.add(sigma, s.tU);
+                      try
+                        {
+                          correct(problem, mid, s.tU, s.tlambda, Um, s.lambda + sigma * s.tlambda);
+                          analyse(problem, mid, &s.tU, s.tlambda);
+                          found = true;
+                          break;
+                        }
+                      catch (NewtonFailure &)
+                        {}
+                    }
+                  if (!found)
+                    break; // keep the bracket reached so far
+                  if (mid.n_negative == s.n_negative)
+                    {
+                      sigma_lo = sigma;
+                      lo       = mid;
+                    }
+                  else
+                    {
+                      sigma_hi = sigma;
+                      hi       = mid;
+                    }
+                }
+              EventRecord record;
+              auto &      e = record.event;
+              e.kind        = (lo.tlambda * hi.tlambda < 0) ? BifurcationProblem::Event::Kind::fold :
+                                                       BifurcationProblem::Event::Kind::branch_point;
+              e.lambda            = 0.5 * (lo.lambda + hi.lambda);
+              e.arclength         = sigma_hi - sigma_lo;
+              e.branch            = branch;
+              e.n_negative_before = s.n_negative;
+              e.n_negative_after  = hi.n_negative;
+              record.state.assign(lo.U.begin(), lo.U.end());
+
+              // The mode: inverse iteration with J at the event (nearly
+              // singular there), on the mode unknowns only.
+              Vector<double> phi;
+              if (e.kind == BifurcationProblem::Event::Kind::branch_point)
+                {
+                  problem.set_load_parameter(lo.lambda);
+                  problem.setup_jacobian(lo.U);
+                  const unsigned int n = problem.n_unknowns();
+                  phi.reinit(n);
+                  for (unsigned int i = 0; i < n; ++i)
+                    phi[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
+                  phi /= std::sqrt(norm2(phi));
+                  double mu = 0;
+                  for (unsigned int it = 0; it < 100; ++it)
+                    {
+                      Vector<double> x(n);
+                      problem.solve_with_jacobian(phi, x);
+                      x.scale(mask);
+                      mu = dot(phi, x) / theta; // ~ 1/eigenvalue (Euclidean on the mask)
+                      x /= std::sqrt(norm2(x));
+                      if (dot(x, phi) < 0)
+                        x *= -1.;
+                      Vector<double> d = x;
+                      d -= phi;
+                      phi = x;
+                      if (std::sqrt(norm2(d)) < 1e-12)
+                        break;
+                    }
+                  e.eigenvalue = (mu != 0) ? 1. / mu : 0;
+                  record.mode.assign(phi.begin(), phi.end());
+                }
+              problem.located_event(e, lo.U, phi.size() ? &phi : nullptr);
+              std::ostringstream m;
+              m << std::setprecision(10) << "  " << e.name() << " on branch " << branch
+                << " at lambda = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
+                << " -> " << e.n_negative_after << ", located to arclength " << e.arclength << ")";
+              say(m.str());
+              const bool simple = std::abs(e.n_negative_after - e.n_negative_before) == 1;
+              if (e.kind == BifurcationProblem::Event::Kind::branch_point && may_switch && simple)
+                for (const double sign : settings.both_directions ? std::vector<double>{1., -1.} :
+                                                                    std::vector<double>{1.})
+                  {
+                    State start;
+                    start.U      = lo.U;
+                    start.lambda = lo.lambda;
+                    start.tU     = phi;
+                    start.tU *= sign;
+                    start.tlambda = 0;
+                    switches.push_back(start);
+                  }
+              events.push_back(record);
+            }
+
+          s = next;
+          ++step;
+          StepReport report;
+          report.step              = step;
+          report.t                 = s.lambda;
+          report.step_length       = ds;
+          report.newton_iterations = r.iterations;
+          report.residual_norm     = r.residual_norm;
+          report.cutbacks          = cutbacks;
+          report.branch            = branch;
+          report.n_negative        = s.n_negative;
+          report.final = (k + 1 == settings.maximum_steps || s.lambda < settings.lambda_min ||
+                          s.lambda > settings.lambda_max);
+          problem.set_load_parameter(s.lambda);
+          problem.converged_step(s.U, report);
+          cutbacks = 0;
+          if (r.iterations <= settings.easy_iterations)
+            ds = std::min(settings.maximum_step, ds * settings.growth_factor);
+        }
+    }
+
+    std::vector<EventRecord>
+    ArclengthContinuation::run(BifurcationProblem &problem, Vector<double> &U, const double lambda)
+    {
+      problem.mode_mask(mask);
+      theta = settings.theta > 0 ? settings.theta : 1. / std::max(1., mask.l1_norm());
+
+      // The starting point: converge it at fixed lambda, analyse, report.
+      State s;
+      problem.set_load_parameter(lambda);
+      const NewtonResult r0 = newton_solve(problem, U, newton);
+      s.U                   = U;
+      s.lambda              = lambda;
+      analyse(problem, s, nullptr, settings.direction);
+      unsigned int step = 0;
+      {
+        StepReport report;
+        report.t                 = lambda;
+        report.newton_iterations = r0.iterations;
+        report.residual_norm     = r0.residual_norm;
+        report.n_negative        = s.n_negative;
+        problem.set_load_parameter(lambda);
+        problem.converged_step(s.U, report);
+      }
+
+      std::vector<EventRecord> events;
+      std::vector<State>       switches;
+      follow(problem, s, 0, settings.switch_branches, events, switches, step);
+
+      unsigned int branch = 1;
+      for (const auto &start : switches)
+        {
+          if (branch >= settings.maximum_branches)
+            {
+              say("  maximum number of branches reached; further branch switches skipped");
+              break;
+            }
+          // First point of the new branch: a distance a along the mode, on
+          // the hyperplane orthogonal to it (so not back on the old branch).
+          State          first;
+          Vector<double> Up = start.U;
+          Up.add(settings.switch_amplitude, start.tU);
+          try
+            {
+              const NewtonResult r =
+                correct(problem, first, start.tU, 0., Up, start.lambda);
+              analyse(problem, first, &start.tU, 0.);
+              StepReport report;
+              report.step              = ++step;
+              report.t                 = first.lambda;
+              report.newton_iterations = r.iterations;
+              report.residual_norm     = r.residual_norm;
+              report.branch            = branch;
+              report.n_negative        = first.n_negative;
+              problem.set_load_parameter(first.lambda);
+              problem.converged_step(first.U, report);
+            }
+          catch (NewtonFailure &e)
+            {
+              say("  switch to branch " + std::to_string(branch) + " failed: " + e.what());
+              ++branch;
+              continue;
+            }
+          say("  following branch " + std::to_string(branch) + " from lambda = " +
+              std::to_string(first.lambda));
+          std::vector<State> no_switches;
+          follow(problem, first, branch, false, events, no_switches, step);
+          ++branch;
+        }
+      return events;
+    }
+  } // namespace solvers
+} // namespace cosmo

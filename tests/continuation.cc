@@ -1,0 +1,380 @@
+// The arclength / bifurcation driver (solvers/arclength.h) on problems with
+// known answers: a pitchfork, a fold, and the buckling of a discrete
+// cantilever (elastica) whose critical load, mode and post-buckled branch
+// are known in closed form. Run as test_continuation <case>.
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <cosmo/solvers/arclength.h>
+
+#include "test_tools.h"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+
+using namespace dealii;
+using namespace cosmo;
+using cosmo_test::check;
+using cosmo_test::check_close;
+
+namespace
+{
+  /// A small problem with an analytic gradient R and Hessian H of an energy.
+  class DenseProblem : public solvers::BifurcationProblem
+  {
+  public:
+    struct Point
+    {
+      double              lambda;
+      unsigned int        branch;
+      int                 n_negative;
+      std::vector<double> U;
+    };
+    std::vector<Point>                   history;
+    std::vector<solvers::BifurcationProblem::Event> events;
+
+    explicit DenseProblem(unsigned int n)
+      : n(n)
+      , J(n, n)
+    {}
+    unsigned int
+    n_unknowns() const override
+    {
+      return n;
+    }
+    void
+    set_load_parameter(double l) override
+    {
+      lambda = l;
+    }
+    int
+    residual(const Vector<double> &U, Vector<double> &R) override
+    {
+      R.reinit(n);
+      FullMatrix<double> H(n, n);
+      evaluate(U, lambda, R, H);
+      return 0;
+    }
+    int
+    setup_jacobian(const Vector<double> &U) override
+    {
+      Vector<double>     R(n);
+      FullMatrix<double> H(n, n);
+      evaluate(U, lambda, R, H);
+      LAPACKFullMatrix<double> E(n, n);
+      E = H;
+      E.compute_eigenvalues_symmetric(-1e300, 1e300, 1e-14, eigenvalues, eigenvectors);
+      negative = 0;
+      for (unsigned int i = 0; i < eigenvalues.size(); ++i)
+        negative += eigenvalues[i] < 0;
+      J = H;
+      try
+        {
+          J.compute_lu_factorization();
+        }
+      catch (std::exception &)
+        {
+          return 1; // exactly singular: the driver steps around it
+        }
+      return 0;
+    }
+    int
+    solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override
+    {
+      dst = rhs;
+      J.solve(dst);
+      return 0;
+    }
+    int
+    n_negative_eigenvalues() override
+    {
+      return negative;
+    }
+    void
+    converged_step(const Vector<double> &U, const solvers::StepReport &r) override
+    {
+      history.push_back({r.t, r.branch, r.n_negative, std::vector<double>(U.begin(), U.end())});
+    }
+    void
+    located_event(const Event &e, const Vector<double> &, const Vector<double> *) override
+    {
+      events.push_back(e);
+    }
+
+  protected:
+    virtual void
+    evaluate(const Vector<double> &U, double lambda, Vector<double> &R, FullMatrix<double> &H) = 0;
+
+    unsigned int             n;
+    double                   lambda = 0;
+    LAPACKFullMatrix<double> J;
+    Vector<double>           eigenvalues;
+    FullMatrix<double>       eigenvectors;
+    int                      negative = 0;
+  };
+
+  solvers::ArclengthSettings
+  settings(double lambda_min, double lambda_max)
+  {
+    solvers::ArclengthSettings s;
+    s.lambda_min      = lambda_min;
+    s.lambda_max      = lambda_max;
+    s.initial_step    = 0.05;
+    s.maximum_step    = 0.1;
+    s.event_tolerance = 1e-10;
+    return s;
+  }
+
+  solvers::NewtonSettings
+  newton()
+  {
+    solvers::NewtonSettings n;
+    n.relative_tolerance = 1e-12;
+    return n;
+  }
+
+  // E = (1 - lambda) x^2/2 + x^4/4 + y^2/2: the trivial branch x = 0 loses
+  // stability at lambda = 1, where the branches x^2 = lambda - 1 bifurcate.
+  class Pitchfork : public DenseProblem
+  {
+  public:
+    Pitchfork()
+      : DenseProblem(2)
+    {}
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      R[0]    = (1 - l) * U[0] + U[0] * U[0] * U[0];
+      R[1]    = U[1];
+      H(0, 0) = 1 - l + 3 * U[0] * U[0];
+      H(1, 1) = 1;
+      H(0, 1) = H(1, 0) = 0;
+    }
+  };
+
+  void
+  pitchfork()
+  {
+    Pitchfork               p;
+    solvers::ArclengthContinuation driver(settings(-1, 2), newton());
+    driver.progress = [](const std::string &s) { std::cout << s << "\n"; };
+    Vector<double> U(2);
+    const auto     events = driver.run(p, U, 0.);
+    check("one event on the first branch, and it is a branch point",
+          events.size() == 1 &&
+            events[0].event.kind == solvers::BifurcationProblem::Event::Kind::branch_point);
+    if (events.empty())
+      return;
+    // Along x = 0 the arclength is lambda itself: the tolerance carries over.
+    check_close("branch point at lambda = 1", events[0].event.lambda, 1, 0, 1e-9);
+    check_close("mode = +-(1, 0): |phi_y|", std::abs(events[0].mode[1]), 0, 0, 1e-12);
+    check_close("eigenvalue of J along the mode ~ 0", events[0].event.eigenvalue, 0, 0, 1e-8);
+    double worst = 0, worst_trivial = 0;
+    unsigned int on_new = 0, unstable = 0, wrong_stability = 0, branches_up = 0, branches_down = 0;
+    for (const auto &pt : p.history)
+      if (pt.branch == 0)
+        {
+          worst_trivial = std::max(worst_trivial, std::abs(pt.U[0]));
+          wrong_stability += (pt.n_negative != (pt.lambda > 1 ? 1 : 0));
+          unstable += (pt.n_negative == 1);
+        }
+      else
+        {
+          ++on_new;
+          worst = std::max(worst, std::abs(pt.U[0] * pt.U[0] - (pt.lambda - 1)));
+          wrong_stability += (pt.n_negative != 0);
+          branches_up += pt.U[0] > 0;
+          branches_down += pt.U[0] < 0;
+        }
+    std::cout << "  " << p.history.size() << " states, " << on_new << " on the new branches\n";
+    check_close("first branch stays on x = 0", worst_trivial, 0, 0, 1e-12);
+    check("new branches: both signs followed (" + std::to_string(branches_up) + " with x > 0, " +
+            std::to_string(branches_down) + " with x < 0)",
+          branches_up > 5 && branches_down > 5);
+    check_close("new branches lie on x^2 = lambda - 1", worst, 0, 0, 1e-10);
+    check("stability: x = 0 unstable exactly beyond lambda = 1, bifurcated branches stable (" +
+            std::to_string(wrong_stability) + " wrong, " + std::to_string(unstable) + " unstable)",
+          wrong_stability == 0 && unstable > 0);
+  }
+
+  // E = x^3/3 - lambda x + y^2/2: x^2 = lambda, a fold at lambda = 0 where
+  // the unstable branch x < 0 turns into the stable one x > 0.
+  class Fold : public DenseProblem
+  {
+  public:
+    Fold()
+      : DenseProblem(2)
+    {}
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      R[0]    = U[0] * U[0] - l;
+      R[1]    = U[1];
+      H(0, 0) = 2 * U[0];
+      H(1, 1) = 1;
+      H(0, 1) = H(1, 0) = 0;
+    }
+  };
+
+  void
+  fold()
+  {
+    Fold p;
+    auto s      = settings(-1, 1);
+    s.direction = -1; // from (x, lambda) = (-1, 1) towards the fold
+    solvers::ArclengthContinuation driver(s, newton());
+    driver.progress = [](const std::string &m) { std::cout << m << "\n"; };
+    Vector<double> U(2);
+    U[0]              = -1;
+    const auto events = driver.run(p, U, 1.);
+    check("one event, a fold", events.size() == 1 &&
+                                 events[0].event.kind == solvers::BifurcationProblem::Event::Kind::fold);
+    if (events.empty())
+      return;
+    // The fold is located to arclength 1e-10 in x; lambda = x^2 there.
+    check_close("fold at x = 0", events[0].state[0], 0, 0, 1e-9);
+    check_close("fold at lambda = 0", events[0].event.lambda, 0, 0, 1e-9);
+    double worst = 0, final_lambda = 0, final_x = 0;
+    unsigned int wrong = 0;
+    for (const auto &pt : p.history)
+      {
+        worst = std::max(worst, std::abs(pt.U[0] * pt.U[0] - pt.lambda));
+        wrong += pt.n_negative != (pt.U[0] < 0 ? 1 : 0);
+        final_lambda = pt.lambda;
+        final_x      = pt.U[0];
+      }
+    check_close("every state on x^2 = lambda", worst, 0, 0, 1e-10);
+    check("passed the fold: last state on x > 0 with lambda back at the end of the range (x = " +
+            std::to_string(final_x) + ", lambda = " + std::to_string(final_lambda) + ")",
+          final_x > 0.9 && final_lambda >= 1);
+    check("stability count 1 on x < 0, 0 on x > 0 (" + std::to_string(wrong) + " wrong)", wrong == 0);
+    check("no branch switching at a fold", std::all_of(p.history.begin(), p.history.end(),
+                                                       [](const auto &pt) { return pt.branch == 0; }));
+  }
+
+  // A clamped-free chain of n rigid links (bending stiffness 1, length 1)
+  // under a dead compressive end load lambda:
+  //   E = sum_i (theta_i - theta_{i-1})^2 / (2h) + lambda h sum_i cos(theta_i),
+  // theta_0 = 0. The straight state loses stability at the discrete Euler load
+  // lambda_c = (2 - 2 cos(pi/(2n+1))) / h^2, with the mode sin(pi i/(2n+1));
+  // the post-buckled branch tends to the elastica, lambda/(pi^2/4) =
+  // (2 K(k)/pi)^2, k = sin(theta_tip/2), as h -> 0.
+  class Cantilever : public DenseProblem
+  {
+  public:
+    explicit Cantilever(unsigned int n)
+      : DenseProblem(n)
+      , h(1. / n)
+    {}
+    const double h;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      H = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double left = (i == 0) ? 0. : U[i - 1];
+          R[i]              = (U[i] - left) / h - l * h * std::sin(U[i]);
+          H(i, i)           = 1 / h - l * h * std::cos(U[i]);
+          if (i > 0)
+            H(i, i - 1) = -1 / h;
+          if (i + 1 < n)
+            {
+              R[i] -= (U[i + 1] - U[i]) / h;
+              H(i, i) += 1 / h;
+              H(i, i + 1) = -1 / h;
+            }
+        }
+    }
+  };
+
+  double
+  elliptic_K(const double k)
+  {
+    double a = 1, b = std::sqrt(1 - k * k);
+    for (int i = 0; i < 40; ++i)
+      {
+        const double an = 0.5 * (a + b);
+        b               = std::sqrt(a * b);
+        a               = an;
+      }
+    return M_PI / (2 * a);
+  }
+
+  void
+  cantilever()
+  {
+    const unsigned int n = 40;
+    Cantilever         p(n);
+    auto               s = settings(0, 6);
+    s.both_directions    = true;
+    s.switch_amplitude   = 1e-3;
+    solvers::ArclengthContinuation driver(s, newton());
+    driver.progress = [](const std::string &m) { std::cout << m << "\n"; };
+    Vector<double> U(n);
+    const auto     events   = driver.run(p, U, 0.);
+    const double   lambda_c = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (p.h * p.h);
+    check("first event is a simple branch point", !events.empty() &&
+                                                     events[0].event.kind ==
+                                                       solvers::BifurcationProblem::Event::Kind::branch_point &&
+                                                     events[0].event.n_negative_after == 1);
+    if (events.empty())
+      return;
+    check_close("critical load = discrete Euler load", events[0].event.lambda, lambda_c, 1e-9);
+    std::cout << "  (discrete " << lambda_c << ", continuum pi^2/4 = " << M_PI * M_PI / 4 << ")\n";
+    // The mode against sin(pi i/(2n+1)), both normalized, sign fixed.
+    double dot = 0, nm = 0, ne = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double e = std::sin(M_PI * (i + 1) / (2 * n + 1));
+        dot += e * events[0].mode[i];
+        nm += events[0].mode[i] * events[0].mode[i];
+        ne += e * e;
+      }
+    check_close("mode = sin(pi i/(2n+1)): 1 - |cos angle|", 1 - std::abs(dot) / std::sqrt(nm * ne), 0, 0, 1e-10);
+
+    double       worst = 0;
+    unsigned int n_new = 0, wrong = 0;
+    double       max_tip = 0;
+    for (const auto &pt : p.history)
+      {
+        if (pt.branch == 0)
+          {
+            wrong += pt.n_negative != (pt.lambda > lambda_c ? 1 : 0);
+            continue;
+          }
+        ++n_new;
+        wrong += pt.n_negative != 0;
+        const double tip = std::abs(pt.U[n - 1]);
+        max_tip          = std::max(max_tip, tip);
+        if (tip < 0.2)
+          continue; // near the branch point the comparison is dominated by 0/0
+        const double K       = elliptic_K(std::sin(tip / 2));
+        const double elastic = M_PI * M_PI / 4 * std::pow(2 * K / M_PI, 2);
+        worst                = std::max(worst, std::abs(pt.lambda / elastic - lambda_c / (M_PI * M_PI / 4)));
+      }
+    std::cout << "  " << n_new << " post-buckled states, tip rotation up to " << max_tip << "\n";
+    // lambda / elastica, relative to the discrete/continuum ratio of the
+    // critical load: the O(h^2) discretization error, measured 2e-4.
+    check_close("post-buckled branch on the elastica (relative to lambda_c,h / lambda_c)", worst, 0, 0, 1e-3);
+    check("post-buckled branch reaches large rotations", max_tip > 1.5);
+    check("stability: straight unstable beyond lambda_c, buckled stable (" + std::to_string(wrong) + " wrong)",
+          wrong == 0);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever}};
+  return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
+}
