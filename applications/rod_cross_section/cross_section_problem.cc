@@ -25,8 +25,8 @@ namespace cosmo
   {
     namespace
     {
-      constexpr unsigned int n_strains = 6;
-      constexpr unsigned int n_gauge   = 6;
+      constexpr unsigned int n_strains = assembly::ReducedRodProblem::n_strains;
+      constexpr unsigned int n_gauge   = assembly::ReducedRodProblem::n_gauge;
 
       // e_m x e_c, for the mixed derivative of kappa x w.
       Tensor<1, 3>
@@ -175,24 +175,6 @@ namespace cosmo
     }
 
     void
-    CrossSectionProblem::set_target_strains(const std::array<double, 6> &strains)
-    {
-      target_strains = strains;
-    }
-
-    void
-    CrossSectionProblem::set_free_strains(const std::array<bool, 6> &free)
-    {
-      strain_is_free = free;
-    }
-
-    unsigned int
-    CrossSectionProblem::n_unknowns() const
-    {
-      return n_u() + n_gauge + n_strains;
-    }
-
-    void
     CrossSectionProblem::setup_system()
     {
       geometry.create_triangulation(triangulation);
@@ -213,7 +195,8 @@ namespace cosmo
 
       // The six gauge constraints C U = 0, as integrals of the shape functions
       // (not sums of nodal values, which would weight nodes by the mesh).
-      for (auto &c : constraint_rows)
+      std::array<Vector<double>, 6> rows;
+      for (auto &c : rows)
         c.reinit(n_u());
       {
         const QGauss<2> quadrature(degree + 1);
@@ -232,22 +215,22 @@ namespace cosmo
                   {
                     const unsigned int c = fe->system_to_component_index(i).first;
                     const double       N = fev.shape_value(i, q) * dA;
-                    constraint_rows[c][idx[i]] += N; // int u = 0
+                    rows[c][idx[i]] += N; // int u = 0
                     if (c == 1)
-                      constraint_rows[3][idx[i]] += X[0] * N; // int X1 u2 - X2 u1 = 0
+                      rows[3][idx[i]] += X[0] * N; // int X1 u2 - X2 u1 = 0
                     if (c == 0)
-                      constraint_rows[3][idx[i]] -= X[1] * N;
+                      rows[3][idx[i]] -= X[1] * N;
                     if (c == 2)
                       {
-                        constraint_rows[4][idx[i]] += X[0] * N; // int X1 u3 = 0
-                        constraint_rows[5][idx[i]] += X[1] * N; // int X2 u3 = 0
+                        rows[4][idx[i]] += X[0] * N; // int X1 u3 = 0
+                        rows[5][idx[i]] += X[1] * N; // int X2 u3 = 0
                       }
                   }
               }
           }
       }
 
-      DynamicSparsityPattern dsp(n_u() + n_gauge);
+      DynamicSparsityPattern dsp(n_u());
       {
         std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
         for (const auto &cell : dof_handler.active_cell_iterators())
@@ -256,17 +239,9 @@ namespace cosmo
             for (const auto i : idx)
               dsp.add_entries(i, idx.begin(), idx.end());
           }
-        for (unsigned int k = 0; k < n_gauge; ++k)
-          for (unsigned int i = 0; i < n_u(); ++i)
-            if (constraint_rows[k][i] != 0)
-              {
-                dsp.add(n_u() + k, i);
-                dsp.add(i, n_u() + k);
-              }
       }
-      system = std::make_unique<assembly::BorderedSystem>(
-        solvers::SparseDirectSolver::kind_from_string(linear_solver_name));
-      system->reinit(dsp, n_strains);
+      setup_bordered_system(dsp, rows, linear_solver_name);
+      report = [this](const std::string &line) { say(line); };
 
       // Growth is ramped as 1 + t (g - 1), a convex combination: det Fg > 0
       // along the whole path iff it holds at t = 1. Check it now, as bad
@@ -283,31 +258,6 @@ namespace cosmo
       for (unsigned int k = 0; k < n_strains; ++k)
         solution[n_u() + n_gauge + k] = ref[k];
       growth_cached_for = -1;
-    }
-
-    std::array<double, 6>
-    CrossSectionProblem::strains_of(const Vector<double> &U) const
-    {
-      std::array<double, 6> e;
-      for (unsigned int k = 0; k < n_strains; ++k)
-        e[k] = U[n_u() + n_gauge + k];
-      return e;
-    }
-
-    std::array<double, 6>
-    CrossSectionProblem::prescribed_strains_at(const double t) const
-    {
-      const auto            ref = kinematics::RodStrains::reference().as_array();
-      std::array<double, 6> e;
-      for (unsigned int k = 0; k < n_strains; ++k)
-        e[k] = ref[k] + t * (target_strains[k] - ref[k]);
-      return e;
-    }
-
-    void
-    CrossSectionProblem::set_load_parameter(const double t)
-    {
-      load_parameter = t;
     }
 
     void
@@ -473,13 +423,14 @@ namespace cosmo
     } // namespace
 
     int
-    CrossSectionProblem::assemble(const Vector<double> &U,
-                                  Vector<double> *      R,
-                                  const bool            jacobian,
-                                  AssemblyResults *     results)
+    CrossSectionProblem::assemble_field(const Vector<double> &       U,
+                                        const std::array<double, 6> &e,
+                                        Vector<double> *             R,
+                                        const bool                   jacobian,
+                                        FullMatrix<double> &         E,
+                                        FieldIntegrals &             results)
     {
       update_growth_cache();
-      const auto         e = strains_of(U);
       const Tensor<1, 3> nu({e[0], e[1], e[2]});
       const Tensor<1, 3> kappa({e[3], e[4], e[5]});
       const Tensor<2, 3> Kx = kinematics::skew(kappa);
@@ -620,11 +571,6 @@ namespace cosmo
       std::array<double, 6> resultants{};
       double                energy = 0, minJ = std::numeric_limits<double>::max();
       bool                  admissible = true;
-      FullMatrix<double>    E(n_strains, n_strains);
-      if (R)
-        R->reinit(n_unknowns());
-      if (jacobian)
-        system->clear();
       auto copier = [&](const CellContribution &c) {
         if (!c.admissible)
           admissible = false;
@@ -782,130 +728,23 @@ namespace cosmo
             }
         }
 
-      // Gauge constraints with their multipliers, and the strain rows.
-      const unsigned int nu_ = n_u();
-      if (R)
-        {
-          for (unsigned int k = 0; k < n_gauge; ++k)
-            {
-              const double lambda_k = U[nu_ + k];
-              double       cu       = 0;
-              for (unsigned int i = 0; i < nu_; ++i)
-                {
-                  const double cki = constraint_rows[k][i];
-                  if (cki != 0)
-                    {
-                      (*R)[i] += lambda_k * cki;
-                      cu += cki * U[i];
-                    }
-                }
-              (*R)[nu_ + k] = cu;
-            }
-          const auto eP = prescribed_strains_at(load_parameter);
-          for (unsigned int k = 0; k < n_strains; ++k)
-            (*R)[nu_ + n_gauge + k] = strain_is_free[k] ? resultants[k] : e[k] - eP[k];
-        }
-      if (jacobian)
-        {
-          for (unsigned int k = 0; k < n_gauge; ++k)
-            for (unsigned int i = 0; i < nu_; ++i)
-              if (constraint_rows[k][i] != 0)
-                {
-                  system->matrix.set(nu_ + k, i, constraint_rows[k][i]);
-                  system->matrix.set(i, nu_ + k, constraint_rows[k][i]);
-                }
-          system->border_block = E;
-        }
-      if (results)
-        {
-          results->energy        = energy;
-          results->min_elastic_J = minJ;
-          results->resultants    = resultants;
-        }
-      return 0;
-    }
-
-    int
-    CrossSectionProblem::residual(const Vector<double> &U, Vector<double> &R)
-    {
-      io::PhaseTimer::Scope scope(timer, "assembly (residual)");
-      return assemble(U, &R, false);
-    }
-
-    int
-    CrossSectionProblem::setup_jacobian(const Vector<double> &U)
-    {
-      {
-        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
-        if (assemble(U, nullptr, true) != 0)
-          return 1;
-      }
-      io::PhaseTimer::Scope scope(timer, "factorization");
-      try
-        {
-          system->factorize();
-        }
-      catch (std::exception &e)
-        {
-          say(std::string("  factorization failed: ") + e.what());
-          return 1;
-        }
-      ++total_newton_iterations;
-      return 0;
-    }
-
-    int
-    CrossSectionProblem::solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst)
-    {
-      io::PhaseTimer::Scope scope(timer, "solve");
-      std::vector<bool>     free(strain_is_free.begin(), strain_is_free.end());
-      system->solve(rhs, dst, free);
+      results.energy        = energy;
+      results.min_elastic_J = minJ;
+      results.resultants    = resultants;
       return 0;
     }
 
     void
-    CrossSectionProblem::residual_weights(Vector<double> &w) const
+    CrossSectionProblem::residual_scales(double &force, double &length) const
     {
-      // Make every row dimensionless (see NewtonSettings): nodal forces ~ E D,
-      // constraints ~ D^3 (D^4 with a lever arm), resultants ~ E D^2, E D^3.
-      const double E = materials.max_young();
-      const double D = section_properties.diameter;
-      w.reinit(n_unknowns());
-      for (unsigned int i = 0; i < n_u(); ++i)
-        w[i] = 1. / (E * D);
-      for (unsigned int k = 0; k < n_gauge; ++k)
-        w[n_u() + k] = k < 3 ? 1. / std::pow(D, 3) : 1. / std::pow(D, 4);
-      for (unsigned int k = 0; k < n_strains; ++k)
-        w[n_u() + n_gauge + k] =
-          strain_is_free[k] ? (k < 3 ? 1. / (E * D * D) : 1. / (E * D * D * D)) :
-                              (k < 3 ? 1. : D);
+      length = section_properties.diameter;
+      force  = materials.max_young() * length * length;
     }
 
     CrossSectionState
     CrossSectionProblem::current_state()
     {
-      CrossSectionState s;
-      AssemblyResults   a;
-      {
-        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
-        AssertThrow(assemble(solution, nullptr, true, &a) == 0,
-                    ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
-      }
-      {
-        io::PhaseTimer::Scope scope(timer, "factorization");
-        system->factorize();
-      }
-      s.t             = load_parameter;
-      s.energy        = a.energy;
-      s.min_elastic_J = a.min_elastic_J;
-      s.strains       = strains_of(solution);
-      s.resultants    = a.resultants;
-      for (unsigned int k = 0; k < n_gauge; ++k)
-        s.multipliers[k] = solution[n_u() + k];
-      s.stiffness = system->schur_complement();
-      std::vector<bool> free(strain_is_free.begin(), strain_is_free.end());
-      s.n_negative = system->n_negative_eigenvalues(free, n_gauge);
-      return s;
+      return condensed_state(solution);
     }
 
     CrossSectionState
@@ -945,7 +784,7 @@ namespace cosmo
         last_state = current_state();
       else
         {
-          AssemblyResults a;
+          FieldIntegrals a;
           assemble(solution, nullptr, false, &a);
           last_state.t             = load_parameter;
           last_state.energy        = a.energy;

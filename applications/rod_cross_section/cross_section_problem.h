@@ -9,7 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <cosmo/assembly/bordered_system.h>
+#include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/geometry/cross_section.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
@@ -38,20 +38,9 @@ namespace cosmo
   {
     using namespace dealii;
 
-    /// The rod-level quantities of a converged state.
-    struct CrossSectionState
-    {
-      double                t      = 0;
-      double                energy = 0;         ///< Psi, energy per unit reference length
-      std::array<double, 6> strains{};          ///< nu1..3, kappa1..3
-      std::array<double, 6> resultants{};       ///< n1..3, m1..3 = dPsi/d(strains)
-      std::array<double, 6> multipliers{};      ///< of the six gauge constraints
-      FullMatrix<double>    stiffness;          ///< 6x6 d(n,m)/d(nu,kappa)
-      int                   n_negative = -1;    ///< negative Hessian eigenvalues (constrained space)
-      double                min_elastic_J = 0;  ///< smallest det Fe at quadrature points
-    };
+    using CrossSectionState = assembly::ReducedRodState;
 
-    class CrossSectionProblem : public solvers::ContinuationProblem
+    class CrossSectionProblem : public assembly::ReducedRodProblem
     {
     public:
       CrossSectionProblem();
@@ -87,44 +76,16 @@ namespace cosmo
         return last_state;
       }
 
-      /// The last assembled and factorized bordered Jacobian (tests).
-      const assembly::BorderedSystem &
-      bordered_system() const
-      {
-        return *system;
-      }
       const Vector<double> &
       current_solution() const
       {
         return solution;
       }
-      /// Which strains are free (their rows are resultants) or prescribed.
-      const std::array<bool, 6> &
-      free_strains() const
-      {
-        return strain_is_free;
-      }
-
-      /// Override the target strains of the .prm (prescribed ones reach them at t = 1).
-      void
-      set_target_strains(const std::array<double, 6> &strains);
-      void
-      set_free_strains(const std::array<bool, 6> &free);
 
       const geometry::SectionProperties &
       section() const
       {
         return section_properties;
-      }
-      unsigned int
-      n_field_dofs() const
-      {
-        return dof_handler.n_dofs();
-      }
-      const io::PhaseTimer &
-      timings() const
-      {
-        return timer;
       }
       unsigned int
       newton_iterations() const
@@ -133,18 +94,6 @@ namespace cosmo
       }
 
       // ContinuationProblem
-      unsigned int
-      n_unknowns() const override;
-      int
-      residual(const Vector<double> &U, Vector<double> &R) override;
-      int
-      setup_jacobian(const Vector<double> &U) override;
-      int
-      solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
-      void
-      residual_weights(Vector<double> &w) const override;
-      void
-      set_load_parameter(double t) override;
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
 
@@ -155,8 +104,6 @@ namespace cosmo
       materials::SurfaceLayerLibrary surface_layers;
       unsigned int                   degree = 2;
       std::string                    mode;
-      std::array<double, 6>          target_strains{};
-      std::array<bool, 6>            strain_is_free{};
       solvers::NewtonSettings        newton_settings;
       solvers::ContinuationSettings  continuation_settings;
       std::string                    linear_solver_name;
@@ -174,10 +121,7 @@ namespace cosmo
       std::unique_ptr<MappingQ<2>>            mapping;
       DoFHandler<2>                           dof_handler;
       geometry::SectionProperties             section_properties;
-      std::array<Vector<double>, 6>           constraint_rows; // C, integrals of shape functions
-      std::unique_ptr<assembly::BorderedSystem> system;
       Vector<double>                          solution;
-      double                                  load_parameter = 0;
       std::vector<Tensor<2, 3>>               growth_at_qp; // per cell and quadrature point
       double                                  growth_cached_for = -1;
 
@@ -193,13 +137,11 @@ namespace cosmo
       std::vector<double>                surface_length;       // per layer, reference arc length
 
       // Output and bookkeeping
-      io::PhaseTimer                   timer;
       std::unique_ptr<io::RunLog>      log;
       std::unique_ptr<io::PVDSeries>   pvd, pvd_rod, pvd_surface;
       io::CSVTable                     steps_table;
       std::vector<io::JSON>            step_records;
       CrossSectionState                last_state;
-      unsigned int                     total_newton_iterations = 0;
       bool                             quiet                    = false;
 
       unsigned int
@@ -207,32 +149,21 @@ namespace cosmo
       {
         return dof_handler.n_dofs();
       }
-      std::array<double, 6>
-      strains_of(const Vector<double> &U) const;
-      std::array<double, 6>
-      prescribed_strains_at(double t) const;
       void
       update_growth_cache();
       /// The faces of every surface layer (after the mesh and DoFs exist).
       void
       setup_surface_faces();
 
-      /// Integrals that come with every assembly.
-      struct AssemblyResults
-      {
-        double                energy        = 0; ///< Psi
-        double                min_elastic_J = 0; ///< smallest det Fe
-        std::array<double, 6> resultants{};      ///< dPsi/de at fixed field
-      };
-
-      /**
-       * Energy assembly at U: the residual (if `residual`), the bordered
-       * Jacobian (if `jacobian`), and the integrals in `results` (if given).
-       * Returns 1 if U is inadmissible (det Fe <= 0 somewhere).
-       */
       int
-      assemble(const Vector<double> &U, Vector<double> *residual, bool jacobian,
-               AssemblyResults *results = nullptr);
+      assemble_field(const Vector<double> &       U,
+                     const std::array<double, 6> &e,
+                     Vector<double> *             R,
+                     bool                         jacobian,
+                     FullMatrix<double> &         border_block,
+                     FieldIntegrals &             out) override;
+      void
+      residual_scales(double &force, double &length) const override;
 
       void
       write_vtu(unsigned int step, double t);

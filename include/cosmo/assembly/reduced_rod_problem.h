@@ -1,0 +1,184 @@
+#ifndef cosmo_assembly_reduced_rod_problem_h
+#define cosmo_assembly_reduced_rod_problem_h
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/assembly/bordered_system.h>
+#include <cosmo/io/output.h>
+#include <cosmo/solvers/arclength.h>
+
+#include <array>
+#include <memory>
+
+/**
+ * The common structure of parts 1 and 2: a field on a cross-section (a 2D
+ * section, or the width line of a strip) reduced to a rod by the helical
+ * Cauchy-Born rule. Unknowns, in this order: the field DoFs, the six
+ * multipliers of the linear gauge constraints C U = 0, and the six rod
+ * strains e = (nu, kappa). Each strain is prescribed (ramped by the load
+ * parameter t from the reference (0,0,1,0,0,0)) or free (its resultant
+ * dPsi/de vanishes). The Jacobian is a BorderedSystem: the sparse block
+ * [[E_UU, C^T],[C, 0]] is factorized, the strains are eliminated through its
+ * Schur complement, which is the 6x6 stiffness.
+ *
+ * A derived class builds the field (mesh, DoFs, constraint rows, sparsity)
+ * and implements assemble_field(); this class does the gauge and strain rows,
+ * the Newton interface, the condensed state and the stability count.
+ */
+namespace cosmo
+{
+  namespace assembly
+  {
+    using namespace dealii;
+
+    /// The rod-level quantities of a converged state.
+    struct ReducedRodState
+    {
+      double                t      = 0;
+      double                energy = 0;        ///< Psi, energy per unit reference length
+      std::array<double, 6> strains{};         ///< nu1..3, kappa1..3
+      std::array<double, 6> resultants{};      ///< n1..3, m1..3 = dPsi/d(strains)
+      std::array<double, 6> multipliers{};     ///< of the six gauge constraints
+      FullMatrix<double>    stiffness;         ///< 6x6 d(n,m)/d(nu,kappa)
+      int                   n_negative = -1;   ///< negative Hessian eigenvalues (constrained space)
+      double                min_elastic_J = 0; ///< smallest det Fe (bulk problems)
+    };
+
+    class ReducedRodProblem : public solvers::BifurcationProblem
+    {
+    public:
+      static constexpr unsigned int n_gauge   = 6;
+      static constexpr unsigned int n_strains = 6;
+
+      /// Override the target strains (prescribed ones reach them at t = 1).
+      void
+      set_target_strains(const std::array<double, 6> &strains)
+      {
+        target_strains = strains;
+      }
+      void
+      set_free_strains(const std::array<bool, 6> &free)
+      {
+        strain_is_free = free;
+      }
+      const std::array<bool, 6> &
+      free_strains() const
+      {
+        return strain_is_free;
+      }
+      /// The last assembled and factorized bordered Jacobian (tests).
+      const BorderedSystem &
+      bordered_system() const
+      {
+        return *system;
+      }
+      const io::PhaseTimer &
+      timings() const
+      {
+        return timer;
+      }
+      unsigned int
+      n_field_dofs() const
+      {
+        return n_field;
+      }
+
+      std::array<double, 6>
+      strains_of(const Vector<double> &U) const;
+      std::array<double, 6>
+      prescribed_strains_at(double t) const;
+
+      /// Energy, resultants, multipliers, (fresh) stiffness and stability at U.
+      ReducedRodState
+      condensed_state(const Vector<double> &U);
+
+      // ContinuationProblem / BifurcationProblem
+      unsigned int
+      n_unknowns() const override
+      {
+        return n_field + n_gauge + n_strains;
+      }
+      int
+      residual(const Vector<double> &U, Vector<double> &R) override;
+      int
+      setup_jacobian(const Vector<double> &U) override;
+      int
+      solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
+      void
+      residual_weights(Vector<double> &w) const override;
+      void
+      set_load_parameter(double t) override
+      {
+        load_parameter = t;
+      }
+      int
+      n_negative_eigenvalues() override;
+      void
+      mode_mask(Vector<double> &mask) const override;
+
+    protected:
+      /// Integrals that come with every assembly.
+      struct FieldIntegrals
+      {
+        double                energy        = 0; ///< Psi
+        double                min_elastic_J = 0; ///< smallest det Fe (0 if not applicable)
+        std::array<double, 6> resultants{};      ///< dPsi/de at fixed field
+      };
+
+      /**
+       * Add the field's energy derivatives at U with strains e: the field
+       * residual into R[0..n_field) (R is zeroed, may be null), and with
+       * `jacobian` E_UU into system->matrix, E_Ue into
+       * system->border_columns and E_ee into `border_block` (all zeroed).
+       * Returns > 0 if U is inadmissible.
+       */
+      virtual int
+      assemble_field(const Vector<double> &       U,
+                     const std::array<double, 6> &e,
+                     Vector<double> *             R,
+                     bool                         jacobian,
+                     FullMatrix<double> &         border_block,
+                     FieldIntegrals &             out) = 0;
+
+      /**
+       * Scales that make the residual rows dimensionless: a modulus times
+       * area (force per unit length of rod, e.g. E D^2 or E w h) and a
+       * length (the section size D or the strip width w).
+       */
+      virtual void
+      residual_scales(double &force, double &length) const = 0;
+
+      /**
+       * Set up the bordered system once the field exists: the sparsity of
+       * E_UU (n_field x n_field entries; the gauge rows are added here) and
+       * the six constraint rows C (integrals of the shape functions).
+       */
+      void
+      setup_bordered_system(DynamicSparsityPattern &            field_pattern,
+                            const std::array<Vector<double>, 6> &rows,
+                            const std::string &                  linear_solver);
+
+      /// Full assembly: field, gauge rows, strain rows. Returns > 0 if inadmissible.
+      int
+      assemble(const Vector<double> &U,
+               Vector<double> *      R,
+               bool                  jacobian,
+               FieldIntegrals *      results = nullptr);
+
+      unsigned int                    n_field = 0;
+      std::array<Vector<double>, 6>   constraint_rows;
+      std::unique_ptr<BorderedSystem> system;
+      double                          load_parameter = 0;
+      std::array<double, 6>           target_strains{{0, 0, 1, 0, 0, 0}};
+      std::array<bool, 6>             strain_is_free{};
+      io::PhaseTimer                  timer;
+      unsigned int                    total_newton_iterations = 0;
+      /// Where to report a failed factorization (may be empty).
+      std::function<void(const std::string &)> report;
+    };
+  } // namespace assembly
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,206 @@
+#include <cosmo/assembly/reduced_rod_problem.h>
+#include <cosmo/kinematics/helix.h>
+
+#include <cmath>
+
+namespace cosmo
+{
+  namespace assembly
+  {
+    std::array<double, 6>
+    ReducedRodProblem::strains_of(const Vector<double> &U) const
+    {
+      std::array<double, 6> e;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        e[k] = U[n_field + n_gauge + k];
+      return e;
+    }
+
+    std::array<double, 6>
+    ReducedRodProblem::prescribed_strains_at(const double t) const
+    {
+      const auto            ref = kinematics::RodStrains::reference().as_array();
+      std::array<double, 6> e;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        e[k] = ref[k] + t * (target_strains[k] - ref[k]);
+      return e;
+    }
+
+    void
+    ReducedRodProblem::setup_bordered_system(DynamicSparsityPattern &            field_pattern,
+                                             const std::array<Vector<double>, 6> &rows,
+                                             const std::string &                  linear_solver)
+    {
+      constraint_rows = rows;
+      n_field         = rows[0].size();
+      DynamicSparsityPattern dsp(n_field + n_gauge);
+      for (unsigned int i = 0; i < n_field; ++i)
+        for (auto it = field_pattern.begin(i); it != field_pattern.end(i); ++it)
+          dsp.add(i, it->column());
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        for (unsigned int i = 0; i < n_field; ++i)
+          if (constraint_rows[k][i] != 0)
+            {
+              dsp.add(n_field + k, i);
+              dsp.add(i, n_field + k);
+            }
+      system = std::make_unique<BorderedSystem>(
+        solvers::SparseDirectSolver::kind_from_string(linear_solver));
+      system->reinit(dsp, n_strains);
+    }
+
+    int
+    ReducedRodProblem::assemble(const Vector<double> &U,
+                                Vector<double> *      R,
+                                const bool            jacobian,
+                                FieldIntegrals *      results)
+    {
+      const auto         e = strains_of(U);
+      FieldIntegrals     integrals;
+      FullMatrix<double> E(n_strains, n_strains);
+      if (R)
+        R->reinit(n_unknowns());
+      if (jacobian)
+        system->clear();
+      if (assemble_field(U, e, R, jacobian, E, integrals) != 0)
+        return 1; // recoverable: Newton's line search or the driver cuts back
+
+      // Gauge constraints with their multipliers, and the strain rows.
+      const unsigned int nf = n_field;
+      if (R)
+        {
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            {
+              const double lambda_k = U[nf + k];
+              double       cu       = 0;
+              for (unsigned int i = 0; i < nf; ++i)
+                {
+                  const double cki = constraint_rows[k][i];
+                  if (cki != 0)
+                    {
+                      (*R)[i] += lambda_k * cki;
+                      cu += cki * U[i];
+                    }
+                }
+              (*R)[nf + k] = cu;
+            }
+          const auto eP = prescribed_strains_at(load_parameter);
+          for (unsigned int k = 0; k < n_strains; ++k)
+            (*R)[nf + n_gauge + k] = strain_is_free[k] ? integrals.resultants[k] : e[k] - eP[k];
+        }
+      if (jacobian)
+        {
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            for (unsigned int i = 0; i < nf; ++i)
+              if (constraint_rows[k][i] != 0)
+                {
+                  system->matrix.set(nf + k, i, constraint_rows[k][i]);
+                  system->matrix.set(i, nf + k, constraint_rows[k][i]);
+                }
+          system->border_block = E;
+        }
+      if (results)
+        *results = integrals;
+      return 0;
+    }
+
+    int
+    ReducedRodProblem::residual(const Vector<double> &U, Vector<double> &R)
+    {
+      io::PhaseTimer::Scope scope(timer, "assembly (residual)");
+      return assemble(U, &R, false);
+    }
+
+    int
+    ReducedRodProblem::setup_jacobian(const Vector<double> &U)
+    {
+      {
+        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+        if (assemble(U, nullptr, true) != 0)
+          return 1;
+      }
+      io::PhaseTimer::Scope scope(timer, "factorization");
+      try
+        {
+          system->factorize();
+        }
+      catch (std::exception &e)
+        {
+          if (report)
+            report(std::string("  factorization failed: ") + e.what());
+          return 1;
+        }
+      ++total_newton_iterations;
+      return 0;
+    }
+
+    int
+    ReducedRodProblem::solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst)
+    {
+      io::PhaseTimer::Scope scope(timer, "solve");
+      std::vector<bool>     free(strain_is_free.begin(), strain_is_free.end());
+      system->solve(rhs, dst, free);
+      return 0;
+    }
+
+    int
+    ReducedRodProblem::n_negative_eigenvalues()
+    {
+      std::vector<bool> free(strain_is_free.begin(), strain_is_free.end());
+      return system->n_negative_eigenvalues(free, n_gauge);
+    }
+
+    void
+    ReducedRodProblem::mode_mask(Vector<double> &mask) const
+    {
+      // Mode shapes live in the field; multipliers and strains are not part of them.
+      mask.reinit(n_unknowns());
+      for (unsigned int i = 0; i < n_field; ++i)
+        mask[i] = 1;
+    }
+
+    void
+    ReducedRodProblem::residual_weights(Vector<double> &w) const
+    {
+      // Every row dimensionless (see NewtonSettings): nodal forces ~ F/D
+      // (F a force per rod length, e.g. E D^2), constraints ~ D^3 (D^4 with
+      // a lever arm), resultants ~ F and F D.
+      double F = 1, D = 1;
+      residual_scales(F, D);
+      w.reinit(n_unknowns());
+      for (unsigned int i = 0; i < n_field; ++i)
+        w[i] = D / F;
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        w[n_field + k] = k < 3 ? 1. / std::pow(D, 3) : 1. / std::pow(D, 4);
+      for (unsigned int k = 0; k < n_strains; ++k)
+        w[n_field + n_gauge + k] =
+          strain_is_free[k] ? (k < 3 ? 1. / F : 1. / (F * D)) : (k < 3 ? 1. : D);
+    }
+
+    ReducedRodState
+    ReducedRodProblem::condensed_state(const Vector<double> &U)
+    {
+      ReducedRodState s;
+      FieldIntegrals  a;
+      {
+        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+        AssertThrow(assemble(U, nullptr, true, &a) == 0,
+                    ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
+      }
+      {
+        io::PhaseTimer::Scope scope(timer, "factorization");
+        system->factorize();
+      }
+      s.t             = load_parameter;
+      s.energy        = a.energy;
+      s.min_elastic_J = a.min_elastic_J;
+      s.strains       = strains_of(U);
+      s.resultants    = a.resultants;
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        s.multipliers[k] = U[n_field + k];
+      s.stiffness  = system->schur_complement();
+      s.n_negative = n_negative_eigenvalues();
+      return s;
+    }
+  } // namespace assembly
+} // namespace cosmo
