@@ -25,11 +25,14 @@ studies=(parameter_files/rod_cross_section/studies/*.prm)
 
 mkdir -p output/logs
 failed=0
-for prm in "${prms[@]}" "${studies[@]}"; do
+strips=(parameter_files/strip/*.prm)
+for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}"; do
   name="$(basename "$prm" .prm)"
+  exe="$EXE"
+  case "$prm" in parameter_files/strip/*) name="strip_$name"; exe="$BUILD/strip" ;; esac
   logfile="output/logs/$name.log"
   start=$EPOCHREALTIME
-  if "$EXE" "$prm" >"$logfile" 2>&1; then result=OK; else result=FAILED; failed=1; fi
+  if "$exe" "$prm" >"$logfile" 2>&1; then result=OK; else result=FAILED; failed=1; fi
   secs=$(awk -v a="$start" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }')
   printf '[cosmo] %-40s %-6s %8ss\n' "$name" "$result" "$secs"
   # Show the end of the log right away so failures are diagnosable in CI.

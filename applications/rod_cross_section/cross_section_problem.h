@@ -103,7 +103,6 @@ namespace cosmo
       materials::MaterialLibrary     materials;
       materials::SurfaceLayerLibrary surface_layers;
       unsigned int                   degree = 2;
-      std::string                    mode;
       solvers::NewtonSettings        newton_settings;
       solvers::ContinuationSettings  continuation_settings;
       std::string                    linear_solver_name;

@@ -1,5 +1,8 @@
 #include <cosmo/assembly/reduced_rod_problem.h>
+#include <cosmo/io/parameters.h>
 #include <cosmo/kinematics/helix.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <cmath>
 
@@ -7,6 +10,43 @@ namespace cosmo
 {
   namespace assembly
   {
+    void
+    ReducedRodProblem::declare_strain_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Rod strains");
+      prm.declare_entry("Mode", "natural shape",
+                        Patterns::Selection("prescribed strains|natural shape"),
+                        "prescribed strains: the six strains are ramped from the "
+                        "reference (0,0,1,0,0,0) to 'Strains' (except 'Free strains'); "
+                        "natural shape: all six strains are free, their resultants vanish.");
+      prm.declare_entry("Strains", "0, 0, 1, 0, 0, 0",
+                        Patterns::List(Patterns::Double(), 6, 6),
+                        "Target strains nu1, nu2, nu3, kappa1, kappa2, kappa3 in the "
+                        "director frame (nu dimensionless, kappa per unit reference "
+                        "length); reached at load parameter t = 1.");
+      prm.declare_entry("Free strains", "",
+                        Patterns::MultipleSelection("nu1|nu2|nu3|kappa1|kappa2|kappa3"),
+                        "In 'prescribed strains' mode: strains left free (their "
+                        "resultant vanishes), e.g. 'nu3' for twisting at zero axial force.");
+      prm.leave_subsection();
+    }
+
+    void
+    ReducedRodProblem::parse_strain_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Rod strains");
+      mode         = prm.get("Mode");
+      const auto e = io::get_double_list(prm, "Strains", 6, "Rod strains");
+      std::copy(e.begin(), e.end(), target_strains.begin());
+      const auto free_names = Utilities::split_string_list(prm.get("Free strains"), ',');
+      strain_is_free.fill(mode == "natural shape");
+      for (const auto &name : free_names)
+        for (unsigned int k = 0; k < 6; ++k)
+          if (kinematics::strain_names[k] == name)
+            strain_is_free[k] = true;
+      prm.leave_subsection();
+    }
+
     std::array<double, 6>
     ReducedRodProblem::strains_of(const Vector<double> &U) const
     {

@@ -153,7 +153,23 @@ namespace cosmo
           if (mumps->upper[pos])
             mumps->values[k++] = it->value();
       }
-      mumps->call(2);
+      // Delayed pivots of indefinite (saddle-point, nearly singular)
+      // matrices can exceed the workspace estimated in the analysis
+      // (INFOG(1) = -8, -9: too small a work array): enlarge it and refactorize.
+      for (unsigned int attempt = 0;; ++attempt)
+        {
+          mumps->id.job = 2;
+          dmumps_c(&mumps->id);
+          const int info = mumps->id.infog[0];
+          if ((info == -8 || info == -9) && attempt < 6)
+            {
+              mumps->id.icntl[13] = 2 * mumps->id.icntl[13] + 100;
+              continue;
+            }
+          if (info < 0)
+            mumps->call(2); // reports the error with its code
+          break;
+        }
       n_negative = mumps->id.infog[11];
 #endif
     }

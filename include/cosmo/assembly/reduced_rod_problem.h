@@ -1,6 +1,7 @@
 #ifndef cosmo_assembly_reduced_rod_problem_h
 #define cosmo_assembly_reduced_rod_problem_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -51,6 +52,12 @@ namespace cosmo
     public:
       static constexpr unsigned int n_gauge   = 6;
       static constexpr unsigned int n_strains = 6;
+
+      /// Section "Rod strains": Mode, Strains, Free strains.
+      static void
+      declare_strain_parameters(ParameterHandler &prm);
+      void
+      parse_strain_parameters(ParameterHandler &prm);
 
       /// Override the target strains (prescribed ones reach them at t = 1).
       void
@@ -173,6 +180,7 @@ namespace cosmo
       double                          load_parameter = 0;
       std::array<double, 6>           target_strains{{0, 0, 1, 0, 0, 0}};
       std::array<bool, 6>             strain_is_free{};
+      std::string                     mode = "natural shape";
       io::PhaseTimer                  timer;
       unsigned int                    total_newton_iterations = 0;
       /// Where to report a failed factorization (may be empty).

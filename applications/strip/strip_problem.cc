@@ -1,0 +1,528 @@
+// The strip's energy is differentiated here (Sacado, 16 local variables):
+// the heavy translation unit of part 2.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <cosmo/config.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/kinematics/rotation.h>
+#include <cosmo/materials/energy_derivatives.h>
+
+#include "strip_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace strip
+  {
+    namespace
+    {
+      /// Local variables at a quadrature point: u (0-2), u' (3-5), theta1,
+      /// theta3 (6, 7), their derivatives (8, 9), the strains (10-15).
+      constexpr int n_local = 16;
+
+      /**
+       * The plate energy density at one point of the width line, as a
+       * function of the local variables z (strip.md, helical Cauchy-Born
+       * kinematics): y = eta E1 + u, Fp = [y' | nu + kappa x y],
+       * q = exp([theta]x) E2, grad d = [q' | kappa x q].
+       */
+      template <typename Number>
+      Number
+      strip_energy(const std::array<Number, n_local> &z,
+                   const double                       eta,
+                   const materials::NaghdiPlateLaw &  law,
+                   const bool                         membrane_bending)
+      {
+        using V = std::array<Number, 3>;
+        auto cross = [](const V &a, const V &b) {
+          V c;
+          c[0] = a[1] * b[2] - a[2] * b[1];
+          c[1] = a[2] * b[0] - a[0] * b[2];
+          c[2] = a[0] * b[1] - a[1] * b[0];
+          return c;
+        };
+        const V y  = {{eta + z[0], z[1], z[2]}};
+        const V y1 = {{1. + z[3], z[4], z[5]}};
+        const V nu = {{z[10], z[11], z[12]}}, kappa = {{z[13], z[14], z[15]}};
+        Tensor<1, 3, Number> theta;
+        theta[0]                     = z[6];
+        theta[2]                     = z[7];
+        const Tensor<2, 3, Number> R = kinematics::rotation_exp(theta);
+        const Tensor<2, 3, Number> T = kinematics::rotation_dexp_right(theta);
+        // q = R E2; q' = R (omega x E2), omega = T theta' (right trivialization).
+        V q, omega, q1;
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            q[i]     = R[i][1];
+            omega[i] = T[i][0] * z[8];
+            omega[i] += T[i][2] * z[9];
+          }
+        const V w = {{-omega[2], Number(0.), omega[0]}}; // omega x E2
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            q1[i] = R[i][0] * w[0];
+            q1[i] += R[i][2] * w[2];
+          }
+        V b = cross(kappa, y);
+        for (unsigned int i = 0; i < 3; ++i)
+          b[i] += nu[i];
+        const V    q2 = cross(kappa, q);
+        const auto s  = materials::plate_strains(y1, b, q, q1, q2);
+        return membrane_bending ? law.membrane_bending_energy(s) : law.shear_energy(s);
+      }
+
+      /// Which local variables a shape function of component c drives: value and derivative.
+      std::pair<unsigned int, unsigned int>
+      local_indices(const unsigned int c)
+      {
+        if (c < 3)
+          return {c, 3 + c};
+        return {c == 3 ? 6u : 7u, c == 3 ? 8u : 9u};
+      }
+    } // namespace
+
+    StripProblem::StripProblem() = default;
+    StripProblem::~StripProblem()
+    {
+      dof_handler.clear();
+    }
+
+    void
+    StripProblem::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Strip");
+      prm.declare_entry("Width", "1", Patterns::Double(0), "Width w of the strip (length unit).");
+      prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
+                        "Thickness h of the plate; h < w.");
+      prm.declare_entry("Number of cells", "40", Patterns::Integer(1, 100000),
+                        "Cells across the width.");
+      prm.declare_entry("Mesh", "graded", Patterns::Selection("graded|uniform"),
+                        "graded: vertices at eta = (w/2) sin(pi xi/2), xi uniform in "
+                        "[-1, 1], finer toward the free edges where the boundary layers "
+                        "are; uniform: equal cells.");
+      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
+                        "Degree p of FE_Q(p) for u and theta.");
+      prm.declare_entry("Shear integration", "reduced", Patterns::Selection("reduced|full"),
+                        "reduced: the transverse shear energy with p Gauss points (against "
+                        "shear locking, strip.md); full: p + 1 like the rest.");
+      prm.leave_subsection();
+      materials::NaghdiPlateLaw::declare_parameters(prm);
+      assembly::ReducedRodProblem::declare_strain_parameters(prm);
+      solvers::NewtonSettings::declare_parameters(prm);
+      solvers::ContinuationSettings::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/strip", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, "
+                        "section-NNNN.vtu and log.txt (created if needed).");
+      prm.leave_subsection();
+    }
+
+    void
+    StripProblem::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Strip");
+      strip_width   = prm.get_double("Width");
+      thickness     = prm.get_double("Thickness");
+      n_cells       = prm.get_integer("Number of cells");
+      mesh_kind     = prm.get("Mesh");
+      degree        = prm.get_integer("Polynomial degree");
+      reduced_shear = prm.get("Shear integration") == "reduced";
+      if (!(strip_width > 0))
+        throw io::InputError("Strip", "Width", prm.get("Width"), "must be positive");
+      if (!(thickness > 0))
+        throw io::InputError("Strip", "Thickness", prm.get("Thickness"), "must be positive");
+      if (!(thickness < strip_width))
+        throw io::InputError("Strip", "Thickness", prm.get("Thickness"),
+                             "must be smaller than the width " + prm.get("Width") +
+                               " (a strip is a plate: h << w)");
+      prm.leave_subsection();
+      law.parse_parameters(prm);
+      law.thickness = thickness;
+      parse_strain_parameters(prm);
+      newton_settings.parse_parameters(prm);
+      continuation_settings.parse_parameters(prm);
+      prm.enter_subsection("Output");
+      output_directory = prm.get("Output directory");
+      prm.leave_subsection();
+    }
+
+    void
+    StripProblem::setup_system()
+    {
+      triangulation.clear();
+      std::vector<std::vector<double>> steps(1);
+      for (unsigned int i = 0; i < n_cells; ++i)
+        {
+          auto vertex = [&](const double k) {
+            const double xi = -1 + 2 * k / n_cells;
+            return mesh_kind == "graded" ? 0.5 * strip_width * std::sin(0.5 * M_PI * xi) :
+                                           0.5 * strip_width * xi;
+          };
+          steps[0].push_back(vertex(i + 1) - vertex(i));
+        }
+      GridGenerator::subdivided_hyper_rectangle(triangulation, steps,
+                                                Point<1>(-0.5 * strip_width),
+                                                Point<1>(0.5 * strip_width));
+      fe = std::make_unique<FESystem<1>>(FE_Q<1>(degree), 5);
+      dof_handler.reinit(triangulation);
+      dof_handler.distribute_dofs(*fe);
+      const unsigned int n = dof_handler.n_dofs();
+
+      // Gauge rows: int u = 0 (0-2), int eta u3 = 0 (3), int eta u2 = 0 (4),
+      // int theta1 = 0 (5), as integrals of the shape functions.
+      std::array<Vector<double>, 6> rows;
+      for (auto &r : rows)
+        r.reinit(n);
+      const QGauss<1>                      quadrature(degree + 1);
+      FEValues<1>                          fev(*fe, quadrature,
+                          update_values | update_quadrature_points | update_JxW_values);
+      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+      DynamicSparsityPattern               dsp(n);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          cell->get_dof_indices(idx);
+          for (const auto i : idx)
+            dsp.add_entries(i, idx.begin(), idx.end());
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            for (unsigned int i = 0; i < idx.size(); ++i)
+              {
+                const unsigned int c   = fe->system_to_component_index(i).first;
+                const double       N   = fev.shape_value(i, q) * fev.JxW(q);
+                const double       eta = fev.quadrature_point(q)[0];
+                if (c < 3)
+                  rows[c][idx[i]] += N;
+                if (c == 2)
+                  rows[3][idx[i]] += eta * N;
+                if (c == 1)
+                  rows[4][idx[i]] += eta * N;
+                if (c == 3)
+                  rows[5][idx[i]] += N;
+              }
+        }
+      setup_bordered_system(dsp, rows, linear_solver_name);
+      report = [this](const std::string &line) { say(line); };
+
+      solution.reinit(n_unknowns());
+      const auto ref = kinematics::RodStrains::reference().as_array();
+      for (unsigned int k = 0; k < n_strains; ++k)
+        solution[n_field + n_gauge + k] = ref[k];
+    }
+
+    void
+    StripProblem::residual_scales(double &force, double &length) const
+    {
+      length = strip_width;
+      force  = law.young * strip_width * thickness;
+    }
+
+    int
+    StripProblem::assemble_field(const Vector<double> &       U,
+                                 const std::array<double, 6> &e,
+                                 Vector<double> *             R,
+                                 const bool                   jacobian,
+                                 FullMatrix<double> &         E,
+                                 FieldIntegrals &             out)
+    {
+      const unsigned int                   dpc = fe->n_dofs_per_cell();
+      std::vector<types::global_dof_index> idx(dpc);
+      std::vector<unsigned int>            comp(dpc);
+      for (unsigned int i = 0; i < dpc; ++i)
+        comp[i] = fe->system_to_component_index(i).first;
+      FullMatrix<double> K(dpc, dpc), B(dpc, n_strains);
+      Vector<double>     r(dpc);
+      std::vector<double> U_local(dpc);
+
+      const QGauss<1> full(degree + 1), reduced(reduced_shear ? degree : degree + 1);
+      FEValues<1>     fev_full(*fe, full,
+                           update_values | update_gradients | update_quadrature_points |
+                             update_JxW_values);
+      FEValues<1>     fev_reduced(*fe, reduced,
+                              update_values | update_gradients | update_quadrature_points |
+                                update_JxW_values);
+
+      std::array<double, n_local>           z, g;
+      std::array<double, n_local * n_local> H;
+      out.energy = 0;
+      out.resultants.fill(0.);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(idx);
+          for (unsigned int i = 0; i < dpc; ++i)
+            U_local[i] = U[idx[i]];
+          r = 0;
+          if (jacobian)
+            {
+              K = 0;
+              B = 0;
+            }
+          for (const bool membrane_bending : {true, false})
+            {
+              FEValues<1> &fev = membrane_bending ? fev_full : fev_reduced;
+              fev.reinit(cell);
+              for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
+                {
+                  z.fill(0.);
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    {
+                      const auto [v, d] = local_indices(comp[i]);
+                      z[v] += U_local[i] * fev.shape_value(i, q);
+                      z[d] += U_local[i] * fev.shape_grad(i, q)[0];
+                    }
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    z[10 + k] = e[k];
+                  const double eta = fev.quadrature_point(q)[0];
+                  const double dA  = fev.JxW(q);
+                  double       W   = 0;
+                  materials::internal::differentiate<n_local>(
+                    z,
+                    [&](const auto &x) { return strip_energy(x, eta, law, membrane_bending); },
+                    jacobian,
+                    W,
+                    g,
+                    H);
+                  out.energy += W * dA;
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    out.resultants[k] += g[10 + k] * dA;
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    {
+                      const auto [vi, di] = local_indices(comp[i]);
+                      const double Ni = fev.shape_value(i, q), Di = fev.shape_grad(i, q)[0];
+                      r[i] += (g[vi] * Ni + g[di] * Di) * dA;
+                      if (!jacobian)
+                        continue;
+                      for (unsigned int j = 0; j < dpc; ++j)
+                        {
+                          const auto [vj, dj] = local_indices(comp[j]);
+                          const double Nj = fev.shape_value(j, q), Dj = fev.shape_grad(j, q)[0];
+                          K(i, j) += (H[n_local * vi + vj] * Ni * Nj + H[n_local * vi + dj] * Ni * Dj +
+                                      H[n_local * di + vj] * Di * Nj + H[n_local * di + dj] * Di * Dj) *
+                                     dA;
+                        }
+                      for (unsigned int k = 0; k < n_strains; ++k)
+                        B(i, k) += (H[n_local * vi + 10 + k] * Ni + H[n_local * di + 10 + k] * Di) * dA;
+                    }
+                  if (jacobian)
+                    for (unsigned int k = 0; k < n_strains; ++k)
+                      for (unsigned int l = 0; l < n_strains; ++l)
+                        E(k, l) += H[n_local * (10 + k) + 10 + l] * dA;
+                }
+            }
+          if (R)
+            for (unsigned int i = 0; i < dpc; ++i)
+              (*R)[idx[i]] += r[i];
+          if (jacobian)
+            {
+              system->matrix.add(idx, K);
+              for (unsigned int i = 0; i < dpc; ++i)
+                for (unsigned int k = 0; k < n_strains; ++k)
+                  system->border_columns[k][idx[i]] += B(i, k);
+            }
+        }
+      out.min_elastic_J = 0;
+      return 0;
+    }
+
+    assembly::ReducedRodState
+    StripProblem::solve()
+    {
+      solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
+      driver.progress = [this](const std::string &s) { say(s); };
+      driver.run(*this, solution);
+      return last_state;
+    }
+
+    assembly::ReducedRodState
+    StripProblem::resolve(const std::array<double, 6> &strains)
+    {
+      set_target_strains(strains);
+      set_load_parameter(1.);
+      solvers::newton_solve(*this, solution, newton_settings);
+      last_state = condensed_state(solution);
+      return last_state;
+    }
+
+    void
+    StripProblem::say(const std::string &line)
+    {
+      if (log)
+        (*log)(line);
+      else if (!quiet)
+        std::cout << line << std::endl;
+    }
+
+    void
+    StripProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution   = U;
+      last_state = condensed_state(solution);
+      const auto &s = last_state;
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t
+           << "  Newton " << std::setw(2) << report.newton_iterations << "  Psi = "
+           << std::setprecision(8) << s.energy << "  neg.eig. " << s.n_negative << "  strains (";
+      for (unsigned int k = 0; k < 6; ++k)
+        line << (k ? ", " : "") << std::setprecision(6) << s.strains[k];
+      line << ")";
+      say(line.str());
+      if (!write_output)
+        return;
+      std::vector<double> row = {double(report.step), report.t, double(report.newton_iterations),
+                                 report.residual_norm, s.energy};
+      row.insert(row.end(), s.strains.begin(), s.strains.end());
+      row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+      for (unsigned int k = 0; k < 6; ++k)
+        row.push_back(s.stiffness(k, k));
+      row.push_back(s.n_negative);
+      steps_table.add_row(row);
+      steps_table.write(output_directory + "/steps.csv");
+      write_section(output_directory + "/section-" + Utilities::int_to_string(report.step, 4) +
+                    ".vtu");
+    }
+
+    void
+    StripProblem::write_section(const std::string &file) const
+    {
+      // The deformed cross-section curve y(eta) in the director frame, with
+      // the thickness-line director q as a vector field: line cells.
+      const QGauss<1> points(degree + 1); // any points along each cell
+      std::vector<Point<1>> unit;
+      for (unsigned int i = 0; i <= degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      const Quadrature<1>         nodes(unit);
+      FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
+      Vector<double>              field(solution.begin(), solution.begin() + n_field);
+      std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
+      std::vector<DataOutBase::Patch<1, 3>> patches;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(field, values);
+          DataOutBase::Patch<1, 3> patch;
+          patch.n_subdivisions       = degree;
+          patch.reference_cell       = ReferenceCells::Line;
+          patch.points_are_available = true;
+          patch.data.reinit(4 + 3, nodes.size());
+          for (unsigned int k = 0; k < nodes.size(); ++k)
+            {
+              const double         eta = fev.quadrature_point(k)[0];
+              Tensor<1, 3, double> theta;
+              theta[0]             = values[k][3];
+              theta[2]             = values[k][4];
+              const auto R         = kinematics::rotation_exp(theta);
+              patch.data(0, k)     = eta;
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(1 + c, k) = R[c][1];
+              patch.data(4, k) = eta + values[k][0];
+              patch.data(5, k) = values[k][1];
+              patch.data(6, k) = values[k][2];
+            }
+          for (unsigned int v = 0; v < 2; ++v)
+            {
+              const unsigned int k = v == 0 ? 0 : degree;
+              patch.vertices[v] = Point<3>(patch.data(4, k), patch.data(5, k), patch.data(6, k));
+            }
+          patch.patch_index = patches.size();
+          patches.push_back(std::move(patch));
+        }
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{1, 3, "director", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, {"eta", "director", "director", "director"}, vectors,
+                               flags, o);
+      });
+    }
+
+    void
+    StripProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
+    {
+      quiet        = options.quiet;
+      write_output = true;
+      io::create_directory(output_directory);
+      log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
+      io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &o) {
+        prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
+      });
+      say("strip " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
+      setup_system();
+      std::ostringstream info;
+      info << "  strip w = " << strip_width << ", h = " << thickness << " (w/h = "
+           << strip_width / thickness << "), " << n_cells << " " << mesh_kind << " cells, Q"
+           << degree << ", " << n_field << " field DoFs; E = " << law.young
+           << ", Poisson " << law.poisson << ", shear " << (reduced_shear ? "reduced" : "full");
+      say(info.str());
+      for (const auto &c : {"step", "t", "newton_iterations", "residual"})
+        steps_table.add_column(c);
+      steps_table.add_column("energy", "E w h");
+      for (const auto &s : kinematics::strain_names)
+        steps_table.add_column(s, s[0] == 'n' ? "1" : "1/L");
+      for (unsigned int k = 0; k < 6; ++k)
+        steps_table.add_column(kinematics::resultant_names[k], k < 3 ? "E w h" : "E w h L");
+      for (const auto &s : kinematics::strain_names)
+        steps_table.add_column("K_" + s + "_" + s);
+      steps_table.add_column("n_negative_eigenvalues");
+
+      std::string status = "converged", message;
+      try
+        {
+          solve();
+        }
+      catch (io::RunFailure &e)
+        {
+          status  = "failed";
+          message = e.what();
+        }
+      io::JSON j       = io::JSON::object();
+      j["application"] = "strip";
+      j["version"]     = COSMO_VERSION;
+      j["status"]      = status;
+      j["message"]     = message;
+      j["width"]       = strip_width;
+      j["thickness"]   = thickness;
+      j["field_dofs"]  = n_field;
+      j["energy"]      = last_state.energy;
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          j["strains"][kinematics::strain_names[k]]       = last_state.strains[k];
+          j["resultants"][kinematics::resultant_names[k]] = last_state.resultants[k];
+        }
+      io::JSON K = io::JSON::array();
+      for (unsigned int a = 0; a < last_state.stiffness.m(); ++a)
+        {
+          std::vector<double> row(6);
+          for (unsigned int b = 0; b < 6; ++b)
+            row[b] = last_state.stiffness(a, b);
+          K.push_back(io::JSON::array(row));
+        }
+      j["stiffness"]                           = K;
+      j["stability"]["n_negative_eigenvalues"] = last_state.n_negative;
+      j["multipliers"] = io::JSON::array(
+        std::vector<double>(last_state.multipliers.begin(), last_state.multipliers.end()));
+      io::write_file_atomically(output_directory + "/summary.json",
+                                [&](std::ostream &o) { o << j.str() << "\n"; });
+      if (status != "converged")
+        throw io::RunFailure(message);
+      say("output in " + output_directory + "/");
+    }
+
+    void
+    run_strip(ParameterHandler &prm, const io::RunOptions &options)
+    {
+      StripProblem problem;
+      problem.parse_parameters(prm);
+      problem.run(options, prm);
+    }
+  } // namespace strip
+} // namespace cosmo

@@ -1,0 +1,134 @@
+#ifndef cosmo_applications_strip_problem_h
+#define cosmo_applications_strip_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/assembly/reduced_rod_problem.h>
+#include <cosmo/io/parameters.h>
+#include <cosmo/materials/plate_law.h>
+#include <cosmo/solvers/continuation.h>
+
+#include <memory>
+#include <string>
+
+/**
+ * Part 2: a strip (a Cosserat/Naghdi plate of width w and thickness h)
+ * reduced to a special Cosserat rod by the helical Cauchy-Born rule
+ * (strip.md):
+ *
+ *   phi(eta, s) = r(s) + R(s) y(eta),   d(eta, s) = R(s) q(eta),
+ *
+ * y = eta E1 + u the deformed cross-section curve, q = exp([theta]x) E2 the
+ * thickness-line director, theta = (theta1, 0, theta3). The field is
+ * (u, theta1, theta3) on the width line, FE_Q(p)^5; the six gauge
+ * constraints are int u = 0, int eta u3 = 0 (rotation about the plate
+ * normal), int eta u2 = 0 (rotation about the axis) and int theta1 = 0
+ * (rotation about the width line: the linear counterpart of int q.E3 = 0,
+ * strip.md). Free edges: natural boundary conditions.
+ *
+ * The plate energy at each quadrature point is differentiated by Sacado with
+ * respect to its 16 local variables (u, u', theta1, theta3 and their
+ * derivatives, and the six strains), on which the field DoFs act linearly.
+ */
+namespace cosmo
+{
+  namespace strip
+  {
+    using namespace dealii;
+
+    class StripProblem : public assembly::ReducedRodProblem
+    {
+    public:
+      StripProblem();
+      ~StripProblem() override;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /// Mesh, DoFs, constraints, the reference state.
+      void
+      setup_system();
+      /// Continuation from the reference state to t = 1.
+      assembly::ReducedRodState
+      solve();
+      /// Newton from the current solution to these prescribed strains (t = 1).
+      assembly::ReducedRodState
+      resolve(const std::array<double, 6> &strains);
+
+      /// The application: solve and write every output.
+      void
+      run(const io::RunOptions &options, const ParameterHandler &prm);
+
+      double
+      width() const
+      {
+        return strip_width;
+      }
+      const materials::NaghdiPlateLaw &
+      plate() const
+      {
+        return law;
+      }
+      const Vector<double> &
+      current_solution() const
+      {
+        return solution;
+      }
+
+      void
+      converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+
+    protected:
+      int
+      assemble_field(const Vector<double> &       U,
+                     const std::array<double, 6> &e,
+                     Vector<double> *             R,
+                     bool                         jacobian,
+                     FullMatrix<double> &         border_block,
+                     FieldIntegrals &             out) override;
+      void
+      residual_scales(double &force, double &length) const override;
+
+    private:
+      // Parameters
+      double                        strip_width = 1, thickness = 0.01;
+      unsigned int                  n_cells = 40, degree = 2;
+      std::string                   mesh_kind = "graded";
+      bool                          reduced_shear = true;
+      materials::NaghdiPlateLaw     law;
+      solvers::NewtonSettings       newton_settings;
+      solvers::ContinuationSettings continuation_settings;
+      std::string                   linear_solver_name = "MUMPS";
+      std::string                   output_directory;
+      bool                          write_output = false;
+      bool                          quiet        = false;
+
+      // Discretization
+      Triangulation<1>             triangulation;
+      std::unique_ptr<FESystem<1>> fe;
+      DoFHandler<1>                dof_handler;
+      Vector<double>               solution;
+
+      assembly::ReducedRodState    last_state;
+      io::CSVTable                 steps_table;
+      std::unique_ptr<io::RunLog>  log;
+
+      void
+      say(const std::string &line);
+      void
+      write_section(const std::string &file) const;
+    };
+
+    /// The application: one run of the strip problem.
+    void
+    run_strip(ParameterHandler &prm, const io::RunOptions &options);
+  } // namespace strip
+} // namespace cosmo
+
+#endif

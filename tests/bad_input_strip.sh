@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Bad input of the strip application: a clear message naming the entry and
+# exit status 1. usage: bad_input_strip.sh <strip> <scratch dir>
+set -uo pipefail
+exe=$1 dir=$2
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+fail=0
+expect() { # expect <name> <grep pattern> <args...>
+  local name=$1 pattern=$2; shift 2
+  timeout 60 "$exe" "$@" > out.txt 2>&1; local status=$?
+  if [ $status -eq 1 ] && grep -q -- "$pattern" out.txt; then
+    echo "  ok    $name (status 1: $(grep -m1 -- "$pattern" out.txt | cut -c1-150))"
+  else
+    echo "  FAIL  $name: status $status (expected 1), output:"; cat out.txt; fail=1
+  fi
+}
+strip() { printf 'subsection Strip\n%s\nend\nsubsection Output\n set Output directory = out\nend\n' "$1"; }
+strip ' set Width = -1' > width.prm
+expect "negative width" "Width" width.prm
+strip ' set Width = 0.1
+ set Thickness = 0.2' > thick.prm
+expect "thickness larger than the width" "must be smaller than the width" thick.prm
+strip ' set Mesh = chebyshev' > mesh.prm
+expect "unknown mesh kind (names the allowed values)" "graded|uniform" mesh.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Strains = 0, 0, 1, 0\nend\n'; } > strains.prm
+expect "wrong number of strains" "Strains" strains.prm
+{ strip ' set Width = 1'; printf 'subsection Plate material\n set Young'"'"'s modulus = 0\nend\n'; } > young.prm
+expect "zero Young's modulus" "Young's modulus" young.prm
+exit $fail

@@ -1,0 +1,191 @@
+// Validation of the part-2 strip solver (strip.md anchors 1 and 4, and the
+// AD derivatives). Run as test_strip <case>.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include "cross_section_problem.h"
+#include "strip_problem.h"
+#include "test_tools.h"
+
+#include <iomanip>
+#include <sstream>
+
+using namespace dealii;
+using namespace cosmo;
+using cosmo_test::check;
+using cosmo_test::check_close;
+using Strains = std::array<double, 6>;
+
+namespace
+{
+  std::unique_ptr<strip::StripProblem>
+  make_strip(const double w, const double h, const double poisson, const Strains &e,
+             const std::string &extra = "", const unsigned int cells = 40)
+  {
+    ParameterHandler prm;
+    strip::StripProblem::declare_parameters(prm);
+    std::ostringstream t;
+    t << std::setprecision(17) << "subsection Strip\n set Width = " << w << "\n set Thickness = " << h
+      << "\n set Number of cells = " << cells << "\nend\nsubsection Plate material\n set Poisson's ratio = "
+      << poisson << "\nend\nsubsection Rod strains\n set Mode = prescribed strains\n set Strains = ";
+    for (unsigned int k = 0; k < 6; ++k)
+      t << (k ? ", " : "") << e[k];
+    t << "\nend\nsubsection Nonlinear solver\n set Relative tolerance = 1e-12\nend\n" << extra;
+    prm.parse_input_from_string(t.str());
+    auto p = std::make_unique<strip::StripProblem>();
+    p->parse_parameters(prm);
+    p->setup_system();
+    return p;
+  }
+
+  const Strains reference = {{0, 0, 1, 0, 0, 0}};
+
+  // Anchor 1: small-strain stiffnesses at the reference state.
+  void
+  small_strain()
+  {
+    const double w = 1, h = 0.05, E = 1;
+    for (const double poisson : {0.0, 0.3})
+      {
+        const double G = E / (2 * (1 + poisson)), ks = 5. / 6;
+        auto         p = make_strip(w, h, poisson, reference);
+        const auto   K = p->solve().stiffness;
+        std::cout << "strip w = " << w << ", h = " << h << ", Poisson " << poisson << ", "
+                  << p->n_field_dofs() << " DoFs\n";
+        // Linear fields (stretch, in-plane bending, transverse shear) are in
+        // the FE space: round-off.
+        check_close("EA = E w h (free edges: N11 = 0)", K(2, 2), E * w * h, 1e-10);
+        check_close("in-plane bending EI2 = E h w^3/12", K(4, 4), E * h * w * w * w / 12, 1e-10);
+        check_close("transverse shear = ks G w h", K(1, 1), ks * G * w * h, 1e-10);
+        // In-plane shear: the membrane warps like part 1's rectangle
+        // (cubic warping, k = 5/6 for any Poisson ratio; doc/theory-strip.md).
+        check_close("in-plane shear = 5/6 G w h", K(0, 0), 5. / 6 * G * w * h, 1e-6);
+        // Easy bending at the reference: the anticlastic effect is
+        // geometrically nonlinear, the tangent is the narrow limit.
+        check_close("easy bending tangent = E w h^3/12", K(3, 3), E * w * h * h * h / 12, 1e-8);
+        double off = 0;
+        for (unsigned int a = 0; a < 6; ++a)
+          for (unsigned int b = 0; b < 6; ++b)
+            if (a != b)
+              off = std::max(off, std::abs(K(a, b)));
+        check_close("no coupling at the reference (max off-diagonal / EA)", off / K(2, 2), 0, 0, 1e-10);
+        check("stability count 0 at the reference", p->condensed_state(p->current_solution()).n_negative == 0);
+      }
+  }
+
+  // (n, m) against central differences of Psi and K against central
+  // differences of (n, m), at a general state (all strains nonzero).
+  void
+  resultants_and_stiffness_fd()
+  {
+    auto       p  = make_strip(1, 0.05, 0.3, {{0.02, -0.01, 1.02, 0.6, 0.05, 0.4}});
+    const auto s0 = p->solve();
+    const double h = 1e-5;
+    std::array<std::array<double, 6>, 6> dres;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        Strains ep = s0.strains, em = s0.strains;
+        ep[k] += h;
+        em[k] -= h;
+        const auto sp = p->resolve(ep);
+        const auto sm = p->resolve(em);
+        check_close("dPsi/d" + kinematics::strain_names[k], s0.resultants[k],
+                    (sp.energy - sm.energy) / (2 * h), 1e-6, 1e-11);
+        for (unsigned int a = 0; a < 6; ++a)
+          dres[a][k] = (sp.resultants[a] - sm.resultants[a]) / (2 * h);
+      }
+    double worst = 0, scale = 0;
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          worst = std::max(worst, std::abs(s0.stiffness(a, k) - dres[a][k]));
+          scale = std::max(scale, std::abs(s0.stiffness(a, k)));
+        }
+    check_close("K against FD of (n, m): max |diff| / max |K|", worst / scale, 0, 0, 1e-6);
+    double asym = 0;
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int k = 0; k < 6; ++k)
+        asym = std::max(asym, std::abs(s0.stiffness(a, k) - s0.stiffness(k, a)));
+    check_close("K symmetric: max |K - K^T| / max |K|", asym / scale, 0, 0, 1e-10);
+  }
+
+  // The AD tangent against central differences of the residual, off equilibrium.
+  void
+  tangent_fd()
+  {
+    auto p = make_strip(1, 0.05, 0.3, {{0.02, -0.01, 1.02, 0.6, 0.05, 0.4}}, "", 10);
+    p->solve();
+    p->set_free_strains({{true, true, true, true, true, true}});
+    const unsigned int n = p->n_unknowns();
+    Vector<double>     U = p->current_solution();
+    for (unsigned int i = 0; i < n; ++i)
+      U[i] += 0.01 * std::sin(1.7 * i + 0.3);
+    AssertThrow(p->setup_jacobian(U) == 0, ExcInternalError());
+    Vector<double> v(n), Jv;
+    for (unsigned int i = 0; i < n; ++i)
+      v[i] = std::cos(0.9 * i);
+    const auto &free = p->free_strains();
+    p->bordered_system().vmult(Jv, v, std::vector<bool>(free.begin(), free.end()));
+    const double   h  = 1e-6;
+    Vector<double> Up = U, Um = U, Rp(n), Rm(n);
+    Up.add(h, v);
+    Um.add(-h, v);
+    p->residual(Up, Rp);
+    p->residual(Um, Rm);
+    Vector<double> d = Rp;
+    d -= Rm;
+    d /= 2 * h;
+    d -= Jv;
+    check_close("max |J v - FD| / max |J v|", d.linfty_norm() / Jv.linfty_norm(), 0, 0, 1e-7);
+  }
+
+  // Anchor 4: part 1 on a thin w x h rectangle against the strip, for the
+  // entries both models share exactly in the thin limit. EA and EI2 agree to
+  // round-off; the torsional rigidities (Saint-Venant in part 1, the
+  // Reissner-Mindlin plate here) agree to O(h/w).
+  void
+  part1_thin_rectangle()
+  {
+    const double E = 1, poisson = 0.3;
+    for (const double ratio : {10., 20.})
+      {
+        const double w = 1, h = w / ratio;
+        ParameterHandler prm;
+        rod::CrossSectionProblem::declare_parameters(prm);
+        std::ostringstream t;
+        t << std::setprecision(17)
+          << "subsection Cross-section\n set Shape = rectangle\n set Width = " << w
+          << "\n set Height = " << h << "\n set Global refinements = 2\nend\n"
+          << "subsection Material 1\n set Poisson's ratio = " << poisson << "\nend\n"
+          << "subsection Rod strains\n set Mode = prescribed strains\nend\n";
+        prm.parse_input_from_string(t.str());
+        rod::CrossSectionProblem section;
+        section.parse_parameters(prm);
+        section.setup_system();
+        const auto K1 = section.solve().stiffness;
+        const auto K2 = make_strip(w, h, poisson, reference)->solve().stiffness;
+        std::cout << "w/h = " << ratio << ": part 1 GJ " << K1(5, 5) << ", strip GJ " << K2(5, 5)
+                  << ", relative difference " << (K2(5, 5) - K1(5, 5)) / K1(5, 5) << "\n";
+        check_close("EA: part 1 = strip", K2(2, 2), K1(2, 2), 1e-9);
+        check_close("in-plane EI: part 1 = strip", K2(4, 4), K1(4, 4), 1e-6);
+        // Both are G w h^3/3 (1 - c h/w + ...) with their own c: measured
+        // 2.9e-4 apart at w/h = 10 and 1.4e-4 at 20, i.e. 0.003 h/w.
+        check_close("GJ: part 1 ~ strip, O(h/w)", K2(5, 5), K1(5, 5), 0.01 * h / w);
+        // The tangent of easy bending at the reference is E w h^3/12 in both
+        // (the anticlastic effect is nonlinear).
+        check_close("easy bending tangent: part 1 = strip", K2(3, 3), K1(3, 3), 1e-9);
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const cosmo_test::Cases cases = {{"small_strain", small_strain},
+                                   {"resultants_and_stiffness_fd", resultants_and_stiffness_fd},
+                                   {"tangent_fd", tangent_fd},
+                                   {"part1_thin_rectangle", part1_thin_rectangle}};
+  return cosmo_test::run_case("test_strip", "", cases, argc, argv, 2, 2);
+}
