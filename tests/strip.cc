@@ -9,6 +9,7 @@
 #include "test_tools.h"
 
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 using namespace dealii;
@@ -177,6 +178,79 @@ namespace
         check_close("easy bending tangent: part 1 = strip", K2(3, 3), K1(3, 3), 1e-9);
       }
   }
+
+  // Width-wise buckling under twist at zero axial force (strip.md): the flat
+  // helicoid loses stability at a critical twist; the driver detects it,
+  // locates it, switches to the bifurcated branch and follows it.
+  double
+  critical_twist(const unsigned int cells, std::vector<strip::StripProblem::PathPoint> *path,
+                 std::vector<solvers::BifurcationProblem::Event> *events)
+  {
+    const std::string arclength =
+      "subsection Rod strains\n set Free strains = nu3\nend\n"
+      "subsection Path following\n set Method = arclength\nend\n"
+      "subsection Arclength continuation\n set Parameter range = 0, 0.55\n set Initial step = 0.02\n"
+      " set Maximum step = 0.05\n set Maximum number of branches = 3\n set Maximum number of steps = 40\nend\n";
+    auto p = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2}}, arclength, cells);
+    p->follow_branches();
+    if (path)
+      *path = p->path();
+    if (events)
+      *events = p->events();
+    return p->events().empty() ? 0. : 2 * p->events()[0].lambda;
+  }
+
+  void
+  twist_buckling()
+  {
+    std::vector<strip::StripProblem::PathPoint>     path;
+    std::vector<solvers::BifurcationProblem::Event> events;
+    const double tau_c = critical_twist(40, &path, &events);
+    const double tau_c_coarse = critical_twist(20, nullptr, nullptr);
+    std::cout << "critical twist tau_c = " << tau_c << " (40 cells), " << tau_c_coarse
+              << " (20 cells); tau_c w^2/h = " << tau_c * 50 << "\n";
+    check("the first event is a simple branch point (0 -> 1 negative eigenvalues)",
+          !events.empty() && events[0].kind == solvers::BifurcationProblem::Event::Kind::branch_point &&
+            events[0].n_negative_before == 0 && events[0].n_negative_after == 1);
+    if (events.empty())
+      return;
+    // The Hessian is singular there: the inverse-iteration eigenvalue
+    // against the bending scale E w h^3/12.
+    check_close("eigenvalue at the branch point / (E w h^3/12)", events[0].eigenvalue / (0.02 * 0.02 * 0.02 / 12), 0, 0, 1e-8);
+    check_close("critical twist converged in the mesh (20 vs 40 cells)", tau_c_coarse, tau_c, 1e-3);
+
+    // The two bifurcated branches (+phi, -phi) are mirror images: the same
+    // energy and stretch at the same twist; they are stable (to the next
+    // branch point of the primary branch); their energy is below the
+    // primary (unstable) branch's at the same twist.
+    std::map<unsigned int, std::vector<strip::StripProblem::PathPoint>> branches;
+    for (const auto &pt : path)
+      branches[pt.branch].push_back(pt);
+    check("three branches followed", branches.size() == 3);
+    if (branches.size() < 3)
+      return;
+    double mirror = 0;
+    for (unsigned int k = 0; k < std::min(branches[1].size(), branches[2].size()); ++k)
+      mirror = std::max(mirror, std::abs(branches[1][k].energy - branches[2][k].energy) /
+                                  std::abs(branches[1][k].energy));
+    check_close("mirror branches: same energy (max relative difference)", mirror, 0, 0, 1e-8);
+    const double lambda_2 = events.size() > 1 ? events[1].lambda : 1e300;
+    unsigned int n_checked = 0, wrong = 0, above = 0;
+    for (const auto &pt : branches[1])
+      {
+        if (pt.lambda <= events[0].lambda + 0.02 || pt.lambda >= lambda_2)
+          continue;
+        ++n_checked;
+        wrong += pt.n_negative != 0;
+        auto primary = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2 * pt.lambda}},
+                                  "subsection Rod strains\n set Free strains = nu3\nend\n", 40);
+        above += !(pt.energy < primary->solve().energy);
+      }
+    check("bifurcated branch stable and below the primary branch's energy (" +
+            std::to_string(n_checked) + " states checked, " + std::to_string(wrong) + " unstable, " +
+            std::to_string(above) + " not below)",
+          n_checked > 2 && wrong == 0 && above == 0);
+  }
 } // namespace
 
 int
@@ -186,6 +260,7 @@ main(int argc, char **argv)
   const cosmo_test::Cases cases = {{"small_strain", small_strain},
                                    {"resultants_and_stiffness_fd", resultants_and_stiffness_fd},
                                    {"tangent_fd", tangent_fd},
-                                   {"part1_thin_rectangle", part1_thin_rectangle}};
+                                   {"part1_thin_rectangle", part1_thin_rectangle},
+                                   {"twist_buckling", twist_buckling}};
   return cosmo_test::run_case("test_strip", "", cases, argc, argv, 2, 2);
 }

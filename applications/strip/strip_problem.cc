@@ -120,6 +120,16 @@ namespace cosmo
       assembly::ReducedRodProblem::declare_strain_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
       solvers::ContinuationSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
+      prm.enter_subsection("Path following");
+      prm.declare_entry("Method", "natural parameter",
+                        Patterns::Selection("natural parameter|arclength"),
+                        "natural parameter: the load parameter t goes from 0 to 1 "
+                        "(section Continuation); arclength: pseudo-arclength continuation "
+                        "in t with the stability count at every step, location of folds and "
+                        "branch points, and branch switching (section Arclength "
+                        "continuation; set its Parameter range, e.g. 0, 1).");
+      prm.leave_subsection();
       prm.enter_subsection("Output");
       prm.declare_entry("Output directory", "output/strip", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, "
@@ -151,6 +161,10 @@ namespace cosmo
       parse_strain_parameters(prm);
       newton_settings.parse_parameters(prm);
       continuation_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
+      prm.enter_subsection("Path following");
+      use_arclength = prm.get("Method") == "arclength";
+      prm.leave_subsection();
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       prm.leave_subsection();
@@ -367,6 +381,7 @@ namespace cosmo
       solution   = U;
       last_state = condensed_state(solution);
       const auto &s = last_state;
+      visited.push_back({report.branch, report.t, s.energy, s.n_negative, s.strains, s.resultants});
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t
            << "  Newton " << std::setw(2) << report.newton_iterations << "  Psi = "
@@ -377,8 +392,8 @@ namespace cosmo
       say(line.str());
       if (!write_output)
         return;
-      std::vector<double> row = {double(report.step), report.t, double(report.newton_iterations),
-                                 report.residual_norm, s.energy};
+      std::vector<double> row = {double(report.step), double(report.branch), report.t,
+                                 double(report.newton_iterations), report.residual_norm, s.energy};
       row.insert(row.end(), s.strains.begin(), s.strains.end());
       row.insert(row.end(), s.resultants.begin(), s.resultants.end());
       for (unsigned int k = 0; k < 6; ++k)
@@ -387,11 +402,42 @@ namespace cosmo
       steps_table.add_row(row);
       steps_table.write(output_directory + "/steps.csv");
       write_section(output_directory + "/section-" + Utilities::int_to_string(report.step, 4) +
-                    ".vtu");
+                      ".vtu",
+                    solution);
     }
 
     void
-    StripProblem::write_section(const std::string &file) const
+    StripProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
+    {
+      located_events.push_back(e);
+      if (!write_output)
+        return;
+      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
+      write_section(output_directory + "/event-" + tag + ".vtu", U);
+      if (mode)
+        {
+          // The mode as a perturbation of the state at the event, scaled to
+          // a tenth of the width, so that its shape can be seen.
+          Vector<double> V = U;
+          double         m = 0;
+          for (unsigned int i = 0; i < n_field; ++i)
+            m = std::max(m, std::abs((*mode)[i]));
+          if (m > 0)
+            V.add(0.1 * strip_width / m, *mode);
+          write_section(output_directory + "/event-" + tag + "-mode.vtu", V);
+        }
+    }
+
+    std::vector<solvers::EventRecord>
+    StripProblem::follow_branches()
+    {
+      solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
+      driver.progress = [this](const std::string &s) { say(s); };
+      return driver.run(*this, solution, 0.);
+    }
+
+    void
+    StripProblem::write_section(const std::string &file, const Vector<double> &U) const
     {
       // The deformed cross-section curve y(eta) in the director frame, with
       // the thickness-line director q as a vector field: line cells.
@@ -401,7 +447,7 @@ namespace cosmo
         unit.emplace_back(double(i) / degree);
       const Quadrature<1>         nodes(unit);
       FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
-      Vector<double>              field(solution.begin(), solution.begin() + n_field);
+      Vector<double>              field(U.begin(), U.begin() + n_field);
       std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
       std::vector<DataOutBase::Patch<1, 3>> patches;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -463,7 +509,7 @@ namespace cosmo
            << degree << ", " << n_field << " field DoFs; E = " << law.young
            << ", Poisson " << law.poisson << ", shear " << (reduced_shear ? "reduced" : "full");
       say(info.str());
-      for (const auto &c : {"step", "t", "newton_iterations", "residual"})
+      for (const auto &c : {"step", "branch", "t", "newton_iterations", "residual"})
         steps_table.add_column(c);
       steps_table.add_column("energy", "E w h");
       for (const auto &s : kinematics::strain_names)
@@ -477,7 +523,10 @@ namespace cosmo
       std::string status = "converged", message;
       try
         {
-          solve();
+          if (use_arclength)
+            follow_branches();
+          else
+            solve();
         }
       catch (io::RunFailure &e)
         {
@@ -508,6 +557,19 @@ namespace cosmo
         }
       j["stiffness"]                           = K;
       j["stability"]["n_negative_eigenvalues"] = last_state.n_negative;
+      io::JSON ev = io::JSON::array();
+      for (const auto &e : located_events)
+        {
+          io::JSON x           = io::JSON::object();
+          x["kind"]            = e.name();
+          x["lambda"]          = e.lambda;
+          x["branch"]          = e.branch;
+          x["n_negative_before"] = e.n_negative_before;
+          x["n_negative_after"]  = e.n_negative_after;
+          x["eigenvalue"]      = e.eigenvalue;
+          ev.push_back(x);
+        }
+      j["events"]      = ev;
       j["multipliers"] = io::JSON::array(
         std::vector<double>(last_state.multipliers.begin(), last_state.multipliers.end()));
       io::write_file_atomically(output_directory + "/summary.json",

@@ -83,6 +83,34 @@ namespace cosmo
 
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      void
+      located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
+
+      /// Every converged state of the run, in order.
+      struct PathPoint
+      {
+        unsigned int          branch;
+        double                lambda;
+        double                energy;
+        int                   n_negative;
+        std::array<double, 6> strains;
+        std::array<double, 6> resultants;
+      };
+      const std::vector<PathPoint> &
+      path() const
+      {
+        return visited;
+      }
+
+      /// Events located by arclength continuation (kind, lambda, ...).
+      const std::vector<Event> &
+      events() const
+      {
+        return located_events;
+      }
+      /// Follow the path by arclength continuation, with event location and branch switching.
+      std::vector<solvers::EventRecord>
+      follow_branches();
 
     protected:
       int
@@ -104,6 +132,10 @@ namespace cosmo
       materials::NaghdiPlateLaw     law;
       solvers::NewtonSettings       newton_settings;
       solvers::ContinuationSettings continuation_settings;
+      solvers::ArclengthSettings    arclength_settings;
+      bool                          use_arclength = false;
+      std::vector<Event>            located_events;
+      std::vector<PathPoint>        visited;
       std::string                   linear_solver_name = "MUMPS";
       std::string                   output_directory;
       bool                          write_output = false;
@@ -122,7 +154,7 @@ namespace cosmo
       void
       say(const std::string &line);
       void
-      write_section(const std::string &file) const;
+      write_section(const std::string &file, const Vector<double> &U) const;
     };
 
     /// The application: one run of the strip problem.
