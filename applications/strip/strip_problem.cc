@@ -121,6 +121,7 @@ namespace cosmo
       solvers::NewtonSettings::declare_parameters(prm);
       solvers::ContinuationSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
+      assembly::ConstitutiveTable::declare_parameters(prm);
       prm.enter_subsection("Path following");
       prm.declare_entry("Method", "natural parameter",
                         Patterns::Selection("natural parameter|arclength"),
@@ -162,6 +163,7 @@ namespace cosmo
       newton_settings.parse_parameters(prm);
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
+      table.parse_parameters(prm);
       prm.enter_subsection("Path following");
       use_arclength = prm.get("Method") == "arclength";
       prm.leave_subsection();
@@ -523,7 +525,18 @@ namespace cosmo
       std::string status = "converged", message;
       try
         {
-          if (use_arclength)
+          if (table.enabled())
+            {
+              io::PhaseTimer::Scope scope(timer, "constitutive table");
+              write_output = false; // no per-point files
+              set_load_parameter(1.);
+              table.run(target_strains,
+                        [this](const std::array<double, 6> &e) { return resolve(e); },
+                        output_directory,
+                        [this](const std::string &m) { say(m); });
+              write_output = true;
+            }
+          else if (use_arclength)
             follow_branches();
           else
             solve();
@@ -570,6 +583,7 @@ namespace cosmo
           ev.push_back(x);
         }
       j["events"]      = ev;
+      j["timings"]     = timer.to_json();
       j["multipliers"] = io::JSON::array(
         std::vector<double>(last_state.multipliers.begin(), last_state.multipliers.end()));
       io::write_file_atomically(output_directory + "/summary.json",

@@ -7,6 +7,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/plate_law.h>
@@ -133,6 +134,7 @@ namespace cosmo
       solvers::NewtonSettings       newton_settings;
       solvers::ContinuationSettings continuation_settings;
       solvers::ArclengthSettings    arclength_settings;
+      assembly::ConstitutiveTable   table;
       bool                          use_arclength = false;
       std::vector<Event>            located_events;
       std::vector<PathPoint>        visited;

@@ -1,0 +1,61 @@
+#ifndef cosmo_assembly_constitutive_table_h
+#define cosmo_assembly_constitutive_table_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cosmo/assembly/reduced_rod_problem.h>
+
+#include <functional>
+#include <string>
+
+/**
+ * A constitutive table of a reduced rod: energy, resultants and 6x6
+ * stiffness on a grid of two strains (the others as prescribed or free in
+ * "Rod strains"), so that a rod simulator can use the nonlinear law of the
+ * section (strip.md, issue 4). Written as table.csv (one row per grid point)
+ * and table.h5 (datasets strain_1, strain_2, energy [n1 x n2], resultants
+ * [n1 x n2 x 6], stiffness [n1 x n2 x 6 x 6], converged [n1 x n2]).
+ *
+ * The grid is swept row by row in serpentine order, each point solved by
+ * Newton from its neighbour; a point that does not converge is approached
+ * in substeps, and recorded as not converged if that fails too.
+ */
+namespace cosmo
+{
+  namespace assembly
+  {
+    class ConstitutiveTable
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      bool
+      enabled() const
+      {
+        return is_enabled;
+      }
+
+      /// resolve(e): the converged state at prescribed strains e from the last one.
+      using Resolver = std::function<ReducedRodState(const std::array<double, 6> &)>;
+
+      /// Sweep the grid around `base` (the other strains) and write the files.
+      void
+      run(const std::array<double, 6> &base,
+          const Resolver &             resolve,
+          const std::string &          directory,
+          const std::function<void(const std::string &)> &progress) const;
+
+      unsigned int first = 3, second = 5; ///< strain indices
+      double       from1 = 0, to1 = 1, from2 = 0, to2 = 1;
+      unsigned int n1 = 5, n2 = 5;
+
+    private:
+      bool is_enabled = false;
+    };
+  } // namespace assembly
+} // namespace cosmo
+
+#endif

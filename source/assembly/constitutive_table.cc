@@ -1,0 +1,177 @@
+#include <deal.II/base/hdf5.h>
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/assembly/constitutive_table.h>
+#include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/solvers/newton.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace assembly
+  {
+    void
+    ConstitutiveTable::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Constitutive table");
+      prm.declare_entry("Enabled", "false", Patterns::Bool(),
+                        "Instead of one path: energy, resultants and stiffness on a grid of "
+                        "two strains (table.csv, table.h5 in the output directory); the "
+                        "other strains are prescribed or free as in 'Rod strains'.");
+      const std::string names = "nu1|nu2|nu3|kappa1|kappa2|kappa3";
+      prm.declare_entry("First strain", "kappa1", Patterns::Selection(names), "The first axis.");
+      prm.declare_entry("First range", "-1, 1, 5", Patterns::List(Patterns::Double(), 3, 3),
+                        "From, To, Number of values of the first strain.");
+      prm.declare_entry("Second strain", "kappa3", Patterns::Selection(names), "The second axis.");
+      prm.declare_entry("Second range", "-1, 1, 5", Patterns::List(Patterns::Double(), 3, 3),
+                        "From, To, Number of values of the second strain.");
+      prm.leave_subsection();
+    }
+
+    void
+    ConstitutiveTable::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Constitutive table");
+      is_enabled = prm.get_bool("Enabled");
+      auto index = [](const std::string &name) {
+        for (unsigned int k = 0; k < 6; ++k)
+          if (kinematics::strain_names[k] == name)
+            return k;
+        return 0u;
+      };
+      first  = index(prm.get("First strain"));
+      second = index(prm.get("Second strain"));
+      auto range = [&](const std::string &entry, double &a, double &b, unsigned int &n) {
+        const auto r = io::get_double_list(prm, entry, 3, "Constitutive table");
+        const int  m = static_cast<int>(std::lround(r[2]));
+        if (m < 1 || std::abs(r[2] - m) > 1e-12)
+          throw io::InputError("Constitutive table", entry, prm.get(entry),
+                               "From, To, Number of values with a whole number >= 1");
+        a = r[0];
+        b = r[1];
+        n = m;
+      };
+      range("First range", from1, to1, n1);
+      range("Second range", from2, to2, n2);
+      if (is_enabled && first == second)
+        throw io::InputError("Constitutive table", "Second strain", prm.get("Second strain"),
+                             "a strain other than the first one (a path asks for each strain once)");
+      prm.leave_subsection();
+    }
+
+    void
+    ConstitutiveTable::run(const std::array<double, 6> &                   base,
+                           const Resolver &                                 resolve,
+                           const std::string &                              directory,
+                           const std::function<void(const std::string &)> &progress) const
+    {
+      auto value = [](double a, double b, unsigned int n, unsigned int i) {
+        return n == 1 ? a : a + (b - a) * i / (n - 1);
+      };
+      const unsigned int  N = n1 * n2;
+      std::vector<double> energy(N, NAN), resultants(6 * N, NAN), stiffness(36 * N, NAN),
+        converged(N, 0);
+      io::CSVTable table;
+      table.add_column(kinematics::strain_names[first]);
+      table.add_column(kinematics::strain_names[second]);
+      table.add_column("converged");
+      table.add_column("energy");
+      for (unsigned int k = 0; k < 6; ++k)
+        table.add_column(kinematics::resultant_names[k]);
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int b = a; b < 6; ++b)
+          table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
+
+      std::array<double, 6> last = base;
+      unsigned int          n_failed = 0;
+      for (unsigned int i = 0; i < n1; ++i)
+        for (unsigned int jj = 0; jj < n2; ++jj)
+          {
+            const unsigned int    j = (i % 2 == 0) ? jj : n2 - 1 - jj; // serpentine
+            std::array<double, 6> e = base;
+            e[first]                = value(from1, to1, n1, i);
+            e[second]               = value(from2, to2, n2, j);
+            ReducedRodState s;
+            bool            ok = false;
+            for (const unsigned int substeps : {1u, 4u, 16u})
+              {
+                try
+                  {
+                    for (unsigned int k = 1; k <= substeps; ++k)
+                      {
+                        std::array<double, 6> ek;
+                        for (unsigned int c = 0; c < 6; ++c)
+                          ek[c] = last[c] + (e[c] - last[c]) * k / substeps;
+                        s = resolve(ek);
+                      }
+                    ok = true;
+                    break;
+                  }
+                catch (solvers::NewtonFailure &)
+                  {}
+              }
+            const unsigned int p = i * n2 + j;
+            std::vector<double> row = {e[first], e[second], ok ? 1. : 0.};
+            if (ok)
+              {
+                last         = e;
+                converged[p] = 1;
+                energy[p]    = s.energy;
+                for (unsigned int a = 0; a < 6; ++a)
+                  {
+                    resultants[6 * p + a] = s.resultants[a];
+                    for (unsigned int b = 0; b < 6; ++b)
+                      stiffness[36 * p + 6 * a + b] = s.stiffness(a, b);
+                  }
+                row.push_back(s.energy);
+                row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+                for (unsigned int a = 0; a < 6; ++a)
+                  for (unsigned int b = a; b < 6; ++b)
+                    row.push_back(s.stiffness(a, b));
+              }
+            else
+              ++n_failed;
+            row.resize(table.n_columns(), NAN);
+            table.add_row(row);
+          }
+      table.write(directory + "/table.csv");
+
+      // HDF5, written under a temporary name and renamed: complete or absent.
+      const std::string tmp = directory + "/table.h5.tmp", h5 = directory + "/table.h5";
+      {
+        HDF5::File          file(tmp, HDF5::File::FileAccessMode::create);
+        std::vector<double> s1(n1), s2(n2);
+        for (unsigned int i = 0; i < n1; ++i)
+          s1[i] = value(from1, to1, n1, i);
+        for (unsigned int j = 0; j < n2; ++j)
+          s2[j] = value(from2, to2, n2, j);
+        auto write = [&](const std::string &name, const std::vector<hsize_t> &dims,
+                         const std::vector<double> &data) {
+          auto d = file.create_dataset<double>(name, dims);
+          d.write(data);
+        };
+        write("strain_1", {n1}, s1);
+        write("strain_2", {n2}, s2);
+        write("energy", {n1, n2}, energy);
+        write("resultants", {n1, n2, 6}, resultants);
+        write("stiffness", {n1, n2, 6, 6}, stiffness);
+        write("converged", {n1, n2}, converged);
+        file.set_attribute("strain_1_name", kinematics::strain_names[first]);
+        file.set_attribute("strain_2_name", kinematics::strain_names[second]);
+      }
+      std::filesystem::rename(tmp, h5);
+      std::ostringstream m;
+      m << "constitutive table: " << n1 << " x " << n2 << " points of ("
+        << kinematics::strain_names[first] << ", " << kinematics::strain_names[second] << "), "
+        << n_failed << " not converged; " << directory << "/table.csv, table.h5";
+      progress(m.str());
+      if (n_failed > 0)
+        throw io::RunFailure(std::to_string(n_failed) + " table points did not converge");
+    }
+  } // namespace assembly
+} // namespace cosmo
