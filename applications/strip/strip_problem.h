@@ -66,6 +66,13 @@ namespace cosmo
       void
       run(const io::RunOptions &options, const ParameterHandler &prm);
 
+      /// No progress lines on the terminal (tests, benchmarks).
+      void
+      set_quiet(const bool q)
+      {
+        quiet = q;
+      }
+
       double
       width() const
       {
