@@ -26,4 +26,10 @@ expect "unknown mesh kind (names the allowed values)" "graded|uniform" mesh.prm
 expect "wrong number of strains" "Strains" strains.prm
 { strip ' set Width = 1'; printf 'subsection Plate material\n set Young'"'"'s modulus = 0\nend\n'; } > young.prm
 expect "zero Young's modulus" "Young's modulus" young.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = nu3\n set Path = 0, 0, 1.1, 0, 0, 0\nend\n'; } > twice.prm
+expect "a path that asks for a strain twice (free and prescribed)" "either prescribed or free" twice.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Path = 0, 0, 1; 1\nend\n'; } > path.prm
+expect "a path waypoint that is not six numbers" "not six numbers" path.prm
+{ strip ' set Width = 1'; printf 'subsection Constitutive table\n set Enabled = true\n set First strain = kappa3\n set Second strain = kappa3\nend\n'; } > table.prm
+expect "a table that asks for a strain twice" "a strain other than the first" table.prm
 exit $fail

@@ -28,6 +28,13 @@ namespace cosmo
                         Patterns::MultipleSelection("nu1|nu2|nu3|kappa1|kappa2|kappa3"),
                         "In 'prescribed strains' mode: strains left free (their "
                         "resultant vanishes), e.g. 'nu3' for twisting at zero axial force.");
+      prm.declare_entry("Path", "", Patterns::Anything(),
+                        "A path through strain space instead of the straight ramp to "
+                        "'Strains': waypoints of six strains separated by ';', e.g. "
+                        "'0,0,1,0.5,0,0; 0,0,1,0.5,0,1' (bend, then twist while bent). The "
+                        "load parameter t runs through them at equal intervals from the "
+                        "reference; the last waypoint is reached at t = 1. A free strain "
+                        "must not change along the path.");
       prm.leave_subsection();
     }
 
@@ -44,6 +51,38 @@ namespace cosmo
         for (unsigned int k = 0; k < 6; ++k)
           if (kinematics::strain_names[k] == name)
             strain_is_free[k] = true;
+      waypoints.clear();
+      const std::string path_text = prm.get("Path");
+      for (const auto &point : Utilities::split_string_list(path_text, ';'))
+        {
+          std::vector<double> v;
+          try
+            {
+              v = Utilities::string_to_double(Utilities::split_string_list(point, ','));
+            }
+          catch (...)
+            {}
+          if (v.size() != 6)
+            throw io::InputError("Rod strains", "Path", path_text,
+                                 "waypoints of six numbers separated by ';' ('" + point +
+                                   "' is not six numbers)");
+          waypoints.push_back({{v[0], v[1], v[2], v[3], v[4], v[5]}});
+        }
+      if (!waypoints.empty())
+        {
+          target_strains = waypoints.back();
+          // A strip cannot be asked for a strain twice: free (its resultant
+          // vanishes) and prescribed by the path.
+          const auto ref = kinematics::RodStrains::reference().as_array();
+          for (unsigned int k = 0; k < 6; ++k)
+            if (strain_is_free[k])
+              for (const auto &w : waypoints)
+                if (w[k] != ref[k])
+                  throw io::InputError("Rod strains", "Path", path_text,
+                                       "the path prescribes " + kinematics::strain_names[k] +
+                                         ", which 'Free strains' (or the natural-shape mode) "
+                                         "leaves free: a strain is either prescribed or free");
+        }
       prm.leave_subsection();
     }
 
@@ -61,8 +100,20 @@ namespace cosmo
     {
       const auto            ref = kinematics::RodStrains::reference().as_array();
       std::array<double, 6> e;
+      if (waypoints.empty())
+        {
+          for (unsigned int k = 0; k < n_strains; ++k)
+            e[k] = ref[k] + t * (target_strains[k] - ref[k]);
+          return e;
+        }
+      // Piecewise linear through reference, waypoint 1, ..., waypoint K.
+      const unsigned int K   = waypoints.size();
+      const double       x   = std::min(std::max(t, 0.), 1.) * K;
+      const unsigned int seg = std::min(static_cast<unsigned int>(x), K - 1);
+      const auto &       a   = seg == 0 ? ref : waypoints[seg - 1];
+      const auto &       b   = waypoints[seg];
       for (unsigned int k = 0; k < n_strains; ++k)
-        e[k] = ref[k] + t * (target_strains[k] - ref[k]);
+        e[k] = a[k] + (x - seg) * (b[k] - a[k]);
       return e;
     }
 

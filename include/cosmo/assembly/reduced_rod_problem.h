@@ -64,6 +64,7 @@ namespace cosmo
       set_target_strains(const std::array<double, 6> &strains)
       {
         target_strains = strains;
+        waypoints.clear();
       }
       void
       set_free_strains(const std::array<bool, 6> &free)
@@ -181,6 +182,7 @@ namespace cosmo
       std::array<double, 6>           target_strains{{0, 0, 1, 0, 0, 0}};
       std::array<bool, 6>             strain_is_free{};
       std::string                     mode = "natural shape";
+      std::vector<std::array<double, 6>> waypoints; ///< 'Path' (empty: straight ramp)
       io::PhaseTimer                  timer;
       unsigned int                    total_newton_iterations = 0;
       /// Where to report a failed factorization (may be empty).
