@@ -10,6 +10,9 @@
 #                                   deformed section of embedded_filaments
 #                                   coloured by von_Mises_stress
 #                                   (scripts/plot_section.py)
+#   doc/figures/strip_shearing_branches.png
+#                                   output/strip_shearing/branches.png
+#   doc/figures/strip_ribbons.png   output/strip_ribbon_comparison/ribbons.png
 # Exit status 1 if an expected input is missing (run run_examples.sh).
 set -euo pipefail
 
@@ -30,6 +33,9 @@ for n in "${STEPS[@]}"; do
   [[ -f "output/$n/steps.png" ]] || { log "missing output/$n/steps.png" >&2; missing=1; }
 done
 [[ -f "output/$SECTION/solution.pvd" ]] || { log "missing output/$SECTION/solution.pvd" >&2; missing=1; }
+for f in output/strip_shearing/branches.png output/strip_ribbon_comparison/ribbons.png; do
+  [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
+done
 if ((missing)); then
   log "run 'bash scripts/run_examples.sh' first" >&2
   exit 1
@@ -42,6 +48,8 @@ done
 for n in "${STEPS[@]}"; do
   cp "output/$n/steps.png" "doc/figures/steps_$n.png"
 done
+cp output/strip_shearing/branches.png doc/figures/strip_shearing_branches.png
+cp output/strip_ribbon_comparison/ribbons.png doc/figures/strip_ribbons.png
 python3 scripts/plot_section.py "output/$SECTION" "doc/figures/section_$SECTION.png" von_Mises_stress >/dev/null
 for f in doc/figures/*.png; do
   printf '[cosmo] %-55s %6s bytes\n' "$f" "$(wc -c <"$f")"

@@ -47,6 +47,21 @@ if ((${#studies[@]})) && [[ -f scripts/plot_sweep.py ]]; then
   log "plotting sweeps"
   python3 scripts/plot_sweep.py output/studies || { log "plotting sweeps FAILED" >&2; failed=1; }
 fi
+if ((${#strips[@]})); then
+  log "plotting strips (bifurcation diagrams, ribbon models)"
+  for d in output/strip_*/; do
+    if [[ -f "$d/steps.csv" ]] && head -1 "$d/steps.csv" | grep -q branch; then
+      python3 scripts/plot_branches.py "$d" || { log "plotting $d FAILED" >&2; failed=1; }
+    fi
+  done
+  if [[ -f output/strip_ribbon_comparison/table.csv ]]; then
+    # numpy and matplotlib: Debian's interpreter
+    py=python3; [[ -x /usr/bin/python3 ]] && py=/usr/bin/python3
+    "$py" scripts/ribbon_models.py --plot output/strip_ribbon_comparison/table.csv \
+      --out output/strip_ribbon_comparison/ribbons.png --h 0.01 \
+      || { log "plotting ribbons FAILED" >&2; failed=1; }
+  fi
+fi
 
 log "output is in $REPO/output/ (logs in output/logs/)"
 exit "$failed"

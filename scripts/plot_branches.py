@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Bifurcation diagrams of strip runs with arclength continuation.
+
+Usage: python3 scripts/plot_branches.py DIR [DIR ...]
+
+DIR is the output directory of a `strip` run (steps.csv with a `branch`
+column, summary.json with `events`). Writes DIR/branches.png: the load
+parameter t against the resultant that the path drives (the one of the
+largest prescribed strain change: m3 for twisting, n1 for shearing, m1 for
+bending; the same panel shows the energy), one line per branch, solid where
+the state is stable (no negative eigenvalue) and dashed where it is not; the
+located events are marked. Exit status 0, 1 bad usage, 2 no matplotlib.
+"""
+
+import json
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_steps  # noqa: E402  (CSV reading, matplotlib set-up)
+
+STRAINS = plot_steps.STRAINS
+RESULTANTS = plot_steps.RESULTANTS
+
+
+def plot_run(plt, run_dir):
+    columns, _ = plot_steps.read_steps(os.path.join(run_dir, "steps.csv"))
+    if "branch" not in columns or not columns.get("t"):
+        return None
+    try:
+        summary = json.load(open(os.path.join(run_dir, "summary.json")))
+    except (OSError, ValueError):
+        summary = {}
+    # The driven strain: the one that changes most along the first branch;
+    # the order parameter: the strain that differs most between branches
+    # (e.g. the twist a sheared strip buckles into), else the energy.
+    first = [i for i, b in enumerate(columns["branch"]) if int(b) == 0]
+    change = {s: max(columns[s][i] for i in first) - min(columns[s][i] for i in first)
+              for s in STRAINS if s in columns}
+    driven = max(change, key=change.get)
+    resultant = RESULTANTS[STRAINS.index(driven)]
+    others = [i for i, b in enumerate(columns["branch"]) if int(b) != 0]
+    spread = {s: max((abs(columns[s][i] - columns[s][first[0]]) for i in others), default=0)
+              for s in STRAINS if s in columns and s != driven}
+    order = max(spread, key=spread.get) if spread and max(spread.values()) > 1e-8 else "energy"
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    branches = sorted(set(int(b) for b in columns["branch"]))
+    for b in branches:
+        rows = [i for i, x in enumerate(columns["branch"]) if int(x) == b]
+        for ax, name in zip(axes, (resultant, order)):
+            # Split into runs of equal stability so that stable is solid.
+            start = 0
+            while start < len(rows):
+                stable = columns["n_negative_eigenvalues"][rows[start]] == 0
+                end = start
+                while end + 1 < len(rows) and \
+                        (columns["n_negative_eigenvalues"][rows[end + 1]] == 0) == stable:
+                    end += 1
+                seg = rows[start:end + 2] if end + 1 < len(rows) else rows[start:end + 1]
+                ax.plot([columns["t"][i] for i in seg], [columns[name][i] for i in seg],
+                        "-" if stable else "--", color="C%d" % b,
+                        label=("branch %d" % b) if start == 0 else None)
+                start = end + 1
+    for e in summary.get("events", []):
+        for ax in axes:
+            ax.axvline(e.get("lambda", math.nan), color="gray", lw=0.6, ls=":")
+    for ax, name in zip(axes, (resultant, order)):
+        ax.set_xlabel("load parameter t (%s prescribed)" % driven)
+        ax.set_ylabel(name)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    n_events = len(summary.get("events", []))
+    fig.suptitle("%s: %d branch(es), %d event(s); solid stable, dashed unstable"
+                 % (os.path.basename(os.path.normpath(run_dir)), len(branches), n_events),
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    out = os.path.join(run_dir, "branches.png")
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
+    return out
+
+
+def main(argv):
+    args = argv[1:]
+    if not args or any(a.startswith("-") for a in args):
+        sys.stderr.write(__doc__)
+        return 1
+    plt = plot_steps.import_pyplot()
+    if plt is None:
+        plot_steps.reexec_with_system_python()
+        sys.stderr.write("plot_branches.py: matplotlib cannot be imported\n")
+        return 2
+    for d in args:
+        out = plot_run(plt, d)
+        print("wrote %s" % out if out else "note: %s has no branch data; skipped" % d)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
