@@ -383,11 +383,18 @@ namespace cosmo
       solution   = U;
       last_state = condensed_state(solution);
       const auto &s = last_state;
+      // The eigenvalue of smallest magnitude of the Hessian on the
+      // constrained field space (free strains condensed): the one that
+      // crosses zero where the section buckles.
+      Vector<double> mask, mode;
+      mode_mask(mask);
+      const double smallest = solvers::smallest_eigenvalue(*this, mask, mode, 50);
       visited.push_back({report.branch, report.t, s.energy, s.n_negative, s.strains, s.resultants});
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t
            << "  Newton " << std::setw(2) << report.newton_iterations << "  Psi = "
-           << std::setprecision(8) << s.energy << "  neg.eig. " << s.n_negative << "  strains (";
+           << std::setprecision(8) << s.energy << "  neg.eig. " << s.n_negative
+           << "  min|eig| " << std::setprecision(3) << smallest << "  strains (";
       for (unsigned int k = 0; k < 6; ++k)
         line << (k ? ", " : "") << std::setprecision(6) << s.strains[k];
       line << ")";
@@ -401,11 +408,91 @@ namespace cosmo
       for (unsigned int k = 0; k < 6; ++k)
         row.push_back(s.stiffness(k, k));
       row.push_back(s.n_negative);
+      row.push_back(smallest);
       steps_table.add_row(row);
       steps_table.write(output_directory + "/steps.csv");
       write_section(output_directory + "/section-" + Utilities::int_to_string(report.step, 4) +
                       ".vtu",
                     solution);
+      write_piece(output_directory + "/strip-" + Utilities::int_to_string(report.step, 4) +
+                  ".vtu");
+    }
+
+    void
+    StripProblem::write_piece(const std::string &file) const
+    {
+      // A piece of the strip in 3D: the mid-surface phi(eta, s) = r(s) + R(s)
+      // y(eta) swept along the helix of the current strains, over one turn or
+      // three widths (whichever is shorter), 24 slices; fields eta, s and the
+      // director d = R q.
+      const auto                   e = strains_of(solution);
+      const kinematics::RodStrains strains(e);
+      const double                 k = strains.kappa.norm();
+      const double                 L = k > 0 ? std::min(2 * M_PI / k, 3 * strip_width) : 3 * strip_width;
+      const unsigned int           n_slices = 24;
+      std::vector<Point<1>>        unit;
+      for (unsigned int i = 0; i <= degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      const Quadrature<1>         nodes(unit);
+      FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
+      Vector<double>              field(solution.begin(), solution.begin() + n_field);
+      std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
+      std::vector<DataOutBase::Patch<2, 3>> patches;
+      const unsigned int                    np = degree + 1;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(field, values);
+          for (unsigned int slice = 0; slice < n_slices; ++slice)
+            {
+              DataOutBase::Patch<2, 3> patch;
+              patch.n_subdivisions       = degree;
+              patch.reference_cell       = ReferenceCells::Quadrilateral;
+              patch.points_are_available = true;
+              patch.data.reinit(5 + 3, np * np);
+              for (unsigned int j = 0; j < np; ++j)
+                {
+                  const double X3 = L * (slice + double(j) / degree) / n_slices;
+                  const auto   R  = kinematics::helix_rotation(strains.kappa, X3);
+                  const auto   r  = kinematics::helix_position(strains.nu, strains.kappa, X3);
+                  for (unsigned int i = 0; i < np; ++i)
+                    {
+                      const unsigned int   pt  = j * np + i;
+                      const double         eta = fev.quadrature_point(i)[0];
+                      Tensor<1, 3, double> theta;
+                      theta[0]                = values[i][3];
+                      theta[2]                = values[i][4];
+                      const auto         Q    = kinematics::rotation_exp(theta);
+                      const Tensor<1, 3> y({eta + values[i][0], values[i][1], values[i][2]});
+                      const Tensor<1, 3> q({Q[0][1], Q[1][1], Q[2][1]});
+                      const Tensor<1, 3> x = r + R * y, d = R * q;
+                      patch.data(0, pt)    = eta;
+                      patch.data(1, pt)    = X3;
+                      for (unsigned int c = 0; c < 3; ++c)
+                        {
+                          patch.data(2 + c, pt) = d[c];
+                          patch.data(5 + c, pt) = x[c];
+                        }
+                    }
+                }
+              for (unsigned int v = 0; v < 4; ++v)
+                {
+                  const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
+                  patch.vertices[v] =
+                    Point<3>(patch.data(5, pt), patch.data(6, pt), patch.data(7, pt));
+                }
+              patch.patch_index = patches.size();
+              patches.push_back(std::move(patch));
+            }
+        }
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{2, 4, "director", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, {"eta", "arc_length", "director", "director", "director"},
+                               vectors, flags, o);
+      });
     }
 
     void
@@ -521,6 +608,7 @@ namespace cosmo
       for (const auto &s : kinematics::strain_names)
         steps_table.add_column("K_" + s + "_" + s);
       steps_table.add_column("n_negative_eigenvalues");
+      steps_table.add_column("smallest_eigenvalue");
 
       std::string status = "converged", message;
       try

@@ -164,6 +164,9 @@ namespace cosmo
       say(const std::string &line);
       void
       write_section(const std::string &file, const Vector<double> &U) const;
+      /// strip-NNNN.vtu: a piece of the strip swept along the helix.
+      void
+      write_piece(const std::string &file) const;
     };
 
     /// The application: one run of the strip problem.

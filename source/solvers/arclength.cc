@@ -206,6 +206,42 @@ namespace cosmo
       };
     } // namespace
 
+    double
+    smallest_eigenvalue(BifurcationProblem &  problem,
+                        const Vector<double> &mask,
+                        Vector<double> &      phi,
+                        const unsigned int    max_iterations)
+    {
+      const unsigned int n = problem.n_unknowns();
+      auto dot = [&](const Vector<double> &a, const Vector<double> &b) {
+        double s = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          s += mask[i] * a[i] * b[i];
+        return s;
+      };
+      phi.reinit(n);
+      for (unsigned int i = 0; i < n; ++i)
+        phi[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
+      phi /= std::sqrt(dot(phi, phi));
+      double mu = 0;
+      for (unsigned int it = 0; it < max_iterations; ++it)
+        {
+          Vector<double> x(n);
+          problem.solve_with_jacobian(phi, x);
+          x.scale(mask);
+          mu = dot(phi, x); // Rayleigh quotient of J^-1: 1/eigenvalue
+          x /= std::sqrt(dot(x, x));
+          if (dot(x, phi) < 0)
+            x *= -1.;
+          Vector<double> d = x;
+          d -= phi;
+          phi = x;
+          if (std::sqrt(dot(d, d)) < 1e-12)
+            break;
+        }
+      return mu != 0 ? 1. / mu : 0.;
+    }
+
     ArclengthContinuation::ArclengthContinuation(const ArclengthSettings &settings,
                                                  const NewtonSettings &   newton)
       : settings(settings)
@@ -388,28 +424,9 @@ namespace cosmo
                 {
                   problem.set_load_parameter(lo.lambda);
                   problem.setup_jacobian(lo.U);
-                  const unsigned int n = problem.n_unknowns();
-                  phi.reinit(n);
-                  for (unsigned int i = 0; i < n; ++i)
-                    phi[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
+                  e.eigenvalue = smallest_eigenvalue(problem, mask, phi);
+                  // The mode in the arclength norm: unit theta-length.
                   phi /= std::sqrt(norm2(phi));
-                  double mu = 0;
-                  for (unsigned int it = 0; it < 100; ++it)
-                    {
-                      Vector<double> x(n);
-                      problem.solve_with_jacobian(phi, x);
-                      x.scale(mask);
-                      mu = dot(phi, x) / theta; // ~ 1/eigenvalue (Euclidean on the mask)
-                      x /= std::sqrt(norm2(x));
-                      if (dot(x, phi) < 0)
-                        x *= -1.;
-                      Vector<double> d = x;
-                      d -= phi;
-                      phi = x;
-                      if (std::sqrt(norm2(d)) < 1e-12)
-                        break;
-                    }
-                  e.eigenvalue = (mu != 0) ? 1. / mu : 0;
                   record.mode.assign(phi.begin(), phi.end());
                 }
               problem.located_event(e, lo.U, phi.size() ? &phi : nullptr);

@@ -96,6 +96,19 @@ namespace cosmo
       {}
     };
 
+    /**
+     * The eigenvalue of smallest magnitude of the problem's factorized
+     * Jacobian on the mode unknowns (mask), and its unit eigenvector, by
+     * inverse iteration with the last factorization (rhs and iterates are
+     * masked, so bordered multipliers and strains act as constraints). Near a
+     * loss of stability it is the eigenvalue that crosses zero.
+     */
+    double
+    smallest_eigenvalue(BifurcationProblem &  problem,
+                        const Vector<double> &mask,
+                        Vector<double> &      mode,
+                        unsigned int          max_iterations = 100);
+
     struct ArclengthSettings
     {
       double       initial_step       = 0.05;
