@@ -1,0 +1,79 @@
+#ifndef cosmo_kinematics_strip_h
+#define cosmo_kinematics_strip_h
+
+#include <cosmo/kinematics/rotation.h>
+#include <cosmo/materials/plate_law.h>
+
+#include <array>
+
+/**
+ * The helical Cauchy-Born kinematics of a strip (strip.md): a plate whose
+ * mid-surface and director are phi(eta, s) = r(s) + R(s) y(eta) and
+ * d = R(s) q(eta), with the helix (r, R) of uniform rod strains (nu, kappa).
+ * In the rod frame d phi/ds -> nu + kappa x y, d phi/d eta -> y',
+ * dd/ds -> kappa x q, dd/d eta -> q'; the plate strains depend on eta alone.
+ */
+namespace cosmo
+{
+  namespace kinematics
+  {
+    /// Local variables at a point of the width line: u (0-2), u' (3-5),
+    /// theta1, theta3 (6, 7), their derivatives (8, 9), the strains (10-15);
+    /// y = eta E1 + u, q = exp([theta]x) E2 with theta = (theta1, 0, theta3).
+    constexpr int strip_local_variables = 16;
+
+    /**
+       * The plate energy density at one point of the width line, as a
+       * function of the local variables z (strip.md, helical Cauchy-Born
+       * kinematics): y = eta E1 + u, Fp = [y' | nu + kappa x y],
+       * q = exp([theta]x) E2, grad d = [q' | kappa x q].
+       */
+      template <typename Number>
+      Number
+      strip_energy(const std::array<Number, strip_local_variables> &z,
+                   const double                       eta,
+                   const materials::NaghdiPlateLaw &  law,
+                   const bool                         membrane_bending)
+      {
+        using V = std::array<Number, 3>;
+        auto cross = [](const V &a, const V &b) {
+          V c;
+          c[0] = a[1] * b[2] - a[2] * b[1];
+          c[1] = a[2] * b[0] - a[0] * b[2];
+          c[2] = a[0] * b[1] - a[1] * b[0];
+          return c;
+        };
+        const V y  = {{eta + z[0], z[1], z[2]}};
+        const V y1 = {{1. + z[3], z[4], z[5]}};
+        const V nu = {{z[10], z[11], z[12]}}, kappa = {{z[13], z[14], z[15]}};
+        Tensor<1, 3, Number> theta;
+        theta[0]                     = z[6];
+        theta[2]                     = z[7];
+        const Tensor<2, 3, Number> R = rotation_exp(theta);
+        const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
+        // q = R E2; q' = R (omega x E2), omega = T theta' (right trivialization).
+        V q, omega, q1;
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            q[i]     = R[i][1];
+            omega[i] = T[i][0] * z[8];
+            omega[i] += T[i][2] * z[9];
+          }
+        const V w = {{-omega[2], Number(0.), omega[0]}}; // omega x E2
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            q1[i] = R[i][0] * w[0];
+            q1[i] += R[i][2] * w[2];
+          }
+        V b = cross(kappa, y);
+        for (unsigned int i = 0; i < 3; ++i)
+          b[i] += nu[i];
+        const V    q2 = cross(kappa, q);
+        const auto s  = materials::plate_strains(y1, b, q, q1, q2);
+        return membrane_bending ? law.membrane_bending_energy(s) : law.shear_energy(s);
+      }
+
+  } // namespace kinematics
+} // namespace cosmo
+
+#endif
