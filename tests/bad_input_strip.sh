@@ -3,17 +3,10 @@
 # exit status 1. usage: bad_input_strip.sh <strip> <scratch dir>
 set -uo pipefail
 exe=$1 dir=$2
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 fail=0
-expect() { # expect <name> <grep pattern> <args...>
-  local name=$1 pattern=$2; shift 2
-  timeout 60 "$exe" "$@" > out.txt 2>&1; local status=$?
-  if [ $status -eq 1 ] && grep -q -- "$pattern" out.txt; then
-    echo "  ok    $name (status 1: $(grep -m1 -- "$pattern" out.txt | cut -c1-150))"
-  else
-    echo "  FAIL  $name: status $status (expected 1), output:"; cat out.txt; fail=1
-  fi
-}
+source "$here/expect.sh"
 strip() { printf 'subsection Strip\n%s\nend\nsubsection Output\n set Output directory = out\nend\n' "$1"; }
 strip ' set Width = -1' > width.prm
 expect "negative width" "Width" width.prm

@@ -1,0 +1,55 @@
+#ifndef cosmo_tests_reduced_rod_checks_h
+#define cosmo_tests_reduced_rod_checks_h
+
+// Checks shared by the part-1 and part-2 validation programs: both problems
+// are ReducedRodProblems.
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/assembly/reduced_rod_problem.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace cosmo_test
+{
+  /**
+   * The AD tangent (the bordered Jacobian with all strains free) against
+   * central differences of the residual at U moved off equilibrium, along a
+   * fixed direction: returns max |J v - FD| / max |J v|. h = 1e-6: truncation
+   * 1e-12 |R'''|, round-off eps |R|/h ~ 1e-10. Leaves all strains free and U
+   * perturbed in `U_off` (for further checks by the caller).
+   */
+  inline double
+  tangent_fd_error(cosmo::assembly::ReducedRodProblem &p,
+                   const dealii::Vector<double> &      solution,
+                   dealii::Vector<double> &            U_off)
+  {
+    using dealii::Vector;
+    p.set_free_strains({{true, true, true, true, true, true}});
+    const unsigned int n = p.n_unknowns();
+    U_off                = solution;
+    // Off equilibrium, so that every term of the Hessian is exercised.
+    for (unsigned int i = 0; i < n; ++i)
+      U_off[i] += 0.01 * std::sin(1.7 * i + 0.3);
+    AssertThrow(p.setup_jacobian(U_off) == 0, dealii::ExcInternalError());
+    Vector<double> v(n), Jv;
+    for (unsigned int i = 0; i < n; ++i)
+      v[i] = std::cos(0.9 * i);
+    const auto &free = p.free_strains();
+    p.bordered_system().vmult(Jv, v, std::vector<bool>(free.begin(), free.end()));
+    const double   h  = 1e-6;
+    Vector<double> Up = U_off, Um = U_off, Rp(n), Rm(n);
+    Up.add(h, v);
+    Um.add(-h, v);
+    p.residual(Up, Rp);
+    p.residual(Um, Rm);
+    Vector<double> d = Rp;
+    d -= Rm;
+    d /= 2 * h;
+    d -= Jv;
+    std::cout << "tangent vs FD of the residual, " << n << " unknowns\n";
+    return d.linfty_norm() / Jv.linfty_norm();
+  }
+} // namespace cosmo_test
+
+#endif
