@@ -447,6 +447,7 @@ namespace cosmo
     StripProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
     {
       located_events.push_back(e);
+      event_strains.push_back(strains_of(U));
       if (!write_output)
         return;
       const std::string tag = Utilities::int_to_string(located_events.size(), 2);
@@ -607,9 +608,15 @@ namespace cosmo
       j["stiffness"]                           = K;
       j["stability"]["n_negative_eigenvalues"] = last_state.n_negative;
       io::JSON ev = io::JSON::array();
-      for (const auto &e : located_events)
+      for (unsigned int k = 0; k < located_events.size(); ++k)
         {
-          io::JSON x           = io::JSON::object();
+          const auto &e        = located_events[k];
+          io::JSON    x        = io::JSON::object();
+          for (unsigned int c = 0; c < 6; ++c)
+            x["strains"][kinematics::strain_names[c]] = event_strains[k][c];
+          x["state_vtu"]       = "event-" + Utilities::int_to_string(k + 1, 2) + ".vtu";
+          if (e.kind == Event::Kind::branch_point)
+            x["mode_vtu"] = "event-" + Utilities::int_to_string(k + 1, 2) + "-mode.vtu";
           x["kind"]            = e.name();
           x["lambda"]          = e.lambda;
           x["branch"]          = e.branch;

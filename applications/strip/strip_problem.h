@@ -144,6 +144,7 @@ namespace cosmo
       assembly::ConstitutiveTable   table;
       bool                          use_arclength = false;
       std::vector<Event>            located_events;
+      std::vector<std::array<double, 6>> event_strains; ///< the critical strains
       std::vector<PathPoint>        visited;
       std::string                   linear_solver_name = "MUMPS";
       std::string                   output_directory;
