@@ -69,6 +69,33 @@ namespace cosmo
       return s;
     }
 
+    /**
+     * The measures of a grown plate (F = Fe G, plate-rod.md): with the
+     * in-plane growth G (2x2, of the reference plane) the elastic parts are
+     * Fp G^-1 and grad d G^-1, i.e. the columns a_j, d_j replaced by
+     * sum_i a_i (G^-1)_ij; the energy is then counted per grown area, det G
+     * times per reference area (the caller multiplies).
+     */
+    template <typename Number>
+    PlateStrains<Number>
+    grown_plate_strains(const std::array<Number, 3> &          a1,
+                        const std::array<Number, 3> &          a2,
+                        const std::array<Number, 3> &          d,
+                        const std::array<Number, 3> &          d1,
+                        const std::array<Number, 3> &          d2,
+                        const std::array<std::array<double, 2>, 2> &G_inv)
+    {
+      std::array<Number, 3> e1, e2, f1, f2;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          e1[c] = a1[c] * G_inv[0][0] + a2[c] * G_inv[1][0];
+          e2[c] = a1[c] * G_inv[0][1] + a2[c] * G_inv[1][1];
+          f1[c] = d1[c] * G_inv[0][0] + d2[c] * G_inv[1][0];
+          f2[c] = d1[c] * G_inv[0][1] + d2[c] * G_inv[1][1];
+        }
+      return plate_strains(e1, e2, d, f1, f2);
+    }
+
     class NaghdiPlateLaw
     {
     public:
