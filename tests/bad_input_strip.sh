@@ -25,4 +25,8 @@ expect "a path that asks for a strain twice (free and prescribed)" "either presc
 expect "a path waypoint that is not six numbers" "not six numbers" path.prm
 { strip ' set Width = 1'; printf 'subsection Constitutive table\n set Enabled = true\n set First strain = kappa3\n set Second strain = kappa3\nend\n'; } > table.prm
 expect "a table that asks for a strain twice" "a strain other than the first" table.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = kappa3\nend\nsubsection Constitutive table\n set Enabled = true\nend\n'; } > tablefree.prm
+expect "a table axis that is a free strain" "a prescribed strain: this one is free" tablefree.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Strains = 0, 0, 1.1, 0, 0, 0.2\n set Free strains = nu3\nend\n'; } > strainfree.prm
+expect "a strain both free and set in Strains" "is in 'Free strains' and set here" strainfree.prm
 exit $fail

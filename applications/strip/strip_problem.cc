@@ -112,6 +112,14 @@ namespace cosmo
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
       table.parse_parameters(prm);
+      if (table.enabled())
+        for (const unsigned int k : {table.first, table.second})
+          if (strain_is_free[k])
+            throw io::InputError("Constitutive table",
+                                 k == table.first ? "First strain" : "Second strain",
+                                 kinematics::strain_names[k],
+                                 "a prescribed strain: this one is free ('Rod strains / Mode' "
+                                 "or 'Free strains'), so its value would be ignored");
       prm.enter_subsection("Path following");
       use_arclength = prm.get("Method") == "arclength";
       prm.leave_subsection();
@@ -188,6 +196,25 @@ namespace cosmo
     {
       length = strip_width;
       force  = law.young * strip_width * thickness;
+    }
+
+    void
+    StripProblem::gauge_weights(std::array<double, 6> &w) const
+    {
+      const double W = strip_width;
+      // int u (L^2), int eta u (L^3), int theta1 (L)
+      w = {{1 / (W * W), 1 / (W * W), 1 / (W * W), 1 / (W * W * W), 1 / (W * W * W), 1 / W}};
+    }
+
+    int
+    StripProblem::load_derivative(const Vector<double> &, const double lambda, Vector<double> &dR)
+    {
+      dR.reinit(n_unknowns());
+      const auto rate = prescribed_strain_rate(lambda);
+      for (unsigned int k = 0; k < n_strains; ++k)
+        if (!strain_is_free[k])
+          dR[n_field + n_gauge + k] = -rate[k];
+      return 0;
     }
 
     int
@@ -567,8 +594,11 @@ namespace cosmo
               io::PhaseTimer::Scope scope(timer, "constitutive table");
               write_output = false; // no per-point files
               set_load_parameter(1.);
-              table.run(target_strains,
+              Vector<double> checkpoint;
+              table.run(target_strains, strains_of(solution),
                         [this](const std::array<double, 6> &e) { return resolve(e); },
+                        [&]() { checkpoint = solution; },
+                        [&]() { solution = checkpoint; },
                         output_directory,
                         [this](const std::string &m) { say(m); });
               write_output = true;

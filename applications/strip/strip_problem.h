@@ -130,6 +130,12 @@ namespace cosmo
                      FieldIntegrals &             out) override;
       void
       residual_scales(double &force, double &length) const override;
+      /// The strip's gauge rows are integrals over the width line: w^2, w^3, w.
+      void
+      gauge_weights(std::array<double, 6> &w) const override;
+      /// Exact: only the prescribed strain rows depend on t (no growth here).
+      int
+      load_derivative(const Vector<double> &U, double lambda, Vector<double> &dR) override;
 
     private:
       // Parameters

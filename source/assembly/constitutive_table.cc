@@ -66,7 +66,10 @@ namespace cosmo
 
     void
     ConstitutiveTable::run(const std::array<double, 6> &                   base,
+                           const std::array<double, 6> &                   start,
                            const Resolver &                                 resolve,
+                           const std::function<void()> &                    save,
+                           const std::function<void()> &                    restore,
                            const std::string &                              directory,
                            const std::function<void(const std::string &)> &progress) const
     {
@@ -87,7 +90,8 @@ namespace cosmo
         for (unsigned int b = a; b < 6; ++b)
           table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
 
-      std::array<double, 6> last = base;
+      std::array<double, 6> last = start;
+      save();
       unsigned int          n_failed = 0;
       for (unsigned int i = 0; i < n1; ++i)
         for (unsigned int jj = 0; jj < n2; ++jj)
@@ -100,6 +104,7 @@ namespace cosmo
             bool            ok = false;
             for (const unsigned int substeps : {1u, 4u, 16u})
               {
+                restore(); // from the last converged point
                 try
                   {
                     for (unsigned int k = 1; k <= substeps; ++k)
@@ -119,6 +124,7 @@ namespace cosmo
             std::vector<double> row = {e[first], e[second], ok ? 1. : 0.};
             if (ok)
               {
+                save();
                 last         = e;
                 converged[p] = 1;
                 energy[p]    = s.energy;
@@ -135,7 +141,10 @@ namespace cosmo
                     row.push_back(s.stiffness(a, b));
               }
             else
-              ++n_failed;
+              {
+                ++n_failed;
+                restore();
+              }
             row.resize(table.n_columns(), NAN);
             table.add_row(row);
           }

@@ -51,6 +51,17 @@ namespace cosmo
         for (unsigned int k = 0; k < 6; ++k)
           if (kinematics::strain_names[k] == name)
             strain_is_free[k] = true;
+      if (mode == "prescribed strains")
+        {
+          const auto ref = kinematics::RodStrains::reference().as_array();
+          for (unsigned int k = 0; k < 6; ++k)
+            if (strain_is_free[k] && target_strains[k] != ref[k])
+              throw io::InputError("Rod strains", "Strains", prm.get("Strains"),
+                                   kinematics::strain_names[k] +
+                                     " is in 'Free strains' and set here to a value other "
+                                     "than its reference: a strain is either prescribed or "
+                                     "free (leave it at the reference value)");
+        }
       waypoints.clear();
       const std::string path_text = prm.get("Path");
       for (const auto &point : Utilities::split_string_list(path_text, ';'))
@@ -261,11 +272,43 @@ namespace cosmo
       w.reinit(n_unknowns());
       for (unsigned int i = 0; i < n_field; ++i)
         w[i] = D / F;
+      std::array<double, 6> g;
+      gauge_weights(g);
       for (unsigned int k = 0; k < n_gauge; ++k)
-        w[n_field + k] = k < 3 ? 1. / std::pow(D, 3) : 1. / std::pow(D, 4);
+        w[n_field + k] = g[k];
       for (unsigned int k = 0; k < n_strains; ++k)
         w[n_field + n_gauge + k] =
           strain_is_free[k] ? (k < 3 ? 1. / F : 1. / (F * D)) : (k < 3 ? 1. : D);
+    }
+
+    void
+    ReducedRodProblem::gauge_weights(std::array<double, 6> &w) const
+    {
+      double F = 1, D = 1;
+      residual_scales(F, D);
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        w[k] = k < 3 ? 1. / std::pow(D, 3) : 1. / std::pow(D, 4);
+    }
+
+    std::array<double, 6>
+    ReducedRodProblem::prescribed_strain_rate(const double t) const
+    {
+      const auto            ref = kinematics::RodStrains::reference().as_array();
+      std::array<double, 6> r{};
+      if (waypoints.empty())
+        {
+          for (unsigned int k = 0; k < n_strains; ++k)
+            r[k] = target_strains[k] - ref[k];
+          return r;
+        }
+      if (t < 0 || t > 1)
+        return r;
+      const unsigned int K   = waypoints.size();
+      const unsigned int seg = std::min(static_cast<unsigned int>(t * K), K - 1);
+      const auto &       a   = seg == 0 ? ref : waypoints[seg - 1];
+      for (unsigned int k = 0; k < n_strains; ++k)
+        r[k] = K * (waypoints[seg][k] - a[k]);
+      return r;
     }
 
     ReducedRodState

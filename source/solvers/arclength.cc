@@ -304,7 +304,8 @@ namespace cosmo
       if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
         throw NewtonFailure("the Jacobian cannot be set up at a converged state");
       s.n_negative = problem.n_negative_eigenvalues();
-      problem.solve_with_jacobian(Rl, z); // z = J^-1 R_lambda; tangent (-z, 1) up to scale
+      if (problem.solve_with_jacobian(Rl, z) != 0) // z = J^-1 R_lambda; tangent (-z, 1)
+        throw NewtonFailure("the tangent solve failed at a converged state");
       z *= -1.;
       const double tl = 1. / std::sqrt(1. + norm2(z));
       s.tU            = z;
@@ -423,7 +424,8 @@ namespace cosmo
               if (e.kind == BifurcationProblem::Event::Kind::branch_point)
                 {
                   problem.set_load_parameter(lo.lambda);
-                  problem.setup_jacobian(lo.U);
+                  AssertThrow(problem.setup_jacobian(lo.U) == 0,
+                              ExcMessage("the Jacobian cannot be set up at a located event"));
                   e.eigenvalue = smallest_eigenvalue(problem, mask, phi);
                   // The mode in the arclength norm: unit theta-length.
                   phi /= std::sqrt(norm2(phi));

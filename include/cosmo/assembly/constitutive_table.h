@@ -42,9 +42,18 @@ namespace cosmo
       using Resolver = std::function<ReducedRodState(const std::array<double, 6> &)>;
 
       /// Sweep the grid around `base` (the other strains) and write the files.
+      /**
+       * `start`: the strains of the problem's current state. `save` and
+       * `restore` keep and bring back that state, so that a failed attempt
+       * at a point is retried (and the next point started) from the last
+       * converged point, not from a half-way substep.
+       */
       void
       run(const std::array<double, 6> &base,
+          const std::array<double, 6> &start,
           const Resolver &             resolve,
+          const std::function<void()> &save,
+          const std::function<void()> &restore,
           const std::string &          directory,
           const std::function<void(const std::string &)> &progress) const;
 

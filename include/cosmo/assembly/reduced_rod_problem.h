@@ -159,6 +159,19 @@ namespace cosmo
       residual_scales(double &force, double &length) const = 0;
 
       /**
+       * Weights of the six gauge rows C U (their natural sizes): by default
+       * those of integrals over a 2D section of size D, 1/D^3 for the
+       * translations and 1/D^4 for the rotations; a problem whose rows are
+       * other integrals overrides this.
+       */
+      virtual void
+      gauge_weights(std::array<double, 6> &w) const;
+
+      /// d(prescribed strains)/dt at t (the path's slope; 0 beyond its end).
+      std::array<double, 6>
+      prescribed_strain_rate(double t) const;
+
+      /**
        * Set up the bordered system once the field exists: the sparsity of
        * E_UU (n_field x n_field entries; the gauge rows are added here) and
        * the six constraint rows C (integrals of the shape functions).
