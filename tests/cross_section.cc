@@ -34,7 +34,8 @@ namespace
   {
     ParameterHandler prm;
     rod::CrossSectionProblem::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text + "\nsubsection Nonlinear solver\n set Relative tolerance = 1e-12\nend\n");
+    // The harness' tight tolerance first, so that a test can override it.
+    prm.parse_input_from_string("subsection Nonlinear solver\n set Relative tolerance = 1e-12\nend\n" + prm_text);
     auto p = std::make_unique<rod::CrossSectionProblem>();
     p->parse_parameters(prm);
     p->setup_system();
@@ -655,6 +656,35 @@ namespace
     check_close("no kappa1, twist or shear (symmetry about X2 = 0)", others, 0, 0, 1e-10);
   }
 
+  // The shared arclength driver on part 1: with linear axial growth every
+  // state of the path is the exact natural state kappa2 = -g1 t (anchor 2),
+  // so the arclength path must lie on it, stay stable and find no event.
+  void
+  arclength_linear_growth()
+  {
+    auto p = make_problem(section(" set Shape = circle\n set Radius = 1", 2) +
+                          material(1, "1", 1.0, 0.3, " set Growth kind = axial\n set Growth factor = 1 + 0.3*x") +
+                          strains_block("natural shape", reference_strains) +
+                          "subsection Path following\n set Method = arclength\nend\n"
+                          "subsection Arclength continuation\n set Parameter range = 0, 1\n"
+                          " set Initial step = 0.1\n set Maximum step = 0.3\nend\n");
+    p->solve();
+    double       worst = 0, t_max = 0;
+    unsigned int unstable = 0;
+    for (const auto &pt : p->path())
+      {
+        worst = std::max({worst, std::abs(pt.strains[4] + 0.3 * pt.t), std::abs(pt.strains[2] - 1)});
+        unstable += pt.n_negative != 0;
+        t_max = std::max(t_max, pt.t);
+      }
+    std::cout << p->path().size() << " states up to t = " << t_max << "\n";
+    check_close("every state on kappa2 = -0.3 t, nu3 = 1", worst, 0, 0, 1e-9);
+    check("the path reaches t = 1", t_max >= 1);
+    check("stable everywhere, no event (" + std::to_string(unstable) + " unstable, " +
+            std::to_string(p->events().size()) + " events)",
+          unstable == 0 && p->events().empty());
+  }
+
   // A section given as a gmsh .geo (meshed by the application) reproduces the
   // built-in section of the same shape: the 2 x 1 rectangle, unstructured
   // quadrilaterals against the built-in structured mesh. Both converge to the
@@ -715,7 +745,8 @@ main(int argc, char **argv)
     {"mesh_convergence", mesh_convergence},
     {"bilayer_natural_curvature", bilayer_natural_curvature},
     {"gmsh_section", gmsh_section},
-    {"gmsh_geo_section", gmsh_geo_section}};
+    {"gmsh_geo_section", gmsh_geo_section},
+    {"arclength_linear_growth", arclength_linear_growth}};
   if (argc == 3)
     data_directory = argv[2];
   return cosmo_test::run_case("test_cross_section", "[tests/data directory]", cases, argc, argv, 2, 3);

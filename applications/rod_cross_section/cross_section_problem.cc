@@ -100,6 +100,7 @@ namespace cosmo
                         "gives the stability indicator) or UMFPACK (LU).");
       prm.leave_subsection();
       solvers::ContinuationSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
 
       prm.enter_subsection("Output");
       prm.declare_entry("Output directory", "output/rod_cross_section", Patterns::Anything(),
@@ -139,6 +140,7 @@ namespace cosmo
       linear_solver_name = prm.get("Linear solver");
       prm.leave_subsection();
       continuation_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
 
       prm.enter_subsection("Output");
       output_directory     = prm.get("Output directory");
@@ -735,10 +737,23 @@ namespace cosmo
     CrossSectionState
     CrossSectionProblem::solve()
     {
+      if (arclength_settings.enabled)
+        {
+          solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
+          driver.progress = [this](const std::string &s) { say(s); };
+          driver.run(*this, solution, 0.);
+          return last_state;
+        }
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
       driver.run(*this, solution);
       return last_state;
+    }
+
+    void
+    CrossSectionProblem::located_event(const Event &e, const Vector<double> &, const Vector<double> *)
+    {
+      located_events.push_back(e);
     }
 
     void
@@ -771,6 +786,7 @@ namespace cosmo
           last_state.n_negative = -1;
         }
       const CrossSectionState &s = last_state;
+      visited.push_back({report.t, report.branch, s.strains, s.n_negative});
 
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8)
@@ -790,8 +806,9 @@ namespace cosmo
       if (!write_output)
         return;
       io::PhaseTimer::Scope scope(timer, "output");
-      std::vector<double> row = {double(report.step), report.t, double(report.newton_iterations),
-                                 report.residual_norm, double(report.cutbacks), s.energy};
+      std::vector<double> row = {double(report.step), double(report.branch), report.t,
+                                 double(report.newton_iterations), report.residual_norm,
+                                 double(report.cutbacks), s.energy};
       row.insert(row.end(), s.strains.begin(), s.strains.end());
       row.insert(row.end(), s.resultants.begin(), s.resultants.end());
       row.insert(row.end(), s.multipliers.begin(), s.multipliers.end());
@@ -1182,6 +1199,18 @@ namespace cosmo
       helix["axis"]        = JSON::array({h.axis[0], h.axis[1], h.axis[2]});
       helix["curvature"]   = h.curvature;
       helix["torsion"]     = h.torsion;
+      JSON ev                = JSON::array();
+      for (const auto &e : located_events)
+        {
+          JSON x                 = JSON::object();
+          x["kind"]              = e.name();
+          x["lambda"]            = e.lambda;
+          x["branch"]            = e.branch;
+          x["n_negative_before"] = e.n_negative_before;
+          x["n_negative_after"]  = e.n_negative_after;
+          ev.push_back(x);
+        }
+      j["events"]            = ev;
       j["newton_iterations"] = total_newton_iterations;
       j["timings"]           = timer.to_json();
       io::write_file_atomically(output_directory + "/summary.json",
@@ -1226,7 +1255,7 @@ namespace cosmo
             fixed(surface_length[l]) + ")");
 
       steps_table = io::CSVTable();
-      for (const auto &c : {"step", "t", "newton_iterations", "residual", "cutbacks"})
+      for (const auto &c : {"step", "branch", "t", "newton_iterations", "residual", "cutbacks"})
         steps_table.add_column(c);
       steps_table.add_column("energy", "E L^2");
       for (const auto &s : kinematics::strain_names)

@@ -70,15 +70,6 @@ namespace cosmo
       solvers::ContinuationSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
       assembly::ConstitutiveTable::declare_parameters(prm);
-      prm.enter_subsection("Path following");
-      prm.declare_entry("Method", "natural parameter",
-                        Patterns::Selection("natural parameter|arclength"),
-                        "natural parameter: the load parameter t goes from 0 to 1 "
-                        "(section Continuation); arclength: pseudo-arclength continuation "
-                        "in t with the stability count at every step, location of folds and "
-                        "branch points, and branch switching (section Arclength "
-                        "continuation; set its Parameter range, e.g. 0, 1).");
-      prm.leave_subsection();
       prm.enter_subsection("Output");
       prm.declare_entry("Output directory", "output/strip", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, "
@@ -120,9 +111,6 @@ namespace cosmo
                                  kinematics::strain_names[k],
                                  "a prescribed strain: this one is free ('Rod strains / Mode' "
                                  "or 'Free strains'), so its value would be ignored");
-      prm.enter_subsection("Path following");
-      use_arclength = prm.get("Method") == "arclength";
-      prm.leave_subsection();
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       prm.leave_subsection();
@@ -603,7 +591,7 @@ namespace cosmo
                         [this](const std::string &m) { say(m); });
               write_output = true;
             }
-          else if (use_arclength)
+          else if (arclength_settings.enabled)
             follow_branches();
           else
             solve();

@@ -148,7 +148,6 @@ namespace cosmo
       solvers::ContinuationSettings continuation_settings;
       solvers::ArclengthSettings    arclength_settings;
       assembly::ConstitutiveTable   table;
-      bool                          use_arclength = false;
       std::vector<Event>            located_events;
       std::vector<std::array<double, 6>> event_strains; ///< the critical strains
       std::vector<PathPoint>        visited;

@@ -37,6 +37,15 @@ namespace cosmo
     void
     ArclengthSettings::declare_parameters(ParameterHandler &prm)
     {
+      prm.enter_subsection("Path following");
+      prm.declare_entry("Method", "natural parameter",
+                        Patterns::Selection("natural parameter|arclength"),
+                        "natural parameter: the load parameter t goes from 0 to 1 "
+                        "(section Continuation); arclength: pseudo-arclength continuation "
+                        "in t with the stability count at every step, location of folds and "
+                        "branch points, and branch switching (section Arclength "
+                        "continuation; set its Parameter range, e.g. 0, 1).");
+      prm.leave_subsection();
       prm.enter_subsection("Arclength continuation");
       prm.declare_entry("Initial step", "0.05", Patterns::Double(1e-14),
                         "First arclength step (ds^2 = theta |dU|^2 + dlambda^2).");
@@ -78,6 +87,9 @@ namespace cosmo
     void
     ArclengthSettings::parse_parameters(ParameterHandler &prm)
     {
+      prm.enter_subsection("Path following");
+      enabled = prm.get("Method") == "arclength";
+      prm.leave_subsection();
       prm.enter_subsection("Arclength continuation");
       initial_step     = prm.get_double("Initial step");
       minimum_step     = prm.get_double("Minimum step");
@@ -391,8 +403,11 @@ namespace cosmo
                           found = true;
                           break;
                         }
-                      catch (NewtonFailure &)
-                        {}
+                      catch (NewtonFailure &failure)
+                        {
+                          say(std::string("  event location: the corrector failed inside the "
+                                          "step (") + failure.what() + ")");
+                        }
                     }
                   if (!found)
                     break; // keep the bracket reached so far
@@ -435,7 +450,11 @@ namespace cosmo
               std::ostringstream m;
               m << std::setprecision(10) << "  " << e.name() << " on branch " << branch
                 << " at lambda = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
-                << " -> " << e.n_negative_after << ", located to arclength " << e.arclength << ")";
+                << " -> " << e.n_negative_after << ", located to arclength " << e.arclength
+                << (e.arclength > 2 * settings.event_tolerance ?
+                      "; NOT refined to the tolerance: the corrector failed inside the step" :
+                      "")
+                << ")";
               say(m.str());
               const bool simple = std::abs(e.n_negative_after - e.n_negative_before) == 1;
               if (e.kind == BifurcationProblem::Event::Kind::branch_point && may_switch && simple)

@@ -111,6 +111,7 @@ namespace cosmo
 
     struct ArclengthSettings
     {
+      bool         enabled            = false; ///< "Path following / Method = arclength"
       double       initial_step       = 0.05;
       double       minimum_step       = 1e-8;
       double       maximum_step       = 0.2;
