@@ -17,7 +17,8 @@ using namespace cosmo;
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // All cores for the assembly (as the application does).
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   std::cout << "strip w = 1, h = 0.02, twist to kappa3 = 0.8 at zero axial force, 40 states, Q2\n"
             << std::setw(7) << "cells" << std::setw(7) << "DoFs" << std::setw(9) << "states"
             << std::setw(10) << "Newton" << std::setw(11) << "assembly" << std::setw(11)

@@ -3,6 +3,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -205,6 +206,44 @@ namespace cosmo
       return 0;
     }
 
+    namespace
+    {
+      /// Per-thread work space of the strip assembly (WorkStream scratch).
+      struct StripScratch
+      {
+        StripScratch(const FiniteElement<1> &fe, const Quadrature<1> &full, const Quadrature<1> &reduced)
+          : fev_full(fe, full, update_values | update_gradients | update_quadrature_points | update_JxW_values)
+          , fev_reduced(fe, reduced,
+                        update_values | update_gradients | update_quadrature_points | update_JxW_values)
+          , U_local(fe.n_dofs_per_cell())
+        {}
+        StripScratch(const StripScratch &o)
+          : StripScratch(o.fev_full.get_fe(), o.fev_full.get_quadrature(), o.fev_reduced.get_quadrature())
+        {}
+        FEValues<1>                               fev_full, fev_reduced;
+        std::vector<double>                       U_local;
+        std::array<double, n_local>               z, g;
+        std::array<double, n_local * n_local>     H;
+      };
+
+      /// One cell's contributions (WorkStream copy data).
+      struct StripCellContribution
+      {
+        explicit StripCellContribution(const unsigned int dpc)
+          : idx(dpc)
+          , r(dpc)
+          , K(dpc, dpc)
+          , B(dpc, 6)
+          , E(6, 6)
+        {}
+        std::vector<types::global_dof_index> idx;
+        Vector<double>                       r;
+        FullMatrix<double>                   K, B, E;
+        double                               energy = 0;
+        std::array<double, 6>                resultants{};
+      };
+    } // namespace
+
     int
     StripProblem::assemble_field(const Vector<double> &       U,
                                  const std::array<double, 6> &e,
@@ -213,101 +252,106 @@ namespace cosmo
                                  FullMatrix<double> &         E,
                                  FieldIntegrals &             out)
     {
-      const unsigned int                   dpc = fe->n_dofs_per_cell();
-      std::vector<types::global_dof_index> idx(dpc);
-      std::vector<unsigned int>            comp(dpc);
+      const unsigned int        dpc = fe->n_dofs_per_cell();
+      std::vector<unsigned int> comp(dpc);
       for (unsigned int i = 0; i < dpc; ++i)
         comp[i] = fe->system_to_component_index(i).first;
-      FullMatrix<double> K(dpc, dpc), B(dpc, n_strains);
-      Vector<double>     r(dpc);
-      std::vector<double> U_local(dpc);
-
       const QGauss<1> full(degree + 1), reduced(reduced_shear ? degree : degree + 1);
-      FEValues<1>     fev_full(*fe, full,
-                           update_values | update_gradients | update_quadrature_points |
-                             update_JxW_values);
-      FEValues<1>     fev_reduced(*fe, reduced,
-                              update_values | update_gradients | update_quadrature_points |
-                                update_JxW_values);
 
-      std::array<double, n_local>           z, g;
-      std::array<double, n_local * n_local> H;
-      out.energy = 0;
-      out.resultants.fill(0.);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          cell->get_dof_indices(idx);
-          for (unsigned int i = 0; i < dpc; ++i)
-            U_local[i] = U[idx[i]];
-          r = 0;
-          if (jacobian)
-            {
-              K = 0;
-              B = 0;
-            }
-          for (const bool membrane_bending : {true, false})
-            {
-              FEValues<1> &fev = membrane_bending ? fev_full : fev_reduced;
-              fev.reinit(cell);
-              for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
-                {
-                  z.fill(0.);
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    {
-                      const auto [v, d] = local_indices(comp[i]);
-                      z[v] += U_local[i] * fev.shape_value(i, q);
-                      z[d] += U_local[i] * fev.shape_grad(i, q)[0];
-                    }
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    z[10 + k] = e[k];
-                  const double eta = fev.quadrature_point(q)[0];
-                  const double dA  = fev.JxW(q);
-                  double       W   = 0;
-                  materials::internal::differentiate<n_local>(
-                    z,
-                    [&](const auto &x) { return kinematics::strip_energy(x, eta, law, membrane_bending); },
-                    jacobian,
-                    W,
-                    g,
-                    H);
-                  out.energy += W * dA;
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    out.resultants[k] += g[10 + k] * dA;
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    {
-                      const auto [vi, di] = local_indices(comp[i]);
-                      const double Ni = fev.shape_value(i, q), Di = fev.shape_grad(i, q)[0];
-                      r[i] += (g[vi] * Ni + g[di] * Di) * dA;
-                      if (!jacobian)
-                        continue;
-                      for (unsigned int j = 0; j < dpc; ++j)
-                        {
-                          const auto [vj, dj] = local_indices(comp[j]);
-                          const double Nj = fev.shape_value(j, q), Dj = fev.shape_grad(j, q)[0];
-                          K(i, j) += (H[n_local * vi + vj] * Ni * Nj + H[n_local * vi + dj] * Ni * Dj +
+      // Cells are independent: the worker runs on all cores, the copier adds
+      // the contributions in cell order (so sums are reproducible).
+      auto worker = [&](const typename DoFHandler<1>::active_cell_iterator &cell,
+                        StripScratch &                                      sc,
+                        StripCellContribution &                             c) {
+        cell->get_dof_indices(c.idx);
+        for (unsigned int i = 0; i < dpc; ++i)
+          sc.U_local[i] = U[c.idx[i]];
+        c.r      = 0;
+        c.energy = 0;
+        c.resultants.fill(0.);
+        if (jacobian)
+          {
+            c.K = 0;
+            c.B = 0;
+            c.E = 0;
+          }
+        auto &z = sc.z;
+        auto &g = sc.g;
+        auto &H = sc.H;
+        for (const bool membrane_bending : {true, false})
+          {
+            FEValues<1> &fev = membrane_bending ? sc.fev_full : sc.fev_reduced;
+            fev.reinit(cell);
+            for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
+              {
+                z.fill(0.);
+                for (unsigned int i = 0; i < dpc; ++i)
+                  {
+                    const auto [v, d] = local_indices(comp[i]);
+                    z[v] += sc.U_local[i] * fev.shape_value(i, q);
+                    z[d] += sc.U_local[i] * fev.shape_grad(i, q)[0];
+                  }
+                for (unsigned int k = 0; k < n_strains; ++k)
+                  z[10 + k] = e[k];
+                const double eta = fev.quadrature_point(q)[0];
+                const double dA  = fev.JxW(q);
+                double       W   = 0;
+                materials::internal::differentiate<n_local>(
+                  z,
+                  [&](const auto &x) { return kinematics::strip_energy(x, eta, law, membrane_bending); },
+                  jacobian,
+                  W,
+                  g,
+                  H);
+                c.energy += W * dA;
+                for (unsigned int k = 0; k < n_strains; ++k)
+                  c.resultants[k] += g[10 + k] * dA;
+                for (unsigned int i = 0; i < dpc; ++i)
+                  {
+                    const auto [vi, di] = local_indices(comp[i]);
+                    const double Ni = fev.shape_value(i, q), Di = fev.shape_grad(i, q)[0];
+                    c.r[i] += (g[vi] * Ni + g[di] * Di) * dA;
+                    if (!jacobian)
+                      continue;
+                    for (unsigned int j = 0; j < dpc; ++j)
+                      {
+                        const auto [vj, dj] = local_indices(comp[j]);
+                        const double Nj = fev.shape_value(j, q), Dj = fev.shape_grad(j, q)[0];
+                        c.K(i, j) += (H[n_local * vi + vj] * Ni * Nj + H[n_local * vi + dj] * Ni * Dj +
                                       H[n_local * di + vj] * Di * Nj + H[n_local * di + dj] * Di * Dj) *
                                      dA;
-                        }
-                      for (unsigned int k = 0; k < n_strains; ++k)
-                        B(i, k) += (H[n_local * vi + 10 + k] * Ni + H[n_local * di + 10 + k] * Di) * dA;
-                    }
-                  if (jacobian)
+                      }
                     for (unsigned int k = 0; k < n_strains; ++k)
-                      for (unsigned int l = 0; l < n_strains; ++l)
-                        E(k, l) += H[n_local * (10 + k) + 10 + l] * dA;
-                }
-            }
-          if (R)
+                      c.B(i, k) += (H[n_local * vi + 10 + k] * Ni + H[n_local * di + 10 + k] * Di) * dA;
+                  }
+                if (jacobian)
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    for (unsigned int l = 0; l < n_strains; ++l)
+                      c.E(k, l) += H[n_local * (10 + k) + 10 + l] * dA;
+              }
+          }
+      };
+
+      out.energy = 0;
+      out.resultants.fill(0.);
+      auto copier = [&](const StripCellContribution &c) {
+        out.energy += c.energy;
+        for (unsigned int k = 0; k < n_strains; ++k)
+          out.resultants[k] += c.resultants[k];
+        if (R)
+          for (unsigned int i = 0; i < dpc; ++i)
+            (*R)[c.idx[i]] += c.r[i];
+        if (jacobian)
+          {
+            system->matrix.add(c.idx, c.K);
             for (unsigned int i = 0; i < dpc; ++i)
-              (*R)[idx[i]] += r[i];
-          if (jacobian)
-            {
-              system->matrix.add(idx, K);
-              for (unsigned int i = 0; i < dpc; ++i)
-                for (unsigned int k = 0; k < n_strains; ++k)
-                  system->border_columns[k][idx[i]] += B(i, k);
-            }
-        }
+              for (unsigned int k = 0; k < n_strains; ++k)
+                system->border_columns[k][c.idx[i]] += c.B(i, k);
+            E.add(1., c.E);
+          }
+      };
+      WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
+                      StripScratch(*fe, full, reduced), StripCellContribution(dpc));
       out.min_elastic_J = 0;
       return 0;
     }
