@@ -270,7 +270,7 @@ namespace
   // helicoid loses stability at a critical twist; the driver detects it,
   // locates it, switches to the bifurcated branch and follows it.
   double
-  critical_twist(const unsigned int cells, std::vector<strip::StripProblem::PathPoint> *path,
+  critical_twist(const unsigned int cells, std::vector<assembly::ReducedRodProblem::PathPoint> *path,
                  std::vector<solvers::BifurcationProblem::Event> *events)
   {
     const std::string arclength =
@@ -290,7 +290,7 @@ namespace
   void
   twist_buckling()
   {
-    std::vector<strip::StripProblem::PathPoint>     path;
+    std::vector<assembly::ReducedRodProblem::PathPoint>     path;
     std::vector<solvers::BifurcationProblem::Event> events;
     const double tau_c = critical_twist(40, &path, &events);
     const double tau_c_coarse = critical_twist(20, nullptr, nullptr);
@@ -321,7 +321,7 @@ namespace
     // energy and stretch at the same twist; they are stable (to the next
     // branch point of the primary branch); their energy is below the
     // primary (unstable) branch's at the same twist.
-    std::map<unsigned int, std::vector<strip::StripProblem::PathPoint>> branches;
+    std::map<unsigned int, std::vector<assembly::ReducedRodProblem::PathPoint>> branches;
     for (const auto &pt : path)
       branches[pt.branch].push_back(pt);
     check("three branches followed", branches.size() == 3);
@@ -339,11 +339,11 @@ namespace
     unsigned int n_checked = 0, wrong = 0, above = 0;
     for (const auto &pt : branches[1])
       {
-        if (pt.lambda <= events[0].lambda + 0.02 || pt.lambda >= lambda_2)
+        if (pt.t <= events[0].lambda + 0.02 || pt.t >= lambda_2)
           continue;
         ++n_checked;
         wrong += pt.n_negative != 0;
-        auto primary = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2 * pt.lambda}},
+        auto primary = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2 * pt.t}},
                                   "subsection Rod strains\n set Free strains = nu3\nend\n", 40);
         const auto flat = primary->solve();
         // The comparison is with the flat (primary, unstable) branch.

@@ -557,17 +557,7 @@ namespace cosmo
         minJ = std::min(minJ, c.min_J);
         for (unsigned int k = 0; k < n_strains; ++k)
           resultants[k] += c.resultants[k];
-        if (R)
-          for (unsigned int i = 0; i < dpc; ++i)
-            (*R)[c.idx[i]] += c.r[i];
-        if (jacobian)
-          {
-            system->matrix.add(c.idx, c.K);
-            for (unsigned int i = 0; i < dpc; ++i)
-              for (unsigned int k = 0; k < n_strains; ++k)
-                system->border_columns[k][c.idx[i]] += c.B(i, k);
-            E.add(1., c.E);
-          }
+        add_local_contribution(c.idx, c.r, c.K, c.B, &c.E, R, jacobian, E);
       };
       WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
                       AssemblyScratch(*mapping, *fe, quadrature), CellContribution(dpc));
@@ -692,16 +682,8 @@ namespace cosmo
                     for (unsigned int l = 0; l < n_strains; ++l)
                       E(k, l) += dot6(D[l], CD[k]) * dS;
                 }
-              if (R)
-                for (unsigned int i = 0; i < dpc; ++i)
-                  (*R)[out.idx[i]] += out.r[i];
-              if (jacobian)
-                {
-                  system->matrix.add(out.idx, out.K);
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    for (unsigned int k = 0; k < n_strains; ++k)
-                      system->border_columns[k][out.idx[i]] += out.B(i, k);
-                }
+              // The 6x6 block of the surface went into E point by point.
+              add_local_contribution(out.idx, out.r, out.K, out.B, nullptr, R, jacobian, E);
             }
         }
 
@@ -750,11 +732,6 @@ namespace cosmo
       return last_state;
     }
 
-    void
-    CrossSectionProblem::located_event(const Event &e, const Vector<double> &, const Vector<double> *)
-    {
-      located_events.push_back(e);
-    }
 
     void
     CrossSectionProblem::say(const std::string &line)
@@ -786,7 +763,7 @@ namespace cosmo
           last_state.n_negative = -1;
         }
       const CrossSectionState &s = last_state;
-      visited.push_back({report.t, report.branch, s.strains, s.n_negative});
+      record_state(report, s);
 
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8)

@@ -96,27 +96,6 @@ namespace cosmo
       // ContinuationProblem
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
-      void
-      located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
-      /// (t, strains, stability count) of every converged state of the run.
-      struct PathPoint
-      {
-        double                t;
-        unsigned int          branch;
-        std::array<double, 6> strains;
-        int                   n_negative;
-      };
-      const std::vector<PathPoint> &
-      path() const
-      {
-        return visited;
-      }
-      /// Events located by arclength continuation ("Path following / Method = arclength").
-      const std::vector<Event> &
-      events() const
-      {
-        return located_events;
-      }
 
     private:
       // Parameters
@@ -127,8 +106,6 @@ namespace cosmo
       solvers::NewtonSettings        newton_settings;
       solvers::ContinuationSettings  continuation_settings;
       solvers::ArclengthSettings     arclength_settings;
-      std::vector<Event>             located_events;
-      std::vector<PathPoint>         visited;
       std::string                    linear_solver_name;
       std::string                    output_directory;
       bool                           write_output = false;

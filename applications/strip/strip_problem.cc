@@ -338,17 +338,7 @@ namespace cosmo
         out.energy += c.energy;
         for (unsigned int k = 0; k < n_strains; ++k)
           out.resultants[k] += c.resultants[k];
-        if (R)
-          for (unsigned int i = 0; i < dpc; ++i)
-            (*R)[c.idx[i]] += c.r[i];
-        if (jacobian)
-          {
-            system->matrix.add(c.idx, c.K);
-            for (unsigned int i = 0; i < dpc; ++i)
-              for (unsigned int k = 0; k < n_strains; ++k)
-                system->border_columns[k][c.idx[i]] += c.B(i, k);
-            E.add(1., c.E);
-          }
+        add_local_contribution(c.idx, c.r, c.K, c.B, &c.E, R, jacobian, E);
       };
       WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
                       StripScratch(*fe, full, reduced), StripCellContribution(dpc));
@@ -396,7 +386,7 @@ namespace cosmo
       Vector<double> mask, mode;
       mode_mask(mask);
       const double smallest = solvers::smallest_eigenvalue(*this, mask, mode, 50);
-      visited.push_back({report.branch, report.t, s.energy, s.n_negative, s.strains, s.resultants});
+      record_state(report, s);
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t
            << "  Newton " << std::setw(2) << report.newton_iterations << "  Psi = "
@@ -505,8 +495,7 @@ namespace cosmo
     void
     StripProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
     {
-      located_events.push_back(e);
-      event_strains.push_back(strains_of(U));
+      ReducedRodProblem::located_event(e, U, mode);
       if (!write_output)
         return;
       const std::string tag = Utilities::int_to_string(located_events.size(), 2);
@@ -675,7 +664,7 @@ namespace cosmo
           const auto &e        = located_events[k];
           io::JSON    x        = io::JSON::object();
           for (unsigned int c = 0; c < 6; ++c)
-            x["strains"][kinematics::strain_names[c]] = event_strains[k][c];
+            x["strains"][kinematics::strain_names[c]] = strains_at_events[k][c];
           x["state_vtu"]       = "event-" + Utilities::int_to_string(k + 1, 2) + ".vtu";
           if (e.kind == Event::Kind::branch_point)
             x["mode_vtu"] = "event-" + Utilities::int_to_string(k + 1, 2) + "-mode.vtu";

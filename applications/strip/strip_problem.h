@@ -94,28 +94,6 @@ namespace cosmo
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
 
-      /// Every converged state of the run, in order.
-      struct PathPoint
-      {
-        unsigned int          branch;
-        double                lambda;
-        double                energy;
-        int                   n_negative;
-        std::array<double, 6> strains;
-        std::array<double, 6> resultants;
-      };
-      const std::vector<PathPoint> &
-      path() const
-      {
-        return visited;
-      }
-
-      /// Events located by arclength continuation (kind, lambda, ...).
-      const std::vector<Event> &
-      events() const
-      {
-        return located_events;
-      }
       /// Follow the path by arclength continuation, with event location and branch switching.
       std::vector<solvers::EventRecord>
       follow_branches();
@@ -148,9 +126,6 @@ namespace cosmo
       solvers::ContinuationSettings continuation_settings;
       solvers::ArclengthSettings    arclength_settings;
       assembly::ConstitutiveTable   table;
-      std::vector<Event>            located_events;
-      std::vector<std::array<double, 6>> event_strains; ///< the critical strains
-      std::vector<PathPoint>        visited;
       std::string                   linear_solver_name = "MUMPS";
       std::string                   output_directory;
       bool                          write_output = false;

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cosmo
@@ -163,7 +164,10 @@ namespace cosmo
       if (R)
         R->reinit(n_unknowns());
       if (jacobian)
-        system->clear();
+        {
+          system->clear();
+          factorized_at.reinit(0); // the factorization no longer matches the matrix
+        }
       if (assemble_field(U, e, R, jacobian, E, integrals) != 0)
         return 1; // recoverable: Newton's line search or the driver cuts back
 
@@ -206,6 +210,36 @@ namespace cosmo
       return 0;
     }
 
+    void
+    ReducedRodProblem::add_local_contribution(const std::vector<types::global_dof_index> &idx,
+                                              const Vector<double> &                      r,
+                                              const FullMatrix<double> &                  K,
+                                              const FullMatrix<double> &                  B,
+                                              const FullMatrix<double> *                  Ecell,
+                                              Vector<double> *                            R,
+                                              const bool                                  jacobian,
+                                              FullMatrix<double> &                        E)
+    {
+      if (R)
+        for (unsigned int i = 0; i < idx.size(); ++i)
+          (*R)[idx[i]] += r[i];
+      if (!jacobian)
+        return;
+      system->matrix.add(idx, K);
+      for (unsigned int i = 0; i < idx.size(); ++i)
+        for (unsigned int k = 0; k < n_strains; ++k)
+          system->border_columns[k][idx[i]] += B(i, k);
+      if (Ecell)
+        E.add(1., *Ecell);
+    }
+
+    void
+    ReducedRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *)
+    {
+      located_events.push_back(e);
+      strains_at_events.push_back(strains_of(U));
+    }
+
     int
     ReducedRodProblem::residual(const Vector<double> &U, Vector<double> &R)
     {
@@ -228,10 +262,13 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
+          factorized_at.reinit(0);
           if (report)
             report(std::string("  factorization failed: ") + e.what());
           return 1;
         }
+      factorized_at   = U;
+      factorized_load = load_parameter;
       ++total_newton_iterations;
       return 0;
     }
@@ -316,15 +353,29 @@ namespace cosmo
     {
       ReducedRodState s;
       FieldIntegrals  a;
-      {
-        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
-        AssertThrow(assemble(U, nullptr, true, &a) == 0,
-                    ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
-      }
-      {
-        io::PhaseTimer::Scope scope(timer, "factorization");
-        system->factorize();
-      }
+      // The arclength driver has just factorized at this very state (for the
+      // tangent and the stability count): then only the integrals are
+      // needed, from the cheap residual assembly.
+      const bool reuse = factorized_at.size() == U.size() && factorized_load == load_parameter &&
+                         std::equal(U.begin(), U.end(), factorized_at.begin());
+      if (reuse)
+        {
+          io::PhaseTimer::Scope scope(timer, "assembly (residual)");
+          AssertThrow(assemble(U, nullptr, false, &a) == 0,
+                      ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
+        }
+      else
+        {
+          {
+            io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+            AssertThrow(assemble(U, nullptr, true, &a) == 0,
+                        ExcMessage("inadmissible state (det Fe <= 0) at a converged step"));
+          }
+          io::PhaseTimer::Scope scope(timer, "factorization");
+          system->factorize();
+          factorized_at   = U;
+          factorized_load = load_parameter;
+        }
       s.t             = load_parameter;
       s.energy        = a.energy;
       s.min_elastic_J = a.min_elastic_J;

@@ -102,6 +102,36 @@ namespace cosmo
       ReducedRodState
       condensed_state(const Vector<double> &U);
 
+      /// Every converged state of a run, in order (record_state()).
+      struct PathPoint
+      {
+        double                t;
+        unsigned int          branch;
+        double                energy;
+        int                   n_negative;
+        std::array<double, 6> strains;
+        std::array<double, 6> resultants;
+      };
+      const std::vector<PathPoint> &
+      path() const
+      {
+        return visited;
+      }
+      /// Events located by arclength continuation, with the strains there.
+      const std::vector<Event> &
+      events() const
+      {
+        return located_events;
+      }
+      const std::vector<std::array<double, 6>> &
+      event_strains() const
+      {
+        return strains_at_events;
+      }
+      /// Records the event (derived classes may add output and call this).
+      void
+      located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
+
       // ContinuationProblem / BifurcationProblem
       unsigned int
       n_unknowns() const override
@@ -181,6 +211,28 @@ namespace cosmo
                             const std::array<Vector<double>, 6> &rows,
                             const std::string &                  linear_solver);
 
+      /**
+       * Add one cell's (or face's) contributions: the residual r into R (if
+       * given) and, with `jacobian`, K into E_UU, B into the border columns
+       * and Ecell into the 6x6 border block E. Both applications' copiers.
+       */
+      void
+      add_local_contribution(const std::vector<types::global_dof_index> &idx,
+                             const Vector<double> &                      r,
+                             const FullMatrix<double> &                  K,
+                             const FullMatrix<double> &                  B,
+                             const FullMatrix<double> *                  Ecell,
+                             Vector<double> *                            R,
+                             bool                                        jacobian,
+                             FullMatrix<double> &                        E);
+
+      /// Append a converged state to path().
+      void
+      record_state(const solvers::StepReport &report, const ReducedRodState &s)
+      {
+        visited.push_back({report.t, report.branch, s.energy, s.n_negative, s.strains, s.resultants});
+      }
+
       /// Full assembly: field, gauge rows, strain rows. Returns > 0 if inadmissible.
       int
       assemble(const Vector<double> &U,
@@ -198,6 +250,13 @@ namespace cosmo
       std::vector<std::array<double, 6>> waypoints; ///< 'Path' (empty: straight ramp)
       io::PhaseTimer                  timer;
       unsigned int                    total_newton_iterations = 0;
+      std::vector<PathPoint>             visited;
+      std::vector<Event>                 located_events;
+      std::vector<std::array<double, 6>> strains_at_events;
+      /// The state at which the system was last assembled and factorized
+      /// (condensed_state() reuses that factorization when asked at it).
+      Vector<double> factorized_at;
+      double         factorized_load = 0;
       /// Where to report a failed factorization (may be empty).
       std::function<void(const std::string &)> report;
     };
