@@ -1147,25 +1147,7 @@ namespace cosmo
       for (const auto &s : surface_layers.descriptions())
         layers.push_back(s);
       j["surface_layers"]     = layers;
-      j["energy"]             = last_state.energy;
-      for (unsigned int k = 0; k < 6; ++k)
-        {
-          j["strains"][kinematics::strain_names[k]]       = last_state.strains[k];
-          j["resultants"][kinematics::resultant_names[k]] = last_state.resultants[k];
-        }
-      j["multipliers"] = JSON::array(std::vector<double>(last_state.multipliers.begin(),
-                                                         last_state.multipliers.end()));
-      JSON K           = JSON::array();
-      for (unsigned int a = 0; a < last_state.stiffness.m(); ++a)
-        {
-          std::vector<double> row(6);
-          for (unsigned int b = 0; b < 6; ++b)
-            row[b] = last_state.stiffness(a, b);
-          K.push_back(JSON::array(row));
-        }
-      j["stiffness"]                  = K;
-      j["stiffness_order"]            = "nu1, nu2, nu3, kappa1, kappa2, kappa3";
-      j["stability"]["n_negative_eigenvalues"] = last_state.n_negative;
+      add_state_to_summary(j, last_state);
       j["min_elastic_J"]              = last_state.min_elastic_J;
       const auto h = kinematics::helix_geometry(kinematics::RodStrains(last_state.strains));
       JSON &helix  = j["helix"];
@@ -1176,18 +1158,6 @@ namespace cosmo
       helix["axis"]        = JSON::array({h.axis[0], h.axis[1], h.axis[2]});
       helix["curvature"]   = h.curvature;
       helix["torsion"]     = h.torsion;
-      JSON ev                = JSON::array();
-      for (const auto &e : located_events)
-        {
-          JSON x                 = JSON::object();
-          x["kind"]              = e.name();
-          x["lambda"]            = e.lambda;
-          x["branch"]            = e.branch;
-          x["n_negative_before"] = e.n_negative_before;
-          x["n_negative_after"]  = e.n_negative_after;
-          ev.push_back(x);
-        }
-      j["events"]            = ev;
       j["newton_iterations"] = total_newton_iterations;
       j["timings"]           = timer.to_json();
       io::write_file_atomically(output_directory + "/summary.json",

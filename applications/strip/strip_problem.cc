@@ -642,44 +642,14 @@ namespace cosmo
       j["width"]       = strip_width;
       j["thickness"]   = thickness;
       j["field_dofs"]  = n_field;
-      j["energy"]      = last_state.energy;
-      for (unsigned int k = 0; k < 6; ++k)
-        {
-          j["strains"][kinematics::strain_names[k]]       = last_state.strains[k];
-          j["resultants"][kinematics::resultant_names[k]] = last_state.resultants[k];
-        }
-      io::JSON K = io::JSON::array();
-      for (unsigned int a = 0; a < last_state.stiffness.m(); ++a)
-        {
-          std::vector<double> row(6);
-          for (unsigned int b = 0; b < 6; ++b)
-            row[b] = last_state.stiffness(a, b);
-          K.push_back(io::JSON::array(row));
-        }
-      j["stiffness"]                           = K;
-      j["stability"]["n_negative_eigenvalues"] = last_state.n_negative;
-      io::JSON ev = io::JSON::array();
-      for (unsigned int k = 0; k < located_events.size(); ++k)
-        {
-          const auto &e        = located_events[k];
-          io::JSON    x        = io::JSON::object();
-          for (unsigned int c = 0; c < 6; ++c)
-            x["strains"][kinematics::strain_names[c]] = strains_at_events[k][c];
-          x["state_vtu"]       = "event-" + Utilities::int_to_string(k + 1, 2) + ".vtu";
-          if (e.kind == Event::Kind::branch_point)
-            x["mode_vtu"] = "event-" + Utilities::int_to_string(k + 1, 2) + "-mode.vtu";
-          x["kind"]            = e.name();
-          x["lambda"]          = e.lambda;
-          x["branch"]          = e.branch;
-          x["n_negative_before"] = e.n_negative_before;
-          x["n_negative_after"]  = e.n_negative_after;
-          x["eigenvalue"]      = e.eigenvalue;
-          ev.push_back(x);
-        }
-      j["events"]      = ev;
+      add_state_to_summary(j, last_state, [this](const unsigned int k, io::JSON &x) {
+        const std::string tag = Utilities::int_to_string(k + 1, 2);
+        x["state_vtu"]        = "event-" + tag + ".vtu";
+        if (events()[k].kind == Event::Kind::branch_point)
+          x["mode_vtu"] = "event-" + tag + "-mode.vtu";
+      });
       j["timings"]     = timer.to_json();
-      j["multipliers"] = io::JSON::array(
-        std::vector<double>(last_state.multipliers.begin(), last_state.multipliers.end()));
+
       io::write_file_atomically(output_directory + "/summary.json",
                                 [&](std::ostream &o) { o << j.str() << "\n"; });
       if (status != "converged")

@@ -234,6 +234,51 @@ namespace cosmo
     }
 
     void
+    ReducedRodProblem::add_state_to_summary(
+      io::JSON &                                            j,
+      const ReducedRodState &                               s,
+      const std::function<void(unsigned int, io::JSON &)> &event_extra) const
+    {
+      using io::JSON;
+      j["energy"] = s.energy;
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          j["strains"][kinematics::strain_names[k]]       = s.strains[k];
+          j["resultants"][kinematics::resultant_names[k]] = s.resultants[k];
+        }
+      j["multipliers"] = JSON::array(std::vector<double>(s.multipliers.begin(), s.multipliers.end()));
+      JSON K           = JSON::array();
+      for (unsigned int a = 0; a < s.stiffness.m(); ++a)
+        {
+          std::vector<double> row(6);
+          for (unsigned int b = 0; b < 6; ++b)
+            row[b] = s.stiffness(a, b);
+          K.push_back(JSON::array(row));
+        }
+      j["stiffness"]                           = K;
+      j["stiffness_order"]                     = "nu1, nu2, nu3, kappa1, kappa2, kappa3";
+      j["stability"]["n_negative_eigenvalues"] = s.n_negative;
+      JSON ev                                  = JSON::array();
+      for (unsigned int k = 0; k < located_events.size(); ++k)
+        {
+          const auto &e          = located_events[k];
+          JSON        x          = JSON::object();
+          x["kind"]              = e.name();
+          x["lambda"]            = e.lambda;
+          x["branch"]            = e.branch;
+          x["n_negative_before"] = e.n_negative_before;
+          x["n_negative_after"]  = e.n_negative_after;
+          x["eigenvalue"]        = e.eigenvalue;
+          for (unsigned int c = 0; c < 6; ++c)
+            x["strains"][kinematics::strain_names[c]] = strains_at_events[k][c];
+          if (event_extra)
+            event_extra(k, x);
+          ev.push_back(x);
+        }
+      j["events"] = ev;
+    }
+
+    void
     ReducedRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *)
     {
       located_events.push_back(e);

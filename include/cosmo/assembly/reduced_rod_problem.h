@@ -226,6 +226,17 @@ namespace cosmo
                              bool                                        jacobian,
                              FullMatrix<double> &                        E);
 
+      /**
+       * The rod-level keys of summary.json, shared by the applications:
+       * energy, strains, resultants, multipliers, stiffness (and its order),
+       * stability, events (kind, lambda, branch, counts, eigenvalue, strains;
+       * `event_extra(k, entry)` may add keys to event k).
+       */
+      void
+      add_state_to_summary(io::JSON &                                        j,
+                           const ReducedRodState &                           s,
+                           const std::function<void(unsigned int, io::JSON &)> &event_extra = {}) const;
+
       /// Append a converged state to path().
       void
       record_state(const solvers::StepReport &report, const ReducedRodState &s)
