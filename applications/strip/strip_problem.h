@@ -73,16 +73,6 @@ namespace cosmo
         quiet = q;
       }
 
-      double
-      width() const
-      {
-        return strip_width;
-      }
-      const materials::NaghdiPlateLaw &
-      plate() const
-      {
-        return law;
-      }
       const Vector<double> &
       current_solution() const
       {

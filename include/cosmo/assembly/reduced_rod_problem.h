@@ -123,11 +123,6 @@ namespace cosmo
       {
         return located_events;
       }
-      const std::vector<std::array<double, 6>> &
-      event_strains() const
-      {
-        return strains_at_events;
-      }
       /// Records the event (derived classes may add output and call this).
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
