@@ -1,0 +1,1263 @@
+// The plate and rim energies are differentiated here (Sacado, 15 and 12
+// local variables): the heavy translation unit of part 3.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/base/work_stream.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <cosmo/config.h>
+#include <cosmo/materials/energy_derivatives.h>
+
+#include "plate_rod_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace plate_rod
+  {
+    namespace
+    {
+      constexpr int n_plate = kinematics::plate_local_variables;
+      constexpr int n_rim   = kinematics::rim_local_variables;
+
+      /// Rim boundary id; the mirror edges of a sector are 1 (theta = 0) and 2 (theta = pi/n).
+      constexpr types::boundary_id rim_id = 0, mirror_first = 1, mirror_second = 2;
+
+      /// Which local variables a shape function drives and with what weight.
+      struct Drive
+      {
+        unsigned int n = 0;
+        unsigned int var[3];
+        double       w[3];
+      };
+
+      Drive
+      plate_drive(const unsigned int c, const double N, const Tensor<1, 2> &g)
+      {
+        Drive d;
+        if (c < 3)
+          d = {3, {c, 3 + c, 6 + c}, {N, g[0], g[1]}};
+        else if (c < 5)
+          d = {3, {9 + c - 3, 11 + c - 3, 13 + c - 3}, {N, g[0], g[1]}};
+        return d; // alpha: not a plate variable
+      }
+
+      Drive
+      rim_drive(const unsigned int c, const double N, const double dS)
+      {
+        if (c < 3)
+          return {2, {c, 3 + c, 0}, {N, dS, 0}};
+        if (c < 5)
+          return {2, {6 + c - 3, 8 + c - 3, 0}, {N, dS, 0}};
+        return {2, {10, 11, 0}, {N, dS, 0}};
+      }
+
+      /// The rim's reference frame at X with the discrete unit tangent t (clockwise).
+      kinematics::RimFrame
+      rim_frame(const Point<2> &X, const Tensor<1, 2> &normal)
+      {
+        kinematics::RimFrame f;
+        const double         r = X.norm();
+        const double         c = X[0] / r, s = X[1] / r;
+        // d1 = e_r, d2 = E3, d3 = d1 x d2 = -e_theta (columns of Lambda0).
+        f.Lambda0[0][0] = c, f.Lambda0[1][0] = s;
+        f.Lambda0[2][1] = 1;
+        f.Lambda0[0][2] = s, f.Lambda0[1][2] = -c;
+        f.tangent[0]    = normal[1];
+        f.tangent[1]    = -normal[0];
+        return f;
+      }
+
+      struct Scratch
+      {
+        Scratch(const Mapping<2> &     mapping,
+                const FiniteElement<2> &fe,
+                const Quadrature<2> &   full,
+                const Quadrature<2> &   reduced,
+                const Quadrature<1> &   face)
+          : fev_full(mapping, fe, full,
+                     update_values | update_gradients | update_quadrature_points | update_JxW_values)
+          , fev_reduced(mapping, fe, reduced,
+                        update_values | update_gradients | update_quadrature_points |
+                          update_JxW_values)
+          , fev_face(mapping, fe, face,
+                     update_values | update_gradients | update_quadrature_points |
+                       update_JxW_values | update_normal_vectors)
+          , U_local(fe.n_dofs_per_cell())
+        {}
+        Scratch(const Scratch &o)
+          : Scratch(o.fev_full.get_mapping(), o.fev_full.get_fe(), o.fev_full.get_quadrature(),
+                    o.fev_reduced.get_quadrature(), o.fev_face.get_quadrature())
+        {}
+        FEValues<2>         fev_full, fev_reduced;
+        FEFaceValues<2>     fev_face;
+        std::vector<double> U_local;
+        std::vector<Drive>  drives;
+      };
+
+      struct Copy
+      {
+        explicit Copy(const unsigned int dpc)
+          : idx(dpc)
+          , r(dpc)
+          , K(dpc, dpc)
+        {}
+        std::vector<types::global_dof_index> idx;
+        Vector<double>                       r;
+        FullMatrix<double>                   K;
+        double                               plate_energy = 0, rod_energy = 0;
+      };
+
+      /// Add the contribution of one quadrature point: W, gradient g and Hessian H of the
+      /// energy density in the local variables, the shape functions' drives.
+      template <int N>
+      void
+      add_point(const std::vector<Drive> &      drives,
+                const std::array<double, N> &   g,
+                const std::array<double, N * N> &H,
+                const double                     dA,
+                const bool                       jacobian,
+                Copy &                           c)
+      {
+        const unsigned int n = drives.size();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Drive &a = drives[i];
+            double       s = 0;
+            for (unsigned int p = 0; p < a.n; ++p)
+              s += g[a.var[p]] * a.w[p];
+            c.r[i] += s * dA;
+            if (!jacobian || a.n == 0)
+              continue;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const Drive &b = drives[j];
+                double       k = 0;
+                for (unsigned int p = 0; p < a.n; ++p)
+                  for (unsigned int q = 0; q < b.n; ++q)
+                    k += a.w[p] * H[N * a.var[p] + b.var[q]] * b.w[q];
+                c.K(i, j) += k * dA;
+              }
+          }
+      }
+
+      std::string
+      model_name(const kinematics::PlateRodModel m)
+      {
+        switch (m)
+          {
+            case kinematics::PlateRodModel::cosserat:
+              return "cosserat";
+            case kinematics::PlateRodModel::kirchhoff:
+              return "kirchhoff";
+            default:
+              return "von karman";
+          }
+      }
+    } // namespace
+
+    PlateRodProblem::PlateRodProblem() = default;
+    PlateRodProblem::~PlateRodProblem()
+    {
+      dof_handler.clear();
+    }
+
+    void
+    PlateRodProblem::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Plate");
+      prm.declare_entry("Radius", "1", Patterns::Double(0), "Radius R of the disc.");
+      prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
+                        "Thickness h of the plate (h < R).");
+      prm.leave_subsection();
+      materials::NaghdiPlateLaw::declare_parameters(prm);
+      materials::PlateGrowth::declare_parameters(prm);
+      prm.enter_subsection("Rim rod");
+      prm.declare_entry("Stiffnesses", "1, 1, 1, 1, 1, 1",
+                        Patterns::List(Patterns::Double(0), 6, 6),
+                        "GA1, GA2, EA, EI1, EI2, GJ of the rim's cross-section (d1 radial, d2 "
+                        "the plate normal, d3 the tangent): shear along d1, d2, extension, "
+                        "bending about d1 (out of plane), about d2 (in plane), torsion. E.g. the "
+                        "diagonal of a rod_cross_section stiffness.");
+      prm.declare_entry("Growth factor", "1", Patterns::Double(0),
+                        "Axial growth g of the rim at t = 1 (ramped as 1 + t (g - 1)); the "
+                        "stress-free rim is a ring of radius g R.");
+      prm.leave_subsection();
+      prm.enter_subsection("Model");
+      prm.declare_entry("Model", "cosserat", Patterns::Selection("cosserat|kirchhoff|von karman"),
+                        "cosserat: Naghdi plate and special Cosserat rod; kirchhoff: the same "
+                        "with the transverse shear stiffnesses (plate ks G h, rod GA1, GA2) "
+                        "multiplied by the shear penalty (the shear-rigid limit); von karman: "
+                        "moderate rotations (doc/theory-plate-rod.md).");
+      prm.declare_entry("Shear penalty factor", "1000", Patterns::Double(1),
+                        "Factor on the shear stiffnesses in the kirchhoff model.");
+      prm.leave_subsection();
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Domain", "full disc", Patterns::Selection("full disc|sector"),
+                        "full disc, or the sector 0 <= theta <= Sector angle with mirror "
+                        "conditions on both radial edges (keeps the modes cos(k n theta)).");
+      prm.declare_entry("Sector angle", "90", Patterns::Double(0, 360),
+                        "Sector angle in degrees: 180/n for an integer n >= 1.");
+      prm.declare_entry("Global refinements", "3", Patterns::Integer(0, 8),
+                        "Refinements of the coarse disc (5 cells) or sector (3 cells).");
+      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(2, 4),
+                        "Degree p of FE_Q(p) for all fields and of the mapping of the rim; "
+                        "shear terms and the rod are integrated with p Gauss points.");
+      prm.leave_subsection();
+      prm.enter_subsection("Growth path");
+      prm.declare_entry("Start", "0", Patterns::Double(0, 1),
+                        "Load parameter t where the path starts (growth is ramped from "
+                        "t = 0, none, to t = 1, the factors given); the flat state there "
+                        "must be stable.");
+      prm.leave_subsection();
+      solvers::NewtonSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/plate_rod", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, plate.pvd, "
+                        "rim.pvd with their VTU files, event VTUs and log.txt.");
+      prm.leave_subsection();
+    }
+
+    void
+    PlateRodProblem::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Plate");
+      radius    = prm.get_double("Radius");
+      thickness = prm.get_double("Thickness");
+      if (!(radius > 0))
+        throw io::InputError("Plate", "Radius", prm.get("Radius"), "must be positive");
+      if (!(thickness > 0) || !(thickness < radius))
+        throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
+                             "must be positive and smaller than the radius " +
+                               prm.get("Radius"));
+      prm.leave_subsection();
+      plate_law.parse_parameters(prm);
+      plate_law.thickness = thickness;
+      plate_growth.parse_parameters(prm);
+
+      prm.enter_subsection("Rim rod");
+      const auto k = io::get_double_list(prm, "Stiffnesses", 6, "Rim rod");
+      std::copy(k.begin(), k.end(), rod_stiffness.begin());
+      rod_growth = prm.get_double("Growth factor");
+      if (!(rod_growth > 0))
+        throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
+                             "must be positive");
+      // The rim against the plate: beyond 1e8 times the plate's own stiffness
+      // the coupled Hessian loses every digit of the plate's contribution in
+      // double precision (the rigid limit is reached to 1e-8 long before).
+      const double Eh = plate_law.young * thickness;
+      const double D  = Eh * thickness * thickness / (12 * (1 - plate_law.poisson * plate_law.poisson));
+      const char * names[6] = {"GA1", "GA2", "EA", "EI1", "EI2", "GJ"};
+      for (unsigned int i = 0; i < 6; ++i)
+        {
+          const double scale = i < 3 ? Eh * radius : D * radius;
+          if (!(rod_stiffness[i] > 0))
+            throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"),
+                                 std::string("every stiffness must be positive (") + names[i] +
+                                   " is not)");
+          if (rod_stiffness[i] > 1e8 * scale)
+            {
+              std::ostringstream m;
+              m << names[i] << " = " << rod_stiffness[i] << " is " << rod_stiffness[i] / scale
+                << " times the plate's " << (i < 3 ? "E h R" : "D R")
+                << ": stiffer than representable next to the plate in double precision (at "
+                   "most 1e8 times); a rim 1e6 times stiffer is already rigid to 1e-6";
+              throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"), m.str());
+            }
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Model");
+      const std::string m = prm.get("Model");
+      model = m == "cosserat" ? kinematics::PlateRodModel::cosserat :
+              m == "kirchhoff" ? kinematics::PlateRodModel::kirchhoff :
+                                 kinematics::PlateRodModel::von_karman;
+      shear_penalty = prm.get_double("Shear penalty factor");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      domain = prm.get("Domain");
+      {
+        const double angle = prm.get_double("Sector angle");
+        const double n     = 180. / angle;
+        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-9 * n || std::round(n) < 1)
+          throw io::InputError("Mesh", "Sector angle", prm.get("Sector angle"),
+                               "the sector must be pi/n: 180/n degrees for an integer n >= 1 "
+                               "(180, 90, 60, 45, 36, 30, ...)");
+        sector_n = static_cast<unsigned int>(std::round(n));
+      }
+      refinements = prm.get_integer("Global refinements");
+      degree      = prm.get_integer("Polynomial degree");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Growth path");
+      path_start = prm.get_double("Start");
+      prm.leave_subsection();
+      newton_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
+      arclength_settings.enabled = true; // the plate is always followed by arclength
+      prm.enter_subsection("Output");
+      output_directory = prm.get("Output directory");
+      prm.leave_subsection();
+
+      // Growth must stay positive along the path.
+      for (const double t : {0., 1.})
+        for (unsigned int i = 0; i <= 20; ++i)
+          {
+            const auto g = plate_growth.factors(radius * i / 20., t);
+            if (!(g[0] > 0) || !(g[1] > 0))
+              throw io::InputError("Plate growth", "Radial growth factor",
+                                   "(at r = " + std::to_string(radius * i / 20.) + ")",
+                                   "growth factors must be positive for 0 <= r <= R");
+          }
+    }
+
+    void
+    PlateRodProblem::make_mesh()
+    {
+      triangulation.clear();
+      const bool sector = domain == "sector";
+      if (sector)
+        GridGenerator::quarter_hyper_ball(triangulation, Point<2>(), radius);
+      else
+        GridGenerator::hyper_ball(triangulation, Point<2>(), radius);
+      triangulation.refine_global(refinements);
+      if (sector && sector_n != 2)
+        {
+          // Stretch the quarter disc in angle onto [0, pi/n]: circles stay circles.
+          const double s = 2. / sector_n;
+          GridTools::transform(
+            [s](const Point<2> &p) {
+              const double r = p.norm(), a = std::atan2(p[1], p[0]);
+              return Point<2>(r * std::cos(s * a), r * std::sin(s * a));
+            },
+            triangulation);
+        }
+      // Straight cells inside, the rim on the exact circle (MappingQ(p) bends
+      // the cells next to it).
+      triangulation.reset_all_manifolds();
+      triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto   face = cell->face(f);
+              const double r0 = face->vertex(0).norm(), r1 = face->vertex(1).norm();
+              if (std::abs(r0 - radius) < 1e-8 * radius && std::abs(r1 - radius) < 1e-8 * radius)
+                {
+                  face->set_boundary_id(rim_id);
+                  face->set_manifold_id(0);
+                }
+              else
+                face->set_boundary_id(std::abs(face->center()[1]) < 1e-10 * radius ?
+                                        mirror_first :
+                                        mirror_second);
+            }
+      triangulation.set_manifold(0, SphericalManifold<2>(Point<2>()));
+      mapping = std::make_unique<MappingQ<2>>(degree);
+    }
+
+    void
+    PlateRodProblem::make_constraints()
+    {
+      constraints.clear();
+      const bool sector = domain == "sector";
+      // The apex: no translation, director E3 (gauge of the full disc; implied by the mirrors
+      // of a sector with n >= 2).
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v).norm() < 1e-10 * radius)
+            for (unsigned int c = 0; c < 5; ++c)
+              {
+                const auto i = cell->vertex_dof_index(v, c);
+                if (!constraints.is_constrained(i))
+                  constraints.add_line(i);
+              }
+      if (!sector)
+        {
+          // Rotation about E3: u2 = 0 at the rim point (R, 0) (modes cos(n theta) keep it).
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              if ((cell->vertex(v) - Point<2>(radius, 0)).norm() < 1e-8 * radius)
+                {
+                  const auto i = cell->vertex_dof_index(v, 1);
+                  if (!constraints.is_constrained(i))
+                    constraints.add_line(i);
+                }
+        }
+      else
+        {
+          // Mirror planes with normal m: m.u = 0 and theta parallel to m (m.d = 0).
+          const double phi = M_PI / sector_n, c = std::cos(phi), s = std::sin(phi);
+          std::vector<types::global_dof_index> fd(fe->n_dofs_per_face());
+          auto constrain = [this](const types::global_dof_index slave,
+                                  const types::global_dof_index master,
+                                  const double                  w) {
+            if (constraints.is_constrained(slave))
+              return;
+            constraints.add_line(slave);
+            if (master != numbers::invalid_dof_index && w != 0)
+              constraints.add_entry(slave, master, w);
+          };
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  (cell->face(f)->boundary_id() == mirror_first ||
+                   cell->face(f)->boundary_id() == mirror_second))
+                {
+                  cell->face(f)->get_dof_indices(fd);
+                  std::map<unsigned int, std::array<types::global_dof_index, 6>> nodes;
+                  for (unsigned int i = 0; i < fd.size(); ++i)
+                    {
+                      const auto ci                     = fe->face_system_to_component_index(i);
+                      nodes[ci.second][ci.first]        = fd[i];
+                    }
+                  const bool first = cell->face(f)->boundary_id() == mirror_first;
+                  for (const auto &[node, d] : nodes)
+                    {
+                      (void)node;
+                      constrain(d[5], numbers::invalid_dof_index, 0); // the rim end: alpha = 0
+                      if (first)
+                        {
+                          // m = E2: u2 = 0, theta1 = 0.
+                          constrain(d[1], numbers::invalid_dof_index, 0);
+                          constrain(d[3], numbers::invalid_dof_index, 0);
+                        }
+                      else if (std::abs(c) >= std::abs(s))
+                        {
+                          // m = (-s, c): u2 = (s/c) u1;  c theta1 + s theta2 = 0.
+                          constrain(d[1], d[0], s / c);
+                          constrain(d[3], d[4], -s / c);
+                        }
+                      else
+                        {
+                          constrain(d[0], d[1], c / s);
+                          constrain(d[4], d[3], -c / s);
+                        }
+                    }
+                }
+        }
+      // alpha lives on the rim: zero elsewhere.
+      ComponentMask alpha(6, false);
+      alpha.set(5, true);
+      const IndexSet all_alpha = DoFTools::extract_dofs(dof_handler, alpha);
+      const IndexSet rim_alpha = DoFTools::extract_boundary_dofs(dof_handler, alpha, {rim_id});
+      for (const auto i : all_alpha)
+        if (!rim_alpha.is_element(i) && !constraints.is_constrained(i))
+          constraints.add_line(i);
+      constraints.close();
+    }
+
+    void
+    PlateRodProblem::setup_system()
+    {
+      make_mesh();
+      fe = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 6);
+      dof_handler.reinit(triangulation);
+      dof_handler.distribute_dofs(*fe);
+      make_constraints();
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      sparsity.copy_from(dsp);
+      matrix.reinit(sparsity);
+      solution.reinit(dof_handler.n_dofs());
+      dof_component.assign(dof_handler.n_dofs(), 0);
+      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(idx);
+          for (unsigned int i = 0; i < idx.size(); ++i)
+            dof_component[idx[i]] = fe->system_to_component_index(i).first;
+        }
+    }
+
+    kinematics::PlateGrowthAtPoint
+    PlateRodProblem::growth_at(const Point<2> &X, const double t) const
+    {
+      const auto                     G = plate_growth.value(X, t);
+      kinematics::PlateGrowthAtPoint g;
+      g.det_G = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+      g.G_inv = {{{{G[1][1] / g.det_G, -G[0][1] / g.det_G}},
+                  {{-G[1][0] / g.det_G, G[0][0] / g.det_G}}}};
+      return g;
+    }
+
+    materials::QuadraticRodLaw
+    PlateRodProblem::rod_law() const
+    {
+      materials::QuadraticRodLaw law;
+      law.stiffness = rod_stiffness;
+      if (model == kinematics::PlateRodModel::kirchhoff)
+        for (const unsigned int k : {0u, 1u})
+          law.stiffness[k] *= shear_penalty;
+      return law;
+    }
+
+    int
+    PlateRodProblem::assemble(const Vector<double> &U,
+                              Vector<double> *      R,
+                              const bool            jacobian,
+                              double *              energies)
+    {
+      const unsigned int        dpc = fe->n_dofs_per_cell();
+      std::vector<unsigned int> comp(dpc);
+      for (unsigned int i = 0; i < dpc; ++i)
+        comp[i] = fe->system_to_component_index(i).first;
+      const QGauss<2> full(degree + 1), reduced(degree);
+      const QGauss<1> face(degree);
+      const double    t            = load_parameter;
+      const double    g_rod        = rod_growth_at(t);
+      const auto      rod          = rod_law();
+      const double    shear_scale  = model == kinematics::PlateRodModel::kirchhoff ? shear_penalty : 1.;
+      const bool      want_energy  = energies != nullptr;
+      (void)want_energy;
+
+      auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
+                        Scratch &                                           sc,
+                        Copy &                                              c) {
+        cell->get_dof_indices(c.idx);
+        for (unsigned int i = 0; i < dpc; ++i)
+          sc.U_local[i] = U[c.idx[i]];
+        c.r            = 0;
+        c.plate_energy = 0;
+        c.rod_energy   = 0;
+        if (jacobian)
+          c.K = 0;
+        sc.drives.resize(dpc);
+        std::array<double, n_plate>           z, g;
+        std::array<double, n_plate * n_plate> H;
+        for (const bool membrane_bending : {true, false})
+          {
+            FEValues<2> &fev = membrane_bending ? sc.fev_full : sc.fev_reduced;
+            fev.reinit(cell);
+            for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
+              {
+                z.fill(0.);
+                for (unsigned int i = 0; i < dpc; ++i)
+                  {
+                    sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
+                    for (unsigned int p = 0; p < sc.drives[i].n; ++p)
+                      z[sc.drives[i].var[p]] += sc.U_local[i] * sc.drives[i].w[p];
+                  }
+                const auto gr = growth_at(fev.quadrature_point(q), t);
+                double     W  = 0;
+                materials::internal::differentiate<n_plate>(
+                  z,
+                  [&](const auto &x) {
+                    return kinematics::plate_energy(x, gr, plate_law, model, membrane_bending,
+                                                    shear_scale);
+                  },
+                  jacobian, W, g, H);
+                c.plate_energy += W * fev.JxW(q);
+                add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c);
+              }
+          }
+        // The rim rod on the cell's rim faces.
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            {
+              sc.fev_face.reinit(cell, f);
+              std::array<double, n_rim>         zr, gr;
+              std::array<double, n_rim * n_rim> Hr;
+              for (unsigned int q = 0; q < sc.fev_face.n_quadrature_points; ++q)
+                {
+                  const Point<2> X     = sc.fev_face.quadrature_point(q);
+                  const auto     frame = rim_frame(X, sc.fev_face.normal_vector(q));
+                  const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
+                  zr.fill(0.);
+                  for (unsigned int i = 0; i < dpc; ++i)
+                    {
+                      sc.drives[i] = rim_drive(comp[i], sc.fev_face.shape_value(i, q),
+                                               sc.fev_face.shape_grad(i, q) * t2);
+                      for (unsigned int p = 0; p < sc.drives[i].n; ++p)
+                        zr[sc.drives[i].var[p]] += sc.U_local[i] * sc.drives[i].w[p];
+                    }
+                  // The reference strains of the discrete rim (so that the reference is
+                  // stress-free): nu0 = Lambda0^T t, kappa0 = (0, t.e_theta / r, 0).
+                  auto         law = rod;
+                  const double r   = X.norm();
+                  for (unsigned int k = 0; k < 3; ++k)
+                    {
+                      double n0 = 0;
+                      for (unsigned int i = 0; i < 3; ++i)
+                        n0 += frame.Lambda0[i][k] * frame.tangent[i];
+                      law.reference_strains[k] = n0;
+                    }
+                  law.reference_strains[3] = 0;
+                  law.reference_strains[4] =
+                    (frame.tangent[0] * (-X[1]) + frame.tangent[1] * X[0]) / (r * r);
+                  law.reference_strains[5] = 0;
+                  double W                 = 0;
+                  materials::internal::differentiate<n_rim>(
+                    zr,
+                    [&](const auto &x) { return kinematics::rim_rod_energy(x, frame, law, g_rod, model); },
+                    jacobian, W, gr, Hr);
+                  c.rod_energy += W * sc.fev_face.JxW(q);
+                  add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian, c);
+                }
+            }
+      };
+
+      if (R)
+        {
+          R->reinit(n_unknowns());
+        }
+      if (jacobian)
+        matrix = 0;
+      double plate_energy = 0, rod_energy = 0;
+      auto   copier = [&](const Copy &c) {
+        plate_energy += c.plate_energy;
+        rod_energy += c.rod_energy;
+        if (R && jacobian)
+          constraints.distribute_local_to_global(c.K, c.r, c.idx, matrix, *R);
+        else if (R)
+          constraints.distribute_local_to_global(c.r, c.idx, *R);
+        else if (jacobian)
+          constraints.distribute_local_to_global(c.K, c.idx, matrix);
+      };
+      WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
+                      Scratch(*mapping, *fe, full, reduced, face), Copy(dpc));
+      if (energies)
+        {
+          energies[0] = plate_energy;
+          energies[1] = rod_energy;
+        }
+      return std::isfinite(plate_energy + rod_energy) ? 0 : 1;
+    }
+
+    int
+    PlateRodProblem::residual(const Vector<double> &U, Vector<double> &R)
+    {
+      io::PhaseTimer::Scope scope(timer, "assembly (residual)");
+      return assemble(U, &R, false);
+    }
+
+    int
+    PlateRodProblem::setup_jacobian(const Vector<double> &U)
+    {
+      {
+        io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+        if (assemble(U, nullptr, true) != 0)
+          return 1;
+      }
+      io::PhaseTimer::Scope scope(timer, "factorization");
+      try
+        {
+          solver.factorize(matrix);
+        }
+      catch (std::exception &e)
+        {
+          say(std::string("  factorization failed: ") + e.what());
+          return 1;
+        }
+      return 0;
+    }
+
+    int
+    PlateRodProblem::solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst)
+    {
+      io::PhaseTimer::Scope scope(timer, "solve");
+      dst = rhs;
+      solver.solve(dst);
+      constraints.distribute(dst);
+      return 0;
+    }
+
+    void
+    PlateRodProblem::residual_weights(Vector<double> &w) const
+    {
+      // Nodal forces against E h R, nodal moments against E h R^2.
+      const double F = plate_law.young * thickness * radius;
+      w.reinit(n_unknowns());
+      for (unsigned int i = 0; i < w.size(); ++i)
+        w[i] = dof_component[i] < 3 ? 1 / F : 1 / (F * radius);
+    }
+
+    PlateRodState
+    PlateRodProblem::analyse(const Vector<double> &U) const
+    {
+      PlateRodState s;
+      s.t = load_parameter;
+      s.rim_w_amplitude.assign(n_modes, 0.);
+      s.rim_ur_amplitude.assign(n_modes, 0.);
+      const bool sector = domain == "sector";
+      // Fourier coefficients of w and u_r on the rim in the polar angle;
+      // on a sector, of the mirror-symmetric extension (only k n survive).
+      std::vector<double> aw(n_modes), bw(n_modes), ar(n_modes), br(n_modes);
+      const QGauss<1>     face(degree + 1);
+      FEFaceValues<2>     fev(*mapping, *fe, face, update_values | update_quadrature_points | update_JxW_values);
+      std::vector<Vector<double>> values(face.size(), Vector<double>(6));
+      double              ur_mean = 0, length = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            {
+              fev.reinit(cell, f);
+              fev.get_function_values(U, values);
+              for (unsigned int q = 0; q < face.size(); ++q)
+                {
+                  const Point<2> X  = fev.quadrature_point(q);
+                  const double   r  = X.norm(), a = std::atan2(X[1], X[0]);
+                  const double   da = fev.JxW(q) / r;
+                  const double   w  = values[q][2];
+                  const double   ur = (values[q][0] * X[0] + values[q][1] * X[1]) / r;
+                  ur_mean += ur * fev.JxW(q);
+                  length += fev.JxW(q);
+                  for (unsigned int m = 0; m < n_modes; ++m)
+                    {
+                      aw[m] += w * std::cos(m * a) * da;
+                      bw[m] += w * std::sin(m * a) * da;
+                      ar[m] += ur * std::cos(m * a) * da;
+                      br[m] += ur * std::sin(m * a) * da;
+                    }
+                }
+            }
+      const double span = sector ? M_PI / sector_n : 2 * M_PI;
+      for (unsigned int m = 0; m < n_modes; ++m)
+        {
+          if (sector && m % sector_n != 0)
+            continue;
+          const double f = (m == 0 ? 1. : 2.) / span;
+          s.rim_w_amplitude[m]  = f * (sector ? std::abs(aw[m]) : std::hypot(aw[m], bw[m]));
+          s.rim_ur_amplitude[m] = f * (sector ? std::abs(ar[m]) : std::hypot(ar[m], br[m]));
+        }
+      s.rim_radial_strain = ur_mean / length / radius;
+      // The apex carries w = 0 (gauge): the dome height is minus the rim's mean w.
+      s.w_centre = -(sector ? aw[0] : aw[0]) / span;
+      double wmin = 0, wmax = 0;
+      for (unsigned int i = 0; i < U.size(); ++i)
+        if (dof_component[i] == 2)
+          wmin = std::min(wmin, U[i]), wmax = std::max(wmax, U[i]);
+      s.max_abs_w = wmax - wmin;
+      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(idx);
+          for (unsigned int i = 0; i < idx.size(); ++i)
+            if (fe->system_to_component_index(i).first == 0)
+              for (unsigned int j = 0; j < idx.size(); ++j)
+                if (fe->system_to_component_index(j).first == 1 &&
+                    fe->system_to_component_index(j).second == fe->system_to_component_index(i).second)
+                  s.max_abs_inplane = std::max(s.max_abs_inplane, std::hypot(U[idx[i]], U[idx[j]]));
+        }
+      return s;
+    }
+
+    std::pair<unsigned int, bool>
+    PlateRodProblem::classify_mode(const Vector<double> &mode) const
+    {
+      const auto   s        = analyse(mode);
+      const bool   out      = s.max_abs_w > s.max_abs_inplane;
+      const auto & a        = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
+      unsigned int n        = 0;
+      for (unsigned int m = 1; m < a.size(); ++m)
+        if (a[m] > a[n])
+          n = m;
+      return {n, out};
+    }
+
+    analysis::PlateRod
+    PlateRodProblem::closed_form_setting() const
+    {
+      analysis::PlateRod p;
+      p.radius    = radius;
+      p.thickness = thickness;
+      p.young     = plate_law.young;
+      p.poisson   = plate_law.poisson;
+      p.rod_EA    = rod_stiffness[2];
+      p.rod_EI1   = rod_stiffness[3];
+      p.rod_EI2   = rod_stiffness[4];
+      return p;
+    }
+
+    double
+    PlateRodProblem::mismatch(const double t) const
+    {
+      // Uniform isotropic plate growth only: g_r = g_t independent of r.
+      const auto g0 = plate_growth.factors(0, t);
+      for (unsigned int i = 0; i <= 10; ++i)
+        {
+          const auto g = plate_growth.factors(radius * i / 10., t);
+          if (std::abs(g[0] - g0[0]) > 1e-14 || std::abs(g[1] - g0[0]) > 1e-14)
+            return std::numeric_limits<double>::quiet_NaN();
+        }
+      return g0[0] / rod_growth_at(t) - 1;
+    }
+
+    void
+    PlateRodProblem::say(const std::string &line)
+    {
+      if (log)
+        (*log)(line);
+      else if (!quiet)
+        std::cout << line << std::endl;
+    }
+
+    void
+    PlateRodProblem::solve_flat_state(const double t)
+    {
+      set_load_parameter(t);
+      solvers::newton_solve(*this, solution, newton_settings);
+    }
+
+    std::vector<solvers::EventRecord>
+    PlateRodProblem::follow_branches()
+    {
+      solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
+      driver.progress = [this](const std::string &s) { say(s); };
+      return driver.run(*this, solution, load_parameter);
+    }
+
+    void
+    PlateRodProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution = U;
+      load_parameter = report.t;
+      PlateRodState s = analyse(U);
+      s.n_negative    = report.n_negative;
+      {
+        Vector<double> R;
+        double         e[2];
+        assemble(U, &R, false, e);
+        s.plate_energy = e[0];
+        s.rod_energy   = e[1];
+      }
+      {
+        io::PhaseTimer::Scope scope(timer, "stability (smallest eigenvalue)");
+        Vector<double>        mask, mode;
+        mode_mask(mask);
+        s.smallest_eigenvalue = solvers::smallest_eigenvalue(*this, mask, mode, 30);
+      }
+      states.push_back(s);
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  branch " << report.branch
+           << "  t = " << std::setprecision(8) << std::setw(10) << report.t << "  Delta = "
+           << std::setprecision(5) << mismatch(report.t) << "  Newton " << report.newton_iterations
+           << "  dome " << std::setprecision(4) << s.w_centre << "  neg.eig. " << s.n_negative
+           << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue;
+      say(line.str());
+      if (!write_output)
+        return;
+      io::PhaseTimer::Scope scope(timer, "output");
+      std::vector<double> row = {double(report.step), double(report.branch), report.t,
+                                 mismatch(report.t), plate_growth.factors(radius, report.t)[1],
+                                 rod_growth_at(report.t), double(report.newton_iterations),
+                                 s.plate_energy + s.rod_energy, s.plate_energy, s.rod_energy,
+                                 s.w_centre, s.max_abs_w, s.max_abs_inplane, s.rim_radial_strain};
+      row.insert(row.end(), s.rim_w_amplitude.begin(), s.rim_w_amplitude.end());
+      row.insert(row.end(), s.rim_ur_amplitude.begin(), s.rim_ur_amplitude.end());
+      row.push_back(s.n_negative);
+      row.push_back(s.smallest_eigenvalue);
+      steps_table.add_row(row);
+      steps_table.write(output_directory + "/steps.csv");
+      const std::string tag = Utilities::int_to_string(output_index++, 4);
+      write_plate(output_directory + "/plate-" + tag + ".vtu", U);
+      write_rim(output_directory + "/rim-" + tag + ".vtu", U);
+      plate_series->add(report.step, "plate-" + tag + ".vtu");
+      rim_series->add(report.step, "rim-" + tag + ".vtu");
+    }
+
+    void
+    PlateRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
+    {
+      solvers::EventRecord r;
+      r.event = e;
+      r.state.assign(U.begin(), U.end());
+      if (mode)
+        r.mode.assign(mode->begin(), mode->end());
+      located_events.push_back(r);
+      if (!write_output)
+        return;
+      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
+      write_plate(output_directory + "/event-" + tag + ".vtu", U);
+      if (mode)
+        {
+          // The mode added to the state, scaled to a tenth of the radius.
+          Vector<double> V = U;
+          double         m = 0;
+          for (unsigned int i = 0; i < mode->size(); ++i)
+            if (dof_component[i] < 3)
+              m = std::max(m, std::abs((*mode)[i]));
+          if (m > 0)
+            V.add(0.1 * radius / m, *mode);
+          write_plate(output_directory + "/event-" + tag + "-mode.vtu", V);
+        }
+    }
+
+    void
+    PlateRodProblem::write_plate(const std::string &file, const Vector<double> &U) const
+    {
+      // The deformed mid-surface phi = X + u in 3D with the displacement, the
+      // director, the growth factors and the membrane forces and bending
+      // moments (polar components, plate law of the chosen model) as fields.
+      std::vector<Point<2>> unit;
+      for (unsigned int j = 0; j <= degree; ++j)
+        for (unsigned int i = 0; i <= degree; ++i)
+          unit.emplace_back(double(i) / degree, double(j) / degree);
+      const Quadrature<2> nodes(unit);
+      FEValues<2>         fev(*mapping, *fe, nodes,
+                      update_values | update_gradients | update_quadrature_points);
+      std::vector<Vector<double>>              values(nodes.size(), Vector<double>(6));
+      std::vector<std::vector<Tensor<1, 2>>>   grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
+      std::vector<DataOutBase::Patch<2, 3>>    patches;
+      const unsigned int                       np = degree + 1;
+      const unsigned int                       n_data = 3 + 3 + 2 + 3 + 3;
+      const double Dm = plate_law.young * thickness / (1 - plate_law.poisson * plate_law.poisson);
+      const double Db = Dm * thickness * thickness / 12;
+      const double nu = plate_law.poisson;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(U, values);
+          fev.get_function_gradients(U, grads);
+          DataOutBase::Patch<2, 3> patch;
+          patch.n_subdivisions       = degree;
+          patch.reference_cell       = ReferenceCells::Quadrilateral;
+          patch.points_are_available = true;
+          patch.data.reinit(n_data + 3, np * np);
+          for (unsigned int k = 0; k < nodes.size(); ++k)
+            {
+              const Point<2>               X = fev.quadrature_point(k);
+              std::array<double, n_plate> z{};
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  z[c]     = values[k][c];
+                  z[3 + c] = grads[k][c][0];
+                  z[6 + c] = grads[k][c][1];
+                }
+              for (unsigned int c = 0; c < 2; ++c)
+                {
+                  z[9 + c]  = values[k][3 + c];
+                  z[11 + c] = grads[k][3 + c][0];
+                  z[13 + c] = grads[k][3 + c][1];
+                }
+              const auto gr = growth_at(X, load_parameter);
+              const auto st = kinematics::plate_rod_plate_strains(z, gr, model);
+              Tensor<1, 3, double> theta;
+              theta[0]     = z[9];
+              theta[1]     = z[10];
+              const auto Q = kinematics::rotation_exp(theta);
+              const double r = X.norm(), ca = r > 0 ? X[0] / r : 1, sa = r > 0 ? X[1] / r : 0;
+              // Polar components of a symmetric (11, 22, 12) tensor.
+              auto polar = [&](const std::array<double, 3> &a) {
+                const double rr = ca * ca * a[0] + sa * sa * a[1] + 2 * ca * sa * a[2];
+                const double tt = sa * sa * a[0] + ca * ca * a[1] - 2 * ca * sa * a[2];
+                const double rt = -ca * sa * a[0] + ca * sa * a[1] + (ca * ca - sa * sa) * a[2];
+                return std::array<double, 3>{{rr, tt, rt}};
+              };
+              auto law = [&](const std::array<double, 3> &e, const double D) {
+                const double tr = e[0] + e[1];
+                return std::array<double, 3>{{D * (nu * tr + (1 - nu) * e[0]),
+                                              D * (nu * tr + (1 - nu) * e[1]),
+                                              D * (1 - nu) * e[2]}};
+              };
+              const auto N  = polar(law(st.membrane, Dm));
+              const auto M  = polar(law(st.bending, Db));
+              const auto gf = plate_growth.factors(r, load_parameter);
+              unsigned int col = 0;
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = values[k][c];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = model == kinematics::PlateRodModel::von_karman ?
+                                         (c == 0 ? z[10] : c == 1 ? -z[9] : 1.) :
+                                         Q[c][2];
+              patch.data(col++, k) = gf[0];
+              patch.data(col++, k) = gf[1];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = N[c];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = M[c];
+              patch.data(n_data + 0, k) = X[0] + values[k][0];
+              patch.data(n_data + 1, k) = X[1] + values[k][1];
+              patch.data(n_data + 2, k) = values[k][2];
+            }
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
+              patch.vertices[v] =
+                Point<3>(patch.data(n_data, pt), patch.data(n_data + 1, pt), patch.data(n_data + 2, pt));
+            }
+          patch.patch_index = patches.size();
+          patches.push_back(std::move(patch));
+        }
+      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
+                                              "director",     "director",     "director",
+                                              "growth_radial", "growth_circumferential",
+                                              "N_rr",         "N_tt",         "N_rt",
+                                              "M_rr",         "M_tt",         "M_rt"};
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
+                   {3, 5, "director", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, o);
+      });
+    }
+
+    void
+    PlateRodProblem::write_rim(const std::string &file, const Vector<double> &U) const
+    {
+      // The rim rod as a polyline through phi(X(S)) with its frame d1, d2, d3
+      // and its strains and resultants (n = dpsi/dnu, m = dpsi/dkappa).
+      std::vector<Point<1>> unit;
+      for (unsigned int i = 0; i <= degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      const Quadrature<1> nodes(unit);
+      FEFaceValues<2>     fev(*mapping, *fe, nodes,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_normal_vectors);
+      std::vector<Vector<double>>            values(nodes.size(), Vector<double>(6));
+      std::vector<std::vector<Tensor<1, 2>>> grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
+      std::vector<DataOutBase::Patch<1, 3>>  patches;
+      const auto                             law   = rod_law();
+      const double                           g_rod = rod_growth_at(load_parameter);
+      const unsigned int                     n_data = 9 + 6 + 6;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            {
+              fev.reinit(cell, f);
+              fev.get_function_values(U, values);
+              fev.get_function_gradients(U, grads);
+              DataOutBase::Patch<1, 3> patch;
+              patch.n_subdivisions       = degree;
+              patch.reference_cell       = ReferenceCells::Line;
+              patch.points_are_available = true;
+              patch.data.reinit(n_data + 3, nodes.size());
+              for (unsigned int k = 0; k < nodes.size(); ++k)
+                {
+                  const Point<2> X     = fev.quadrature_point(k);
+                  const auto     frame = rim_frame(X, fev.normal_vector(k));
+                  const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
+                  std::array<double, n_rim> z{};
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      z[c]     = values[k][c];
+                      z[3 + c] = grads[k][c] * t2;
+                    }
+                  z[6]  = values[k][3];
+                  z[7]  = values[k][4];
+                  z[8]  = grads[k][3] * t2;
+                  z[9]  = grads[k][4] * t2;
+                  z[10] = values[k][5];
+                  z[11] = grads[k][5] * t2;
+                  const double r = X.norm();
+                  std::array<double, 3> kappa0{
+                    {0., (frame.tangent[0] * (-X[1]) + frame.tangent[1] * X[0]) / (r * r), 0.}};
+                  const auto e = kinematics::rim_rod_strains(z, frame, kappa0, model);
+                  // Frame: Lambda = exp(theta) exp(alpha E3) Lambda0.
+                  Tensor<1, 3, double> th, al;
+                  th[0] = z[6], th[1] = z[7], al[2] = z[10];
+                  const Tensor<2, 3> L =
+                    kinematics::rotation_exp(th) * kinematics::rotation_exp(al) * frame.Lambda0;
+                  unsigned int col = 0;
+                  for (unsigned int j = 0; j < 3; ++j)
+                    for (unsigned int i = 0; i < 3; ++i)
+                      patch.data(col++, k) = L[i][j];
+                  double nu0[3] = {0, 0, 0};
+                  for (unsigned int j = 0; j < 3; ++j)
+                    for (unsigned int i = 0; i < 3; ++i)
+                      nu0[j] += frame.Lambda0[i][j] * frame.tangent[i];
+                  for (unsigned int j = 0; j < 6; ++j)
+                    patch.data(col++, k) = e[j];
+                  for (unsigned int j = 0; j < 6; ++j)
+                    patch.data(col++, k) =
+                      j < 3 ? law.stiffness[j] * (e[j] / g_rod - nu0[j]) :
+                              law.stiffness[j] * (e[j] - (j == 4 ? kappa0[1] : 0.)) / g_rod;
+                  patch.data(n_data + 0, k) = X[0] + values[k][0];
+                  patch.data(n_data + 1, k) = X[1] + values[k][1];
+                  patch.data(n_data + 2, k) = values[k][2];
+                }
+              for (unsigned int v = 0; v < 2; ++v)
+                {
+                  const unsigned int k = v == 0 ? 0 : degree;
+                  patch.vertices[v] = Point<3>(patch.data(n_data, k), patch.data(n_data + 1, k),
+                                               patch.data(n_data + 2, k));
+                }
+              patch.patch_index = patches.size();
+              patches.push_back(std::move(patch));
+            }
+      std::vector<std::string> names = {"d1", "d1", "d1", "d2", "d2", "d2", "d3", "d3", "d3",
+                                        "nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3",
+                                        "n1", "n2", "n3", "m1", "m2", "m3"};
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{0, 2, "d1", DataComponentInterpretation::component_is_part_of_vector},
+                   {3, 5, "d2", DataComponentInterpretation::component_is_part_of_vector},
+                   {6, 8, "d3", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, o);
+      });
+    }
+
+    void
+    PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
+    {
+      quiet        = options.quiet;
+      write_output = true;
+      io::create_directory(output_directory);
+      log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
+      io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &o) {
+        prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
+      });
+      plate_series = std::make_unique<io::PVDSeries>(output_directory + "/plate.pvd");
+      rim_series   = std::make_unique<io::PVDSeries>(output_directory + "/rim.pvd");
+      say("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
+      setup_system();
+      std::ostringstream info;
+      info << "  " << model_name(model) << " model, R = " << radius << ", h = " << thickness
+           << " (h/R = " << thickness / radius << "), "
+           << (domain == "sector" ? "sector pi/" + std::to_string(sector_n) : std::string("full disc"))
+           << ", " << triangulation.n_active_cells() << " cells, Q" << degree << ", "
+           << dof_handler.n_dofs() << " DoFs (" << constraints.n_constraints() << " constrained)";
+      say(info.str());
+
+      // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
+      io::JSON closed = io::JSON::object();
+      const double Delta1 = mismatch(1.);
+      if (std::isfinite(Delta1) && Delta1 != 0)
+        {
+          const auto p = closed_form_setting();
+          // t at which the mismatch g_p/g_r - 1 reaches Delta (linear ramps).
+          const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;
+          auto t_of = [&](const double D) { return D / (a - b * (1 + D)); };
+          std::ostringstream c;
+          c << std::setprecision(6);
+          if (Delta1 > 0)
+            {
+              const double D = analysis::axisymmetric_critical_mismatch(p);
+              closed["axisymmetric"]["mismatch"] = D;
+              closed["axisymmetric"]["t"]        = t_of(D);
+              c << "  closed form (Kirchhoff): axisymmetric buckling at Delta = " << D
+                << ", t = " << t_of(D);
+            }
+          else
+            {
+              c << "  closed form (Kirchhoff), planar lobes, soft-plate limit:";
+              for (unsigned int n = 2; n <= 4; ++n)
+                {
+                  const double D = analysis::planar_critical_mismatch_soft_plate(p, n);
+                  io::JSON     x = io::JSON::object();
+                  x["n"]         = n;
+                  x["mismatch"]  = D;
+                  x["t"]         = t_of(D);
+                  closed["planar_soft_plate"].push_back(x);
+                  c << " n = " << n << ": Delta = " << D << " (t = " << t_of(D) << ")";
+                }
+            }
+          say(c.str());
+        }
+
+      for (const auto &c : {"step", "branch", "t", "mismatch", "plate_growth_rim", "rod_growth",
+                            "newton_iterations"})
+        steps_table.add_column(c);
+      steps_table.add_column("energy", "E h R^2");
+      steps_table.add_column("plate_energy", "E h R^2");
+      steps_table.add_column("rod_energy", "E h R^2");
+      steps_table.add_column("dome_height", "R");
+      steps_table.add_column("w_range", "R");
+      steps_table.add_column("max_inplane_displacement", "R");
+      steps_table.add_column("rim_radial_strain");
+      for (unsigned int m = 0; m < n_modes; ++m)
+        steps_table.add_column("rim_w_" + std::to_string(m), "R");
+      for (unsigned int m = 0; m < n_modes; ++m)
+        steps_table.add_column("rim_ur_" + std::to_string(m), "R");
+      steps_table.add_column("n_negative_eigenvalues");
+      steps_table.add_column("smallest_eigenvalue");
+
+      std::string status = "converged", message;
+      try
+        {
+          set_load_parameter(path_start);
+          solve_flat_state(path_start);
+          if (setup_jacobian(solution) == 0 && n_negative_eigenvalues() > 0)
+            throw io::InputError(
+              "Growth path", "Start", std::to_string(path_start),
+              "the flat state there is already unstable (" +
+                std::to_string(n_negative_eigenvalues()) +
+                " negative eigenvalues) and no initial guess of a buckled state can be given: "
+                "start the path below the first critical growth (t = 0 always is)");
+          follow_branches();
+        }
+      catch (solvers::NewtonFailure &e)
+        {
+          status  = "failed";
+          message = std::string("the flat state at the start did not converge: ") + e.what();
+        }
+      catch (io::RunFailure &e)
+        {
+          status  = "failed";
+          message = e.what();
+        }
+
+      io::JSON j       = io::JSON::object();
+      j["application"] = "plate_rod";
+      j["version"]     = COSMO_VERSION;
+      j["status"]      = status;
+      j["message"]     = message;
+      j["model"]       = model_name(model);
+      j["domain"]      = domain == "sector" ? "sector" : "full disc";
+      if (domain == "sector")
+        j["sector_n"] = sector_n;
+      j["radius"]    = radius;
+      j["thickness"] = thickness;
+      j["dofs"]      = dof_handler.n_dofs();
+      j["cells"]     = triangulation.n_active_cells();
+      j["closed_form"] = closed;
+      io::JSON ev      = io::JSON::array();
+      for (unsigned int k = 0; k < located_events.size(); ++k)
+        {
+          const auto &e = located_events[k].event;
+          io::JSON    x = io::JSON::object();
+          x["kind"]              = e.name();
+          x["t"]                 = e.lambda;
+          x["mismatch"]          = mismatch(e.lambda);
+          x["branch"]            = e.branch;
+          x["n_negative_before"] = e.n_negative_before;
+          x["n_negative_after"]  = e.n_negative_after;
+          const std::string tag  = Utilities::int_to_string(k + 1, 2);
+          x["state_vtu"]         = "event-" + tag + ".vtu";
+          if (!located_events[k].mode.empty())
+            {
+              Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
+              const auto     c = classify_mode(mode);
+              x["mode_number"]  = c.first;
+              x["mode_type"]    = c.second ? "out of plane" : "planar";
+              x["mode_vtu"]     = "event-" + tag + "-mode.vtu";
+              x["eigenvalue"]   = e.eigenvalue;
+            }
+          ev.push_back(x);
+        }
+      j["events"]  = ev;
+      j["timings"] = timer.to_json();
+      io::write_file_atomically(output_directory + "/summary.json",
+                                [&](std::ostream &o) { o << j.str() << "\n"; });
+      if (status != "converged")
+        throw io::RunFailure(message);
+      say("output in " + output_directory + "/");
+    }
+
+    void
+    run_plate_rod(ParameterHandler &prm, const io::RunOptions &options)
+    {
+      PlateRodProblem problem;
+      problem.parse_parameters(prm);
+      problem.run(options, prm);
+    }
+  } // namespace plate_rod
+} // namespace cosmo

@@ -1,0 +1,236 @@
+#ifndef cosmo_applications_plate_rod_problem_h
+#define cosmo_applications_plate_rod_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <cosmo/analysis/plate_rod_thresholds.h>
+#include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
+#include <cosmo/kinematics/plate_rod.h>
+#include <cosmo/materials/plate_growth.h>
+#include <cosmo/materials/plate_law.h>
+#include <cosmo/materials/rod_law.h>
+#include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/sparse_direct.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+/**
+ * Part 3: a growing circular Cosserat plate bounded by a Cosserat rod
+ * (plate-rod.md). The disc |X| <= R (or the sector 0 <= theta <= pi/n with
+ * mirror conditions) carries the plate's displacement u (3), its rotation
+ * vector (theta1, theta2) and the rim's rotation alpha about the plate
+ * normal (a field whose DoFs off the rim are constrained to zero): FE_Q(p)^6
+ * on a mesh whose rim is curved (MappingQ(p)). The rod is welded to the edge
+ * by construction (kinematics/plate_rod.h). Growth of the plate and of the
+ * rod is ramped by the load parameter t; the arclength driver follows the
+ * flat branch, counts the negative eigenvalues of the Hessian (MUMPS
+ * inertia), locates where the count changes and follows the bifurcated
+ * branches.
+ */
+namespace cosmo
+{
+  namespace plate_rod
+  {
+    using namespace dealii;
+
+    /// What one state looks like, for steps.csv and summary.json.
+    struct PlateRodState
+    {
+      double              t = 0;
+      double              plate_energy = 0, rod_energy = 0;
+      double              w_centre = 0, max_abs_w = 0, max_abs_inplane = 0;
+      double              rim_radial_strain = 0; ///< mean u_r / R on the rim
+      std::vector<double> rim_w_amplitude;       ///< |Fourier coefficient| of w on the rim, n = 0..
+      std::vector<double> rim_ur_amplitude;      ///< same for the radial displacement
+      int                 n_negative = -1;
+      double              smallest_eigenvalue = 0;
+    };
+
+    class PlateRodProblem : public solvers::BifurcationProblem
+    {
+    public:
+      PlateRodProblem();
+      ~PlateRodProblem() override;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      void
+      setup_system();
+      /// The application: the flat state at the start of the path, then the branches.
+      void
+      run(const io::RunOptions &options, const ParameterHandler &prm);
+
+      void
+      set_quiet(const bool q)
+      {
+        quiet = q;
+      }
+
+      // NonlinearSystem / BifurcationProblem
+      unsigned int
+      n_unknowns() const override
+      {
+        return dof_handler.n_dofs();
+      }
+      int
+      residual(const Vector<double> &U, Vector<double> &R) override;
+      int
+      setup_jacobian(const Vector<double> &U) override;
+      int
+      solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
+      void
+      residual_weights(Vector<double> &w) const override;
+      void
+      set_load_parameter(double t) override
+      {
+        load_parameter = t;
+      }
+      void
+      converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      int
+      n_negative_eigenvalues() override
+      {
+        return solver.n_negative_eigenvalues();
+      }
+      void
+      located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
+
+      /// Solve the flat state at the load parameter t from the current solution.
+      void
+      solve_flat_state(double t);
+      /// Follow the growth path by arclength continuation from the current solution.
+      std::vector<solvers::EventRecord>
+      follow_branches();
+      /// Diagnostics of a state (energies, deflections, rim Fourier amplitudes).
+      PlateRodState
+      analyse(const Vector<double> &U) const;
+      /// The closed-form Kirchhoff thresholds for this plate and rim (small strain).
+      analysis::PlateRod
+      closed_form_setting() const;
+      /// Mismatch Delta = plate growth strain - rod growth strain at load parameter t (uniform
+      /// isotropic plate growth only; NaN otherwise).
+      double
+      mismatch(double t) const;
+
+      const Vector<double> &
+      current_solution() const
+      {
+        return solution;
+      }
+      Vector<double> &
+      current_solution()
+      {
+        return solution;
+      }
+      const std::vector<solvers::EventRecord> &
+      events() const
+      {
+        return located_events;
+      }
+      const std::vector<PlateRodState> &
+      path() const
+      {
+        return states;
+      }
+      const io::PhaseTimer &
+      timings() const
+      {
+        return timer;
+      }
+      unsigned int
+      n_dofs() const
+      {
+        return dof_handler.n_dofs();
+      }
+      /// Number of rim Fourier modes reported (n = 0 .. n_modes - 1).
+      static constexpr unsigned int n_modes = 9;
+
+      /// Mode type and number of a perturbation: dominant rim Fourier number and whether the
+      /// out-of-plane part dominates.
+      std::pair<unsigned int, bool>
+      classify_mode(const Vector<double> &mode) const;
+
+    private:
+      // Parameters
+      double                         radius = 1, thickness = 0.01;
+      std::string                    domain = "full disc";
+      unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
+      unsigned int                   refinements = 3, degree = 2;
+      kinematics::PlateRodModel      model = kinematics::PlateRodModel::cosserat;
+      double                         shear_penalty = 1e3;
+      materials::NaghdiPlateLaw      plate_law;
+      materials::PlateGrowth         plate_growth;
+      std::array<double, 6>          rod_stiffness{{1, 1, 1, 1, 1, 1}};
+      double                         rod_growth = 1;
+      double                         path_start = 0;
+      solvers::NewtonSettings        newton_settings;
+      solvers::ArclengthSettings     arclength_settings;
+      std::string                    output_directory;
+      bool                           quiet        = false;
+      bool                           write_output = false;
+      double                         load_parameter = 0;
+
+      // Discretization
+      Triangulation<2>             triangulation;
+      std::unique_ptr<MappingQ<2>> mapping;
+      std::unique_ptr<FESystem<2>> fe;
+      DoFHandler<2>                dof_handler;
+      AffineConstraints<double>    constraints;
+      SparsityPattern              sparsity;
+      SparseMatrix<double>         matrix;
+      solvers::SparseDirectSolver  solver;
+      Vector<double>               solution;
+      std::vector<unsigned char>   dof_component; ///< field component of each DoF
+
+      // Run records
+      std::vector<PlateRodState>        states;
+      std::vector<solvers::EventRecord> located_events;
+      io::CSVTable                      steps_table;
+      std::unique_ptr<io::RunLog>       log;
+      std::unique_ptr<io::PVDSeries>    plate_series, rim_series;
+      io::PhaseTimer                    timer;
+      unsigned int                      output_index = 0;
+
+      void
+      make_mesh();
+      void
+      make_constraints();
+      int
+      assemble(const Vector<double> &U, Vector<double> *R, bool jacobian, double *energy = nullptr);
+      kinematics::PlateGrowthAtPoint
+      growth_at(const Point<2> &X, double t) const;
+      double
+      rod_growth_at(double t) const
+      {
+        return 1 + t * (rod_growth - 1);
+      }
+      materials::QuadraticRodLaw
+      rod_law() const;
+      void
+      say(const std::string &line);
+      void
+      write_plate(const std::string &file, const Vector<double> &U) const;
+      void
+      write_rim(const std::string &file, const Vector<double> &U) const;
+    };
+
+    void
+    run_plate_rod(ParameterHandler &prm, const io::RunOptions &options);
+  } // namespace plate_rod
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,281 @@
+#ifndef cosmo_kinematics_plate_rod_h
+#define cosmo_kinematics_plate_rod_h
+
+#include <cosmo/kinematics/rotation.h>
+#include <cosmo/materials/plate_law.h>
+#include <cosmo/materials/rod_law.h>
+
+#include <array>
+
+/**
+ * Kinematics of a plate bounded by a rod (plate-rod.md), as energy densities
+ * of local variables on which the finite-element DoFs act linearly (Sacado
+ * differentiates them, as for the strip).
+ *
+ * Plate (reference: the plane X3 = 0): mid-surface phi = X + u, director
+ * d = exp([theta]x) E3 with theta = (theta1, theta2, 0) (a rotation vector
+ * without drilling: the plate's energy does not see rotations about d).
+ *
+ * Rim rod welded to the plate edge (exact parametrization, no multipliers):
+ * its centreline is the plate's edge, r(S) = phi(X(S)), and its rotation is
+ *
+ *   Lambda = exp([theta]x) exp(alpha [E3]x) Lambda0,
+ *
+ * with Lambda0 = [d1 d2 d3] = [e_r, E3, -e_theta] (a proper rotation; the
+ * rod runs clockwise so that kappa0 = (0, -1/R, 0) as in plate-rod.md) and
+ * alpha the rod's rotation about the plate normal, a field that lives on
+ * the rim only. Then Lambda E2 = exp([theta]x) E3 = d: the rod's d2 is the
+ * plate's director for every value of the unknowns. Its strains are
+ *
+ *   nu    = Lambda^T r',
+ *   kappa = Lambda0^T (exp(-alpha [E3]x) T(theta) theta' + alpha' E3) + kappa0,
+ *
+ * from Lambda^T Lambda' (T the right Jacobian of exp, rotation.h).
+ *
+ * Three models share the fields (plate-rod.md "Models"): the Cosserat plate
+ * and rod; the same with the transverse shear stiffnesses multiplied by a
+ * penalty (the Kirchhoff limit; reduced integration keeps it locking-free);
+ * von Karman: d = E3 + beta, beta = theta x E3, membrane strain
+ * sym grad v + 1/2 grad w (x) grad w, bending sym grad beta, shear
+ * grad w + beta, and the rod with linearized rotations whose axial strain
+ * keeps the squares of both rotations of its tangent (moderate rotations;
+ * doc/theory-plate-rod.md).
+ */
+namespace cosmo
+{
+  namespace kinematics
+  {
+    enum class PlateRodModel
+    {
+      cosserat,
+      kirchhoff,
+      von_karman
+    };
+
+    /// Plate local variables: u (0-2), du/dX1 (3-5), du/dX2 (6-8), theta1, theta2 (9, 10),
+    /// dtheta/dX1 (11, 12), dtheta/dX2 (13, 14).
+    constexpr int plate_local_variables = 15;
+    /// Rim rod local variables: u (0-2), du/dS (3-5), theta1, theta2 (6, 7), their S-derivatives
+    /// (8, 9), alpha (10), dalpha/dS (11).
+    constexpr int rim_local_variables = 12;
+
+    /// In-plane growth at a point: G^-1 (2x2) and det G.
+    struct PlateGrowthAtPoint
+    {
+      std::array<std::array<double, 2>, 2> G_inv{{{{1, 0}}, {{0, 1}}}};
+      double                               det_G = 1;
+    };
+
+    namespace internal
+    {
+      /// The exact plate strains (grown reference) from the local variables.
+      template <typename Number>
+      materials::PlateStrains<Number>
+      exact_plate_strains(const std::array<Number, plate_local_variables> &z,
+                          const PlateGrowthAtPoint &                      g)
+      {
+        using V = std::array<Number, 3>;
+        const V a1 = {{1. + z[3], z[4], z[5]}};
+        const V a2 = {{z[6], 1. + z[7], z[8]}};
+        Tensor<1, 3, Number> theta;
+        theta[0]                     = z[9];
+        theta[1]                     = z[10];
+        const Tensor<2, 3, Number> R = rotation_exp(theta);
+        const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
+        V                          d, d1, d2;
+        for (unsigned int i = 0; i < 3; ++i)
+          d[i] = R[i][2];
+        // d_j d = R (omega_j x E3), omega_j = T dtheta/dX_j; omega x E3 = (omega2, -omega1, 0).
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            Number o1 = T[0][0] * z[11 + 2 * j];
+            o1 += T[0][1] * z[12 + 2 * j];
+            Number o2 = T[1][0] * z[11 + 2 * j];
+            o2 += T[1][1] * z[12 + 2 * j];
+            V &dj = j == 0 ? d1 : d2;
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                dj[i] = R[i][0] * o2;
+                dj[i] -= R[i][1] * o1;
+              }
+          }
+        return materials::grown_plate_strains(a1, a2, d, d1, d2, g.G_inv);
+      }
+
+      /// Von Karman strains (grown reference: C -> G^-T C G^-1 etc.).
+      template <typename Number>
+      materials::PlateStrains<Number>
+      von_karman_plate_strains(const std::array<Number, plate_local_variables> &z,
+                               const PlateGrowthAtPoint &                      g)
+      {
+        // grad v (i: component, j: derivative), grad w, beta = (theta2, -theta1), grad beta.
+        const Number gv[2][2] = {{z[3], z[6]}, {z[4], z[7]}};
+        const Number gw[2]    = {z[5], z[8]};
+        const Number beta[2]  = {z[10], -z[9]};
+        const Number gb[2][2] = {{z[12], z[14]}, {-z[11], -z[13]}};
+        Number       C[2][2], K[2][2];
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              C[i][j] = gv[i][j] + gv[j][i] + gw[i] * gw[j];
+              if (i == j)
+                C[i][j] += 1.;
+              K[i][j] = 0.5 * (gb[i][j] + gb[j][i]);
+            }
+        Number gamma[2] = {gw[0] + beta[0], gw[1] + beta[1]};
+        const auto &Gi  = g.G_inv;
+        // A -> Gi^T A Gi for symmetric 2x2 A; v -> Gi^T v.
+        auto pull = [&Gi](const Number A[2][2], const unsigned int a, const unsigned int b) {
+          Number s = 0. * A[0][0];
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int j = 0; j < 2; ++j)
+              s += Gi[i][a] * A[i][j] * Gi[j][b];
+          return s;
+        };
+        materials::PlateStrains<Number> s;
+        s.membrane[0] = 0.5 * (pull(C, 0, 0) - 1.);
+        s.membrane[1] = 0.5 * (pull(C, 1, 1) - 1.);
+        s.membrane[2] = 0.5 * pull(C, 0, 1);
+        s.bending[0]  = pull(K, 0, 0);
+        s.bending[1]  = pull(K, 1, 1);
+        s.bending[2]  = pull(K, 0, 1);
+        for (unsigned int a = 0; a < 2; ++a)
+          {
+            s.shear[a] = Gi[0][a] * gamma[0];
+            s.shear[a] += Gi[1][a] * gamma[1];
+          }
+        return s;
+      }
+    } // namespace internal
+
+    /// The plate's strain measures of the chosen model.
+    template <typename Number>
+    materials::PlateStrains<Number>
+    plate_rod_plate_strains(const std::array<Number, plate_local_variables> &z,
+                            const PlateGrowthAtPoint &                      g,
+                            const PlateRodModel                             model)
+    {
+      return model == PlateRodModel::von_karman ? internal::von_karman_plate_strains(z, g) :
+                                                  internal::exact_plate_strains(z, g);
+    }
+
+    /**
+     * Plate energy per reference area: det G times the plate law's membrane
+     * and bending part (membrane_bending) or its transverse shear part times
+     * shear_scale (the Kirchhoff penalty, 1 otherwise).
+     */
+    template <typename Number>
+    Number
+    plate_energy(const std::array<Number, plate_local_variables> &z,
+                 const PlateGrowthAtPoint &                      g,
+                 const materials::NaghdiPlateLaw &               law,
+                 const PlateRodModel                             model,
+                 const bool                                      membrane_bending,
+                 const double                                    shear_scale)
+    {
+      const auto s = plate_rod_plate_strains(z, g, model);
+      return g.det_G * (membrane_bending ? law.membrane_bending_energy(s) :
+                                           Number(shear_scale * law.shear_energy(s)));
+    }
+
+    /// The rim's reference frame at one point: Lambda0 (columns d1, d2, d3) and the unit tangent
+    /// dX/dS of the discrete rim there.
+    struct RimFrame
+    {
+      Tensor<2, 3> Lambda0;
+      Tensor<1, 3> tangent;
+    };
+
+    /// The rod's six strains (nu, kappa) from the local variables (kappa0 added).
+    template <typename Number>
+    std::array<Number, 6>
+    rim_rod_strains(const std::array<Number, rim_local_variables> &z,
+                    const RimFrame &                              f,
+                    const std::array<double, 3> &                 kappa0,
+                    const PlateRodModel                           model)
+    {
+      std::array<Number, 6> e;
+      Tensor<1, 3, Number>  r1; // r' = t + du/dS
+      for (unsigned int i = 0; i < 3; ++i)
+        r1[i] = f.tangent[i] + z[3 + i];
+      if (model == PlateRodModel::von_karman)
+        {
+          // Linearized rotation psi = theta + alpha E3: nu = Lambda0^T (r' - psi x t),
+          // kappa = kappa0 + Lambda0^T psi'; the axial strain keeps the squares of the
+          // in-plane and out-of-plane rotations of the tangent.
+          const Number psi[3]  = {z[6], z[7], z[10]};
+          const Number dpsi[3] = {z[8], z[9], z[11]};
+          const auto & t       = f.tangent;
+          const Number pxt[3]  = {psi[1] * t[2] - psi[2] * t[1], psi[2] * t[0] - psi[0] * t[2],
+                                 psi[0] * t[1] - psi[1] * t[0]};
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              Number n = 0. * z[0], m = 0. * z[0];
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  n += f.Lambda0[i][k] * (r1[i] - pxt[i]);
+                  m += f.Lambda0[i][k] * dpsi[i];
+                }
+              e[k]     = n;
+              e[3 + k] = m + kappa0[k];
+            }
+          Number q1 = 0. * z[0], q2 = 0. * z[0];
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              q1 += f.Lambda0[i][0] * z[3 + i];
+              q2 += f.Lambda0[i][1] * z[3 + i];
+            }
+          e[2] += 0.5 * (q1 * q1 + q2 * q2);
+          return e;
+        }
+      Tensor<1, 3, Number> theta;
+      theta[0]                     = z[6];
+      theta[1]                     = z[7];
+      const Tensor<2, 3, Number> A = rotation_exp(theta);
+      const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
+      using std::cos;
+      using std::sin;
+      const Number c = cos(z[10]), s = sin(z[10]);
+      // B = exp(alpha [E3]x); w = B^T (T theta') + alpha' E3; v = B^T A^T r'.
+      Number wA[3], Ar[3];
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          wA[i] = T[i][0] * z[8];
+          wA[i] += T[i][1] * z[9];
+          Ar[i] = A[0][i] * r1[0];
+          Ar[i] += A[1][i] * r1[1];
+          Ar[i] += A[2][i] * r1[2];
+        }
+      const Number w[3] = {c * wA[0] + s * wA[1], -s * wA[0] + c * wA[1], wA[2] + z[11]};
+      const Number v[3] = {c * Ar[0] + s * Ar[1], -s * Ar[0] + c * Ar[1], Ar[2]};
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          Number n = 0. * z[0], m = 0. * z[0];
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              n += f.Lambda0[i][k] * v[i];
+              m += f.Lambda0[i][k] * w[i];
+            }
+          e[k]     = n;
+          e[3 + k] = m + kappa0[k];
+        }
+      return e;
+    }
+
+    /// Rim rod energy per reference length: the quadratic law with axial growth.
+    template <typename Number>
+    Number
+    rim_rod_energy(const std::array<Number, rim_local_variables> &z,
+                   const RimFrame &                              f,
+                   const materials::QuadraticRodLaw &            law,
+                   const double                                  growth,
+                   const PlateRodModel                           model)
+    {
+      const std::array<double, 3> kappa0 = {
+        {law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}};
+      return law.energy(rim_rod_strains(z, f, kappa0, model), growth);
+    }
+  } // namespace kinematics
+} // namespace cosmo
+
+#endif
