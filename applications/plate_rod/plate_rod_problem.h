@@ -156,6 +156,16 @@ namespace cosmo
       {
         return dof_handler.n_dofs();
       }
+      const SparseMatrix<double> &
+      system_matrix() const
+      {
+        return matrix;
+      }
+      const AffineConstraints<double> &
+      dof_constraints() const
+      {
+        return constraints;
+      }
       /// Number of rim Fourier modes reported (n = 0 .. n_modes - 1).
       static constexpr unsigned int n_modes = 9;
 
@@ -171,7 +181,7 @@ namespace cosmo
       unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
       unsigned int                   refinements = 3, degree = 2;
       kinematics::PlateRodModel      model = kinematics::PlateRodModel::cosserat;
-      double                         shear_penalty = 1e3;
+      double                         shear_penalty = 100;
       materials::NaghdiPlateLaw      plate_law;
       materials::PlateGrowth         plate_growth;
       std::array<double, 6>          rod_stiffness{{1, 1, 1, 1, 1, 1}};

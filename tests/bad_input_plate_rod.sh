@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Bad input of the plate_rod application: a clear message naming the entry
+# and exit status 1. usage: bad_input_plate_rod.sh <plate_rod> <scratch dir>
+set -uo pipefail
+exe=$1 dir=$2
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+fail=0
+source "$here/expect.sh"
+base() { printf 'subsection Mesh\n set Global refinements = 1\nend\nsubsection Output\n set Output directory = out\nend\n'; }
+{ base; printf 'subsection Mesh\n set Domain = sector\n set Sector angle = 50\nend\n'; } > sector.prm
+expect "a sector angle that is not 180/n degrees" "180/n degrees for an integer n" sector.prm
+{ base; printf 'subsection Rim rod\n set Stiffnesses = 1, 1, 1e12, 1, 1, 1\nend\n'; } > stiff.prm
+expect "a rod stiffer than representable" "stiffer than representable" stiff.prm
+{ base; printf 'subsection Rim rod\n set Stiffnesses = 1, 1, 0, 1, 1, 1\nend\n'; } > zero.prm
+expect "a rod stiffness of zero" "must be positive" zero.prm
+{ base; printf 'subsection Rim rod\n set Stiffnesses = 1, 1, 1\nend\n'; } > three.prm
+expect "three stiffnesses instead of six" "Stiffnesses" three.prm
+{ base; printf 'subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1.001\nend\nsubsection Rim rod\n set Stiffnesses = 1, 1, 1, 1e-5, 1e-5, 1e-5\nend\nsubsection Growth path\n set Start = 0.8\nend\n'; } > start.prm
+expect "a path that starts past the threshold" "already unstable" start.prm
+{ base; printf 'subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1 - 2*r\nend\n'; } > negative.prm
+expect "a growth factor that is negative somewhere" "growth factors must be positive" negative.prm
+{ base; printf 'subsection Plate\n set Thickness = 2\nend\n'; } > thick.prm
+expect "a plate thicker than its radius" "smaller than the radius" thick.prm
+{ base; printf 'subsection Model\n set Model = reissner\nend\n'; } > model.prm
+expect "an unknown model (names the allowed values)" "cosserat|kirchhoff|von karman" model.prm
+exit $fail
