@@ -13,10 +13,12 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/parameter_sweep.h>
 #include <cosmo/materials/energy_derivatives.h>
 
 #include "plate_rod_problem.h"
 
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -267,7 +269,11 @@ namespace cosmo
                         "Load parameter t where the path starts (growth is ramped from "
                         "t = 0, none, to t = 1, the factors given); the flat state there "
                         "must be stable.");
+      prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
+                        "Stop where the first change of stability is located (critical "
+                        "growth only: studies, quick checks).");
       prm.leave_subsection();
+      io::ParameterSweep::declare_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
       prm.enter_subsection("Output");
@@ -350,7 +356,8 @@ namespace cosmo
       prm.leave_subsection();
 
       prm.enter_subsection("Growth path");
-      path_start = prm.get_double("Start");
+      path_start          = prm.get_double("Start");
+      stop_at_first_event = prm.get_bool("Stop at first event");
       prm.leave_subsection();
       newton_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
@@ -750,7 +757,7 @@ namespace cosmo
     }
 
     PlateRodState
-    PlateRodProblem::analyse(const Vector<double> &U) const
+    PlateRodProblem::analyse(const Vector<double> &U, const unsigned int n_modes) const
     {
       PlateRodState s;
       s.t = load_parameter;
@@ -822,7 +829,7 @@ namespace cosmo
     std::pair<unsigned int, bool>
     PlateRodProblem::classify_mode(const Vector<double> &mode) const
     {
-      const auto   s        = analyse(mode);
+      const auto   s        = analyse(mode, 65);
       const bool   out      = s.max_abs_w > s.max_abs_inplane;
       const auto & a        = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
       unsigned int n        = 0;
@@ -843,6 +850,7 @@ namespace cosmo
       p.rod_EA    = rod_stiffness[2];
       p.rod_EI1   = rod_stiffness[3];
       p.rod_EI2   = rod_stiffness[4];
+      p.rod_GJ    = rod_stiffness[5];
       return p;
     }
 
@@ -879,6 +887,18 @@ namespace cosmo
     std::vector<solvers::EventRecord>
     PlateRodProblem::follow_branches()
     {
+      if (stop_at_first_event)
+        try
+          {
+            solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
+            driver.progress = [this](const std::string &s) { say(s); };
+            return driver.run(*this, solution, load_parameter);
+          }
+        catch (FirstEventLocated &)
+          {
+            say("  stopped at the first event ('Growth path / Stop at first event')");
+            return located_events;
+          }
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
       return driver.run(*this, solution, load_parameter);
@@ -942,8 +962,23 @@ namespace cosmo
       if (mode)
         r.mode.assign(mode->begin(), mode->end());
       located_events.push_back(r);
-      if (!write_output)
-        return;
+      if (stop_at_first_event)
+        {
+          std::ostringstream m;
+          m << std::setprecision(10) << "  " << e.name() << " at t = " << e.lambda
+            << " (negative eigenvalues " << e.n_negative_before << " -> " << e.n_negative_after
+            << ")";
+          say(m.str());
+        }
+      if (write_output)
+        write_event(e, U, mode);
+      if (stop_at_first_event)
+        throw FirstEventLocated();
+    }
+
+    void
+    PlateRodProblem::write_event(const Event &, const Vector<double> &U, const Vector<double> *mode)
+    {
       const std::string tag = Utilities::int_to_string(located_events.size(), 2);
       write_plate(output_directory + "/event-" + tag + ".vtu", U);
       if (mode)
@@ -1168,6 +1203,73 @@ namespace cosmo
       });
     }
 
+    io::JSON
+    PlateRodProblem::closed_forms(double &first_mismatch, std::string &text) const
+    {
+      io::JSON     closed = io::JSON::object();
+      const double Delta1 = mismatch(1.);
+      first_mismatch      = NAN;
+      if (!std::isfinite(Delta1) || Delta1 == 0)
+        return closed;
+      const auto p = closed_form_setting();
+      // t at which the mismatch g_p/g_r - 1 reaches Delta (linear ramps).
+      const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;
+      auto         t_of = [&](const double D) { return D / (a - b * (1 + D)); };
+      auto         entry = [&](const unsigned int n, const double D) {
+        io::JSON x    = io::JSON::object();
+        x["n"]        = n;
+        x["mismatch"] = D;
+        x["t"]        = t_of(D);
+        return x;
+      };
+      std::ostringstream c;
+      c << std::setprecision(6);
+      if (Delta1 > 0)
+        {
+          const double D                     = analysis::axisymmetric_critical_mismatch(p);
+          closed["axisymmetric"]["mismatch"] = D;
+          closed["axisymmetric"]["t"]        = t_of(D);
+          first_mismatch                     = D;
+          c << "  closed form (Kirchhoff, small strain): axisymmetric buckling at Delta = " << D
+            << ", t = " << t_of(D);
+        }
+      else
+        {
+          // The lobed families, over the mode numbers the domain admits (a sector pi/n keeps
+          // the multiples of n).
+          const unsigned int step = domain == "sector" ? sector_n : 1;
+          const unsigned int n0   = step >= 2 ? step : 2;
+          double             best_out = -1e300, best_planar = -1e300;
+          unsigned int       n_out = 0, n_planar = 0;
+          c << "  closed forms (Kirchhoff, small strain), out-of-plane lobes:";
+          for (unsigned int n = n0; n <= 12; n += step)
+            {
+              const double D = analysis::out_of_plane_critical_mismatch(p, n);
+              closed["out_of_plane"].push_back(entry(n, D));
+              if (n <= n0 + 3 * step)
+                c << " n = " << n << ": Delta = " << D << " (t = " << t_of(D) << ")";
+              if (D > best_out)
+                best_out = D, n_out = n;
+            }
+          for (unsigned int n = n0; n <= 200; n += step)
+            {
+              const double D = analysis::planar_critical_mismatch(p, n);
+              if (D > best_planar)
+                best_planar = D, n_planar = n;
+            }
+          closed["first_out_of_plane"] = entry(n_out, best_out);
+          closed["first_planar"]       = entry(n_planar, best_planar);
+          first_mismatch               = std::max(best_out, best_planar);
+          c << "\n  first out-of-plane mode n = " << n_out << " at Delta = " << best_out
+            << "; first planar mode n = " << n_planar << " at Delta = " << best_planar << " (t = "
+            << t_of(best_planar) << ")";
+        }
+      closed["first"]["mismatch"] = first_mismatch;
+      closed["first"]["t"]        = t_of(first_mismatch);
+      text                        = c.str();
+      return closed;
+    }
+
     void
     PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
@@ -1191,40 +1293,11 @@ namespace cosmo
       say(info.str());
 
       // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
-      io::JSON closed = io::JSON::object();
-      const double Delta1 = mismatch(1.);
-      if (std::isfinite(Delta1) && Delta1 != 0)
-        {
-          const auto p = closed_form_setting();
-          // t at which the mismatch g_p/g_r - 1 reaches Delta (linear ramps).
-          const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;
-          auto t_of = [&](const double D) { return D / (a - b * (1 + D)); };
-          std::ostringstream c;
-          c << std::setprecision(6);
-          if (Delta1 > 0)
-            {
-              const double D = analysis::axisymmetric_critical_mismatch(p);
-              closed["axisymmetric"]["mismatch"] = D;
-              closed["axisymmetric"]["t"]        = t_of(D);
-              c << "  closed form (Kirchhoff): axisymmetric buckling at Delta = " << D
-                << ", t = " << t_of(D);
-            }
-          else
-            {
-              c << "  closed form (Kirchhoff), planar lobes, soft-plate limit:";
-              for (unsigned int n = 2; n <= 4; ++n)
-                {
-                  const double D = analysis::planar_critical_mismatch_soft_plate(p, n);
-                  io::JSON     x = io::JSON::object();
-                  x["n"]         = n;
-                  x["mismatch"]  = D;
-                  x["t"]         = t_of(D);
-                  closed["planar_soft_plate"].push_back(x);
-                  c << " n = " << n << ": Delta = " << D << " (t = " << t_of(D) << ")";
-                }
-            }
-          say(c.str());
-        }
+      double             first_closed = NAN;
+      std::string        closed_text;
+      const io::JSON     closed = closed_forms(first_closed, closed_text);
+      if (!closed_text.empty())
+        say(closed_text);
 
       for (const auto &c : {"step", "branch", "t", "mismatch", "plate_growth_rim", "rod_growth",
                             "newton_iterations"})
@@ -1301,6 +1374,7 @@ namespace cosmo
               const auto     c = classify_mode(mode);
               x["mode_number"]  = c.first;
               x["mode_type"]    = c.second ? "out of plane" : "planar";
+              x["mode_type_out_of_plane"] = c.second ? 1 : 0;
               x["mode_vtu"]     = "event-" + tag + "-mode.vtu";
               x["eigenvalue"]   = e.eigenvalue;
             }
@@ -1315,9 +1389,108 @@ namespace cosmo
       say("output in " + output_directory + "/");
     }
 
+    namespace
+    {
+      /**
+       * A study (section "Parameter sweep"): the run repeated for each value
+       * of one entry, each point in its own directory point-NN/, and
+       * sweep.csv with the critical growth (the first located event on the
+       * flat branch), its mode and the closed form beside it, rewritten
+       * after every point. A point that fails or is refused is recorded and
+       * the study goes on; a refused value makes the study end with status 1.
+       */
+      void
+      run_study(ParameterHandler &prm, const io::RunOptions &options, const io::ParameterSweep &sweep)
+      {
+        prm.enter_subsection("Output");
+        const std::string directory = prm.get("Output directory");
+        prm.leave_subsection();
+        io::create_directory(directory);
+        io::RunLog log(directory + "/sweep-log.txt", options.quiet);
+        log("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
+            ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
+        io::write_file_atomically(directory + "/parameters.prm", [&](std::ostream &o) {
+          prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
+        });
+        io::CSVTable table;
+        table.add_column("value", sweep.axis_label());
+        for (const auto &c : {"converged", "t_critical", "mismatch_critical",
+                              "closed_form_mismatch", "mode_number", "mode_out_of_plane", "dofs",
+                              "seconds"})
+          table.add_column(c);
+        std::string refused;
+        for (unsigned int k = 0; k < sweep.size(); ++k)
+          {
+            const auto        start = std::chrono::steady_clock::now();
+            const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
+            double            converged = 0, t = NAN, D = NAN, closed = NAN, n = NAN, out = NAN,
+                   dofs = NAN;
+            try
+              {
+                sweep.apply(prm, k);
+                io::ParameterSweep::set_entry(prm, "Output/Output directory", point, "Output",
+                                              "Output directory");
+                PlateRodProblem problem;
+                problem.parse_parameters(prm);
+                io::RunOptions quiet = options;
+                quiet.quiet          = true;
+                try
+                  {
+                    problem.run(quiet, prm);
+                    converged = 1;
+                  }
+                catch (io::RunFailure &e)
+                  {
+                    log("  point " + std::to_string(k) + ": " + e.what());
+                  }
+                dofs = problem.n_dofs();
+                for (const auto &e : problem.events())
+                  if (e.event.branch == 0 &&
+                      e.event.kind == solvers::BifurcationProblem::Event::Kind::branch_point)
+                    {
+                      t = e.event.lambda;
+                      D = problem.mismatch(t);
+                      if (!e.mode.empty())
+                        {
+                          const auto c =
+                            problem.classify_mode(Vector<double>(e.mode.begin(), e.mode.end()));
+                          n   = c.first;
+                          out = c.second;
+                        }
+                      break;
+                    }
+                std::string text;
+                problem.closed_forms(closed, text);
+              }
+            catch (io::InputError &e)
+              {
+                refused += std::string(refused.empty() ? "" : "; ") + e.what();
+                log("  point " + std::to_string(k) + " refused: " + e.what());
+              }
+            const double seconds =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            table.add_row({sweep.value(k), converged, t, D, closed, n, out, dofs, seconds});
+            table.write(directory + "/sweep.csv");
+            std::ostringstream line;
+            line << std::setprecision(6) << "  " << sweep.label() << " = " << sweep.value(k)
+                 << ": critical t = " << t << ", mismatch " << D << " (closed form " << closed
+                 << "), mode " << n << (out == 1 ? " out of plane" : out == 0 ? " planar" : "")
+                 << ", " << std::setprecision(3) << seconds << " s";
+            log(line.str());
+          }
+        log("output in " + directory + "/");
+        if (!refused.empty())
+          throw io::InputError("Parameter sweep", "Values", sweep.entry(), refused);
+      }
+    } // namespace
+
     void
     run_plate_rod(ParameterHandler &prm, const io::RunOptions &options)
     {
+      io::ParameterSweep sweep;
+      sweep.parse_parameters(prm);
+      if (sweep.enabled())
+        return run_study(prm, options, sweep);
       PlateRodProblem problem;
       problem.parse_parameters(prm);
       problem.run(options, prm);

@@ -117,10 +117,14 @@ namespace cosmo
       follow_branches();
       /// Diagnostics of a state (energies, deflections, rim Fourier amplitudes).
       PlateRodState
-      analyse(const Vector<double> &U) const;
+      analyse(const Vector<double> &U, unsigned int n_modes = PlateRodProblem::n_modes) const;
       /// The closed-form Kirchhoff thresholds for this plate and rim (small strain).
       analysis::PlateRod
       closed_form_setting() const;
+      /// The closed-form thresholds for this problem (summary.json's "closed_form"), the first
+      /// of them (NaN if the growth is not uniform and isotropic) and a text for the log.
+      io::JSON
+      closed_forms(double &first_mismatch, std::string &text) const;
       /// Mismatch Delta = plate growth strain - rod growth strain at load parameter t (uniform
       /// isotropic plate growth only; NaN otherwise).
       double
@@ -187,6 +191,7 @@ namespace cosmo
       std::array<double, 6>          rod_stiffness{{1, 1, 1, 1, 1, 1}};
       double                         rod_growth = 1;
       double                         path_start = 0;
+      bool                           stop_at_first_event = false;
       solvers::NewtonSettings        newton_settings;
       solvers::ArclengthSettings     arclength_settings;
       std::string                    output_directory;
@@ -232,6 +237,11 @@ namespace cosmo
       rod_law() const;
       void
       say(const std::string &line);
+      /// Thrown by located_event when the run stops at the first event.
+      struct FirstEventLocated
+      {};
+      void
+      write_event(const Event &e, const Vector<double> &U, const Vector<double> *mode);
       void
       write_plate(const std::string &file, const Vector<double> &U) const;
       void
