@@ -4,7 +4,8 @@
 # repository root (the .prm files set output directories relative to it, under
 # output/ and output/studies/). Each run's console output goes to
 # output/logs/<name>.log. Then plot: output/<example>/steps.png and
-# output/studies/<study>/sweep.png.
+# output/studies/<study>/sweep.png; the strip's and the plate_rod's
+# bifurcation diagrams and the plate_rod critical-growth study figure.
 set -euo pipefail
 
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -26,10 +27,14 @@ studies=(parameter_files/rod_cross_section/studies/*.prm)
 mkdir -p output/logs
 failed=0
 strips=(parameter_files/strip/*.prm)
-for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}"; do
+plates=(parameter_files/plate_rod/*.prm parameter_files/plate_rod/studies/*.prm)
+for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}" "${plates[@]}"; do
   name="$(basename "$prm" .prm)"
   exe="$EXE"
-  case "$prm" in parameter_files/strip/*) name="strip_$name"; exe="$BUILD/strip" ;; esac
+  case "$prm" in
+    parameter_files/strip/*) name="strip_$name"; exe="$BUILD/strip" ;;
+    parameter_files/plate_rod/*) name="plate_rod_$name"; exe="$BUILD/plate_rod" ;;
+  esac
   logfile="output/logs/$name.log"
   start=$EPOCHREALTIME
   if "$exe" "$prm" >"$logfile" 2>&1; then result=OK; else result=FAILED; failed=1; fi
@@ -60,6 +65,19 @@ if ((${#strips[@]})); then
     "$py" scripts/ribbon_models.py --plot output/strip_ribbon_comparison/table.csv \
       --out output/strip_ribbon_comparison/ribbons.png --h 0.01 \
       || { log "plotting ribbons FAILED" >&2; failed=1; }
+  fi
+fi
+
+if ((${#plates[@]})); then
+  log "plotting plate_rod (bifurcation diagrams, critical growth study)"
+  for d in output/plate_rod/*/; do
+    [[ -f "$d/steps.csv" ]] || continue
+    python3 scripts/plot_plate_rod.py "$d" || { log "plotting $d FAILED" >&2; failed=1; }
+  done
+  studies_pr=(output/plate_rod/studies/critical_growth_vs_rim_stiffness_*/)
+  if ((${#studies_pr[@]})); then
+    python3 scripts/plot_plate_rod_study.py output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
+      "${studies_pr[@]}" || { log "plotting the plate_rod study FAILED" >&2; failed=1; }
   fi
 fi
 

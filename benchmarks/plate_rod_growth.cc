@@ -1,0 +1,67 @@
+// Part 3 benchmark: wall time per continuation step and per stability
+// evaluation of the growing plate bounded by a rod, full disc against the
+// quarter sector, at two mesh sizes; time from the flat state to the
+// located critical growth. Run from the build directory:
+//   ./benchmark_plate_rod_growth [max refinements = 5]
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include "plate_rod_problem.h"
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace dealii;
+using namespace cosmo;
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  const unsigned int               max_refinements = argc > 1 ? std::stoi(argv[1]) : 5;
+  std::cout << "domain      refs     DoFs  steps  t_critical  to critical [s]  per step [s]  "
+               "Jacobian [s]  factorization [s]  smallest eig. [s]\n";
+  for (const unsigned int k : {4u, max_refinements})
+    for (const std::string domain : {"sector", "full disc"})
+      {
+        // The dome example's plate and rim (closed-form critical t = 0.226).
+        ParameterHandler prm;
+        plate_rod::PlateRodProblem::declare_parameters(prm);
+        std::ostringstream t;
+        t << "subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1.0004\nend\n"
+          << "subsection Rim rod\n set Stiffnesses = 0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6\nend\n"
+          << "subsection Mesh\n set Domain = " << domain << "\n set Sector angle = 90\n"
+          << " set Global refinements = " << k << "\nend\n"
+          << "subsection Growth path\n set Stop at first event = true\nend\n"
+          << "subsection Arclength continuation\n set Initial step = 0.05\n set Maximum step = 0.1\n"
+          << " set Parameter range = 0, 1\n set Event tolerance = 1e-6\nend\n";
+        prm.parse_input_from_string(t.str());
+        plate_rod::PlateRodProblem p;
+        p.parse_parameters(prm);
+        p.set_quiet(true);
+        const auto start = std::chrono::steady_clock::now();
+        p.setup_system();
+        p.solve_flat_state(0.);
+        p.follow_branches();
+        const double total =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const auto & tm   = p.timings();
+        auto         per  = [&](const std::string &phase) {
+          return tm.calls(phase) ? tm.seconds(phase) / tm.calls(phase) : 0.;
+        };
+        const unsigned int steps = p.path().size();
+        std::cout << std::left << std::setw(10) << domain << std::right << std::setw(6) << k
+                  << std::setw(9) << p.n_dofs() << std::setw(7) << steps << std::setw(12)
+                  << std::setprecision(6) << (p.events().empty() ? NAN : p.events()[0].event.lambda)
+                  << std::setprecision(3) << std::setw(17) << total << std::setw(14)
+                  << total / std::max(1u, steps) << std::setw(14) << per("assembly (Jacobian)")
+                  << std::setw(19) << per("factorization") << std::setw(19)
+                  << per("stability (smallest eigenvalue)") << std::endl;
+        std::cout << "    phases:";
+        for (const auto &phase : tm.phases())
+          std::cout << "  " << phase << " " << tm.seconds(phase) << " s / " << tm.calls(phase);
+        std::cout << std::endl;
+      }
+}

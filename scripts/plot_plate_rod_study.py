@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""Critical growth against a swept parameter for several plate_rod studies.
+
+Usage: python3 scripts/plot_plate_rod_study.py OUT.png DIR [DIR ...]
+
+Each DIR is the output directory of a plate_rod study (sweep.csv and
+parameters.prm). Draws, in one figure, the critical mismatch (first change
+of stability on the flat branch) of every study against the swept value
+(log axis when the values span more than a decade), the Kirchhoff closed
+form as a line, and in a second panel each study's relative difference to
+the closed form. The legend names each study by its model. Exit status 0,
+1 bad usage, 2 no matplotlib.
+"""
+
+import csv
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_steps  # noqa: E402
+
+
+def read_study(d):
+    with open(os.path.join(d, "sweep.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    col = {}
+    for r in rows:
+        for k, v in r.items():
+            col.setdefault(k.split(" [")[0], []).append(plot_steps.to_float(v))
+    model = "?"
+    try:
+        for line in open(os.path.join(d, "parameters.prm")):
+            m = re.match(r"\s*set Model\s*=\s*(.+)", line)
+            if m:
+                model = m.group(1).strip()
+    except OSError:
+        pass
+    axis = next((k for k in rows[0] if k.startswith("value")), "value") if rows else "value"
+    return col, model, axis
+
+
+def main(argv):
+    if len(argv) < 3 or any(a.startswith("-") for a in argv[1:]):
+        sys.stderr.write(__doc__)
+        return 1
+    plt = plot_steps.import_pyplot()
+    if plt is None:
+        plot_steps.reexec_with_system_python()
+        sys.stderr.write("plot_plate_rod_study.py: matplotlib cannot be imported\n")
+        return 2
+    out, dirs = argv[1], argv[2:]
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    axis_label = "value"
+    closed_done = False
+    markers = ["o", "s", "^", "v", "D"]
+    for k, d in enumerate(dirs):
+        col, model, axis_label = read_study(d)
+        x, y, c = col["value"], col["mismatch_critical"], col["closed_form_mismatch"]
+        if not closed_done and any(math.isfinite(v) for v in c):
+            axes[0].plot(x, c, "k-", lw=1, label="closed form (Kirchhoff)")
+            closed_done = True
+        axes[0].plot(x, y, markers[k % len(markers)], ms=6, mfc="none", label=model)
+        axes[1].plot(x, [a / b - 1 if b else math.nan for a, b in zip(y, c)],
+                     markers[k % len(markers)] + "-", ms=5, mfc="none", label=model)
+    for ax in axes:
+        values = [v for v in read_study(dirs[0])[0]["value"] if v > 0]
+        if values and max(values) / min(values) > 10:
+            ax.set_xscale("log")
+        ax.set_xlabel(axis_label.split(" [")[0].replace("value", "swept value"))
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[0].set_ylabel("critical mismatch Delta = g_plate / g_rim - 1")
+    axes[1].set_ylabel("numerical / closed form - 1")
+    fig.suptitle("critical growth of the flat state", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
+    print("wrote %s" % out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
