@@ -93,9 +93,9 @@ def plot_run(plt, run_dir):
     if first is not None and math.isfinite(first):
         for ax in axes:
             ax.axvline(first, color="k", lw=4, alpha=0.12)
-    axes[0].set_ylabel("out-of-plane amplitude (dome height or half the w range) [R]")
-    axes[1].set_ylabel("rim lobe amplitudes |w_n| (o), |u_r,n| (s) [R]")
-    axes[2].set_ylabel("energy - flat branch [E h R^2]")
+    axes[0].set_ylabel("out-of-plane amplitude (dome height or half the w range)")
+    axes[1].set_ylabel("rim lobe amplitudes |w_n| (o), |u_r,n| (s)")
+    axes[2].set_ylabel("energy - flat branch")
     for ax in axes:
         ax.set_xlabel("growth parameter t")
         ax.grid(True, alpha=0.3)

@@ -24,4 +24,9 @@ expect "a growth factor that is negative somewhere" "growth factors must be posi
 expect "a plate thicker than its radius" "smaller than the radius" thick.prm
 { base; printf 'subsection Model\n set Model = reissner\nend\n'; } > model.prm
 expect "an unknown model (names the allowed values)" "cosserat|kirchhoff|von karman" model.prm
+{ base; printf 'subsection Rim rod\n set Stiffness file = no-such-summary.json\nend\n'; } > file.prm
+expect "a stiffness file that does not exist" "cannot open it" file.prm
+printf '{"stiffness": [[1, 0], [0, 1]]}\n' > small.json
+{ base; printf 'subsection Rim rod\n set Stiffness file = small.json\nend\n'; } > small.prm
+expect "a stiffness file without a 6x6 stiffness" "found 4 numbers" small.prm
 exit $fail

@@ -9,6 +9,7 @@
 #include "plate_rod_problem.h"
 #include "test_tools.h"
 
+#include <fstream>
 #include <iomanip>
 #include <random>
 #include <sstream>
@@ -410,6 +411,28 @@ namespace
         check("a planar mode with 16 lobes", c.first == 16 && !c.second);
       }
   }
+
+  // The rim's stiffnesses read from a part-1 summary.json (its 6x6 stiffness;
+  // the diagonal is used): the same problem as with 'Stiffnesses' given.
+  void
+  stiffness_file()
+  {
+    {
+      std::ofstream f("rim_summary.json");
+      f << "{\n  \"stiffness\": [\n"
+        << "    [0.1, 0, 0, 0, 0, 1e-9],\n    [0, 0.2, 0, 0, 0, 0],\n    [0, 0, 0.3, 1e-7, 0, 0],\n"
+        << "    [0, 0, 1e-7, 4e-6, 0, 0],\n    [0, 0, 0, 0, 5e-6, 0],\n    [1e-9, 0, 0, 0, 0, 6e-6]\n"
+        << "  ],\n  \"stiffness_order\": \"nu1, nu2, nu3, kappa1, kappa2, kappa3\"\n}\n";
+    }
+    Setup s;
+    s.refinements = 1;
+    s.extra       = "subsection Rim rod\n set Stiffness file = rim_summary.json\nend\n";
+    const auto p  = make(s)->closed_form_setting();
+    check_close("EA from the file", p.rod_EA, 0.3, 0, 0);
+    check_close("EI1 from the file", p.rod_EI1, 4e-6, 0, 0);
+    check_close("EI2 from the file", p.rod_EI2, 5e-6, 0, 0);
+    check_close("GJ from the file", p.rod_GJ, 6e-6, 0, 0);
+  }
 } // namespace
 
 int
@@ -423,6 +446,7 @@ main(int argc, char **argv)
                              {"sector_vs_full_disc", sector_vs_full_disc},
                              {"von_karman_vs_cosserat", von_karman_vs_cosserat},
                              {"out_of_plane_lobes", out_of_plane_lobes},
-                             {"planar_lobes", planar_lobes}};
+                             {"planar_lobes", planar_lobes},
+                             {"stiffness_file", stiffness_file}};
   return cosmo_test::run_case("test_plate_rod", "", cases, argc, argv, 2, 2);
 }

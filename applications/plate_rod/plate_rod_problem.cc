@@ -19,6 +19,7 @@
 #include "plate_rod_problem.h"
 
 #include <chrono>
+#include <fstream>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -239,6 +240,11 @@ namespace cosmo
                         "the plate normal, d3 the tangent): shear along d1, d2, extension, "
                         "bending about d1 (out of plane), about d2 (in plane), torsion. E.g. the "
                         "diagonal of a rod_cross_section stiffness.");
+      prm.declare_entry("Stiffness file", "", Patterns::Anything(),
+                        "If set: a rod_cross_section summary.json whose 6x6 'stiffness' gives "
+                        "the rim's stiffnesses (its diagonal; the section's X1 is the rim's "
+                        "radial axis d1, X2 the plate normal d2); replaces 'Stiffnesses'. The "
+                        "largest dropped off-diagonal coupling is logged.");
       prm.declare_entry("Growth factor", "1", Patterns::Double(0),
                         "Axial growth g of the rim at t = 1 (ramped as 1 + t (g - 1)); the "
                         "stress-free rim is a ring of radius g R.");
@@ -303,6 +309,54 @@ namespace cosmo
       prm.enter_subsection("Rim rod");
       const auto k = io::get_double_list(prm, "Stiffnesses", 6, "Rim rod");
       std::copy(k.begin(), k.end(), rod_stiffness.begin());
+      stiffness_file = prm.get("Stiffness file");
+      if (!stiffness_file.empty())
+        {
+          // The part-1 summary.json: "stiffness": [[6 numbers], ... 6 rows].
+          std::ifstream in(stiffness_file);
+          if (!in)
+            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                 "a readable rod_cross_section summary.json (cannot open it)");
+          std::stringstream buffer;
+          buffer << in.rdbuf();
+          const std::string text = buffer.str();
+          const auto        at   = text.find("\"stiffness\"");
+          std::vector<double> K;
+          if (at != std::string::npos)
+            {
+              // The array from its '[' to the matching ']'.
+              std::size_t i = text.find('[', at), end = i;
+              for (int depth = 0; end != std::string::npos && end < text.size(); ++end)
+                {
+                  depth += text[end] == '[' ? 1 : text[end] == ']' ? -1 : 0;
+                  if (depth == 0)
+                    break;
+                }
+              std::string body =
+                i == std::string::npos || end >= text.size() ? "" : text.substr(i, end - i + 1);
+              for (char &c : body)
+                if (c == '[' || c == ']' || c == ',')
+                  c = ' ';
+              std::istringstream numbers(body);
+              double             v;
+              while (numbers >> v)
+                K.push_back(v);
+            }
+          if (K.size() != 36)
+            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" "
+                                 "(found " + std::to_string(K.size()) + " numbers)");
+          double coupling = 0;
+          for (unsigned int a = 0; a < 6; ++a)
+            {
+              rod_stiffness[a] = K[7 * a];
+              for (unsigned int b = 0; b < 6; ++b)
+                if (a != b)
+                  coupling = std::max(coupling, std::abs(K[6 * a + b]) /
+                                                  std::sqrt(std::abs(K[7 * a] * K[7 * b])));
+            }
+          stiffness_coupling = coupling;
+        }
       rod_growth = prm.get_double("Growth factor");
       if (!(rod_growth > 0))
         throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
@@ -352,6 +406,10 @@ namespace cosmo
         sector_n = static_cast<unsigned int>(std::round(n));
       }
       refinements = prm.get_integer("Global refinements");
+      if (domain == "full disc" && refinements == 0)
+        throw io::InputError("Mesh", "Global refinements", "0",
+                             "at least 1 for the full disc (its coarse mesh has no vertex at the "
+                             "centre for the gauge conditions)");
       degree      = prm.get_integer("Polynomial degree");
       prm.leave_subsection();
 
@@ -434,8 +492,8 @@ namespace cosmo
     {
       constraints.clear();
       const bool sector = domain == "sector";
-      // The apex: no translation, director E3 (gauge of the full disc; implied by the mirrors
-      // of a sector with n >= 2).
+      // The apex: no translation, director E3 (the gauge of the full disc; on a sector with
+      // n >= 2 the mirrors imply all but u3 = 0, the one gauge left there).
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
           if (cell->vertex(v).norm() < 1e-10 * radius)
@@ -581,8 +639,6 @@ namespace cosmo
       const double    g_rod        = rod_growth_at(t);
       const auto      rod          = rod_law();
       const double    shear_scale  = model == kinematics::PlateRodModel::kirchhoff ? shear_penalty : 1.;
-      const bool      want_energy  = energies != nullptr;
-      (void)want_energy;
 
       auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
                         Scratch &                                           sc,
@@ -730,9 +786,12 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
+          factorized_at.reinit(0);
           say(std::string("  factorization failed: ") + e.what());
           return 1;
         }
+      factorized_at   = U;
+      factorized_load = load_parameter;
       return 0;
     }
 
@@ -806,7 +865,7 @@ namespace cosmo
         }
       s.rim_radial_strain = ur_mean / length / radius;
       // The apex carries w = 0 (gauge): the dome height is minus the rim's mean w.
-      s.w_centre = -(sector ? aw[0] : aw[0]) / span;
+      s.w_centre = -aw[0] / span;
       double wmin = 0, wmax = 0;
       for (unsigned int i = 0; i < U.size(); ++i)
         if (dof_component[i] == 2)
@@ -919,6 +978,10 @@ namespace cosmo
         s.rod_energy   = e[1];
       }
       {
+        // The driver may have factorized elsewhere since (locating an event).
+        if (!(factorized_at.size() == U.size() && factorized_load == load_parameter &&
+              std::equal(U.begin(), U.end(), factorized_at.begin())))
+          setup_jacobian(U);
         io::PhaseTimer::Scope scope(timer, "stability (smallest eigenvalue)");
         Vector<double>        mask, mode;
         mode_mask(mask);
@@ -1291,6 +1354,15 @@ namespace cosmo
            << ", " << triangulation.n_active_cells() << " cells, Q" << degree << ", "
            << dof_handler.n_dofs() << " DoFs (" << constraints.n_constraints() << " constrained)";
       say(info.str());
+      if (!stiffness_file.empty())
+        {
+          std::ostringstream m;
+          m << "  rim stiffnesses from " << stiffness_file << ":";
+          for (const double k : rod_stiffness)
+            m << " " << k;
+          m << " (largest dropped coupling K_ab / sqrt(K_aa K_bb) = " << stiffness_coupling << ")";
+          say(m.str());
+        }
 
       // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
       double             first_closed = NAN;
@@ -1302,17 +1374,17 @@ namespace cosmo
       for (const auto &c : {"step", "branch", "t", "mismatch", "plate_growth_rim", "rod_growth",
                             "newton_iterations"})
         steps_table.add_column(c);
-      steps_table.add_column("energy", "E h R^2");
-      steps_table.add_column("plate_energy", "E h R^2");
-      steps_table.add_column("rod_energy", "E h R^2");
-      steps_table.add_column("dome_height", "R");
-      steps_table.add_column("w_range", "R");
-      steps_table.add_column("max_inplane_displacement", "R");
+      steps_table.add_column("energy");
+      steps_table.add_column("plate_energy");
+      steps_table.add_column("rod_energy");
+      steps_table.add_column("dome_height");
+      steps_table.add_column("w_range");
+      steps_table.add_column("max_inplane_displacement");
       steps_table.add_column("rim_radial_strain");
       for (unsigned int m = 0; m < n_modes; ++m)
-        steps_table.add_column("rim_w_" + std::to_string(m), "R");
+        steps_table.add_column("rim_w_" + std::to_string(m));
       for (unsigned int m = 0; m < n_modes; ++m)
-        steps_table.add_column("rim_ur_" + std::to_string(m), "R");
+        steps_table.add_column("rim_ur_" + std::to_string(m));
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("smallest_eigenvalue");
 

@@ -188,8 +188,10 @@ namespace cosmo
       double                         shear_penalty = 100;
       materials::NaghdiPlateLaw      plate_law;
       materials::PlateGrowth         plate_growth;
-      std::array<double, 6>          rod_stiffness{{1, 1, 1, 1, 1, 1}};
+      std::array<double, 6>          rod_stiffness{{0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6}};
       double                         rod_growth = 1;
+      std::string                    stiffness_file;
+      double                         stiffness_coupling = 0;
       double                         path_start = 0;
       bool                           stop_at_first_event = false;
       solvers::NewtonSettings        newton_settings;
@@ -210,6 +212,8 @@ namespace cosmo
       solvers::SparseDirectSolver  solver;
       Vector<double>               solution;
       std::vector<unsigned char>   dof_component; ///< field component of each DoF
+      Vector<double>               factorized_at;  ///< the state of the last factorization
+      double                       factorized_load = 0;
 
       // Run records
       std::vector<PlateRodState>        states;
