@@ -257,6 +257,19 @@ namespace cosmo
                         "moderate rotations (doc/theory-plate-rod.md).");
       prm.declare_entry("Shear penalty factor", "100", Patterns::Double(1),
                         "Factor on the shear stiffnesses in the kirchhoff model.");
+      prm.declare_entry("Shear integration", "automatic",
+                        Patterns::Selection("automatic|stabilized|reduced"),
+                        "Transverse shear of the plate. stabilized: full Gauss integration with "
+                        "the shear stiffness times t^2/(t^2 + alpha h_K^2) (h_K the cell "
+                        "diameter; t^2 divided by the penalty in the kirchhoff model): "
+                        "locking-free and free of spurious modes; reduced: p Gauss points "
+                        "(Q2 then has a spurious transverse mode with little shear energy, "
+                        "which membrane compression destabilizes on fine meshes: measured at "
+                        "h_K ~ 3 h; the kirchhoff penalty keeps it far away); automatic: "
+                        "reduced for kirchhoff, stabilized otherwise.");
+      prm.declare_entry("Shear stabilization", "0.03", Patterns::Double(0),
+                        "alpha of the stabilized shear integration (0.03: the smallest "
+                        "threshold errors on coarse meshes, doc/theory-plate-rod.md).");
       prm.leave_subsection();
       prm.enter_subsection("Mesh");
       prm.declare_entry("Domain", "full disc", Patterns::Selection("full disc|sector"),
@@ -391,7 +404,10 @@ namespace cosmo
       model = m == "cosserat" ? kinematics::PlateRodModel::cosserat :
               m == "kirchhoff" ? kinematics::PlateRodModel::kirchhoff :
                                  kinematics::PlateRodModel::von_karman;
-      shear_penalty = prm.get_double("Shear penalty factor");
+      shear_penalty       = prm.get_double("Shear penalty factor");
+      stabilized_shear    = prm.get("Shear integration") == "stabilized" ||
+                         (prm.get("Shear integration") == "automatic" && m != "kirchhoff");
+      shear_stabilization = prm.get_double("Shear stabilization");
       prm.leave_subsection();
 
       prm.enter_subsection("Mesh");
@@ -656,7 +672,18 @@ namespace cosmo
         std::array<double, n_plate * n_plate> H;
         for (const bool membrane_bending : {true, false})
           {
-            FEValues<2> &fev = membrane_bending ? sc.fev_full : sc.fev_reduced;
+            FEValues<2> &fev =
+              membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
+            // Stabilized shear (Pitkaranta; Stenberg): fully integrated with the shear
+            // stiffness times t^2/(t^2 + alpha h_K^2), t^2 the thickness squared over the
+            // Kirchhoff penalty: locking-free, and without the spurious transverse mode that
+            // reduced integration of Q2 leaves (doc/theory-plate-rod.md).
+            double cell_shear_scale = shear_scale;
+            if (!membrane_bending && stabilized_shear)
+              {
+                const double t2 = thickness * thickness / shear_scale, hK = cell->diameter();
+                cell_shear_scale = shear_scale * t2 / (t2 + shear_stabilization * hK * hK);
+              }
             fev.reinit(cell);
             for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
               {
@@ -678,7 +705,7 @@ namespace cosmo
                   for (unsigned int k = 0; k < n_plate; ++k)
                     y[k] = k >= 3 && k < 3 + x.size() ? x[k - 3] : Number(z[k]);
                   return kinematics::plate_energy(y, gr, plate_law, model, membrane_bending,
-                                                  shear_scale);
+                                                  cell_shear_scale);
                 };
                 g.fill(0.);
                 if (jacobian)

@@ -186,6 +186,8 @@ namespace cosmo
       unsigned int                   refinements = 3, degree = 2;
       kinematics::PlateRodModel      model = kinematics::PlateRodModel::cosserat;
       double                         shear_penalty = 100;
+      bool                           stabilized_shear    = true;
+      double                         shear_stabilization = 0.03;
       materials::NaghdiPlateLaw      plate_law;
       materials::PlateGrowth         plate_growth;
       std::array<double, 6>          rod_stiffness{{0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6}};
