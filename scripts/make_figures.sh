@@ -13,6 +13,10 @@
 #   doc/figures/strip_shearing_branches.png
 #                                   output/strip_shearing/branches.png
 #   doc/figures/strip_ribbons.png   output/strip_ribbon_comparison/ribbons.png
+#   doc/figures/plate_rod_{dome,lobes}_bifurcation.png
+#                                   output/plate_rod/{dome,lobes}/bifurcation.png
+#   doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
+#                                   the three models' study (plot_plate_rod_study.py)
 # Exit status 1 if an expected input is missing (run run_examples.sh).
 set -euo pipefail
 
@@ -33,7 +37,9 @@ for n in "${STEPS[@]}"; do
   [[ -f "output/$n/steps.png" ]] || { log "missing output/$n/steps.png" >&2; missing=1; }
 done
 [[ -f "output/$SECTION/solution.pvd" ]] || { log "missing output/$SECTION/solution.pvd" >&2; missing=1; }
-for f in output/strip_shearing/branches.png output/strip_ribbon_comparison/ribbons.png; do
+for f in output/strip_shearing/branches.png output/strip_ribbon_comparison/ribbons.png \
+         output/plate_rod/dome/bifurcation.png output/plate_rod/lobes/bifurcation.png \
+         output/plate_rod/studies/critical_growth_vs_rim_stiffness.png; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -50,6 +56,11 @@ for n in "${STEPS[@]}"; do
 done
 cp output/strip_shearing/branches.png doc/figures/strip_shearing_branches.png
 cp output/strip_ribbon_comparison/ribbons.png doc/figures/strip_ribbons.png
+for n in dome lobes; do
+  cp "output/plate_rod/$n/bifurcation.png" "doc/figures/plate_rod_${n}_bifurcation.png"
+done
+cp output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
+   doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
 python3 scripts/plot_section.py "output/$SECTION" "doc/figures/section_$SECTION.png" von_Mises_stress >/dev/null
 for f in doc/figures/*.png; do
   printf '[cosmo] %-55s %6s bytes\n' "$f" "$(wc -c <"$f")"

@@ -80,12 +80,19 @@ def plot_run(plt, run_dir):
                          style, color="C%d" % b)
         if b == 0:
             continue
+        drawn = False
         for n in range(1, 9):
             for name, marker in (("rim_w_%d" % n, "o"), ("rim_ur_%d" % n, "s")):
                 values = [columns.get(name, [0] * n_rows)[i] for i in rows]
                 if max(values + [0]) > 1e-3 * max(abs(amplitude(i)) for i in rows):
                     axes[1].plot([columns["t"][i] for i in rows], values, marker=marker, ms=3,
                                  lw=0.8, label="branch %d: %s" % (b, name))
+                    drawn = True
+        if not drawn and "rim_radial_strain" in columns:
+            # An axisymmetric branch: no lobes; the rim's radial strain instead.
+            axes[1].plot([columns["t"][i] for i in rows],
+                         [columns["rim_radial_strain"][i] for i in rows], "-", color="C%d" % b,
+                         label="branch %d: rim radial strain (no lobes)" % b)
     for e in summary.get("events", []):
         for ax in axes:
             ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
@@ -94,13 +101,13 @@ def plot_run(plt, run_dir):
         for ax in axes:
             ax.axvline(first, color="k", lw=4, alpha=0.12)
     axes[0].set_ylabel("out-of-plane amplitude (dome height or half the w range)")
-    axes[1].set_ylabel("rim lobe amplitudes |w_n| (o), |u_r,n| (s)")
+    axes[1].set_ylabel("rim lobe amplitudes |w_n| (o), |u_r,n| (s); or rim radial strain")
     axes[2].set_ylabel("energy - flat branch")
     for ax in axes:
         ax.set_xlabel("growth parameter t")
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=8)
-    if axes[1].lines:
+    if any(not l.get_label().startswith("_") for l in axes[1].lines):
         axes[1].legend(fontsize=6, ncol=2)
     fig.suptitle("%s (%s, %s): %d branch(es), %d event(s); solid stable, dashed unstable; "
                  "grey band: closed-form threshold"

@@ -34,7 +34,7 @@ def read_study(d):
         for line in open(os.path.join(d, "parameters.prm")):
             m = re.match(r"\s*set Model\s*=\s*(.+)", line)
             if m:
-                model = m.group(1).strip()
+                model = m.group(1).split("#")[0].strip()
     except OSError:
         pass
     axis = next((k for k in rows[0] if k.startswith("value")), "value") if rows else "value"
@@ -68,7 +68,8 @@ def main(argv):
         values = [v for v in read_study(dirs[0])[0]["value"] if v > 0]
         if values and max(values) / min(values) > 10:
             ax.set_xscale("log")
-        ax.set_xlabel(axis_label.split(" [")[0].replace("value", "swept value"))
+        inside = axis_label.split(" [", 1)[1].rstrip("]") if " [" in axis_label else axis_label
+        ax.set_xlabel("swept value {} in: " + inside.replace(";", ","))
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
     axes[0].set_ylabel("critical mismatch Delta = g_plate / g_rim - 1")

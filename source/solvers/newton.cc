@@ -17,9 +17,11 @@ namespace cosmo
                         "1e-10",
                         Patterns::Double(1e-15, 1e-2),
                         "Newton converges when the max-norm of the residual, each "
-                        "equation made dimensionless by its natural scale (nodal forces "
-                        "by E times the section diameter, resultants by E D^2 and E D^3, "
-                        "constraints by D^3, D^4), is below this.");
+                        "equation made dimensionless by its natural scale, is below this "
+                        "(rod_cross_section: nodal forces by E times the section diameter D, "
+                        "resultants by E D^2 and E D^3, constraints by D^3, D^4; strip: "
+                        "forces by E w h; plate_rod: nodal forces by E h R, moments by "
+                        "E h R^2).");
       prm.declare_entry("Maximum iterations",
                         "25",
                         Patterns::Integer(1, 1000),
