@@ -1332,7 +1332,7 @@ namespace cosmo
           double             best_out = -1e300, best_planar = -1e300;
           unsigned int       n_out = 0, n_planar = 0;
           c << "  closed forms (Kirchhoff, small strain), out-of-plane lobes:";
-          for (unsigned int n = n0; n <= 12; n += step)
+          for (unsigned int n = n0; n <= std::max(12u, n0 + 4 * step); n += step)
             {
               const double D = analysis::out_of_plane_critical_mismatch(p, n);
               closed["out_of_plane"].push_back(entry(n, D));
