@@ -379,11 +379,16 @@ namespace cosmo
               continue;
             }
 
-          // An event between s and next: locate it by bisection in the arclength.
-          if (s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != s.n_negative)
+          // Events between s and next: locate them by bisection in the
+          // arclength, one after the other (two crossings inside one step
+          // are two events: after the first, bisect again between it and
+          // next).
+          double sigma_from = 0;
+          State  from       = s;
+          while (s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != from.n_negative)
             {
-              double sigma_lo = 0, sigma_hi = ds;
-              State  lo = s, hi = next;
+              double sigma_lo = sigma_from, sigma_hi = ds;
+              State  lo = from, hi = next;
               while (sigma_hi - sigma_lo > settings.event_tolerance)
                 {
                   // The midpoint, or next to it if the Jacobian is exactly
@@ -411,7 +416,7 @@ namespace cosmo
                     }
                   if (!found)
                     break; // keep the bracket reached so far
-                  if (mid.n_negative == s.n_negative)
+                  if (mid.n_negative == from.n_negative)
                     {
                       sigma_lo = sigma;
                       lo       = mid;
@@ -429,7 +434,7 @@ namespace cosmo
               e.lambda            = 0.5 * (lo.lambda + hi.lambda);
               e.arclength         = sigma_hi - sigma_lo;
               e.branch            = branch;
-              e.n_negative_before = s.n_negative;
+              e.n_negative_before = from.n_negative;
               e.n_negative_after  = hi.n_negative;
               record.state.assign(lo.U.begin(), lo.U.end());
 
@@ -470,6 +475,10 @@ namespace cosmo
                     switches.push_back(start);
                   }
               events.push_back(record);
+              if (sigma_hi >= ds || hi.n_negative == next.n_negative)
+                break; // the last crossing of this step (or the bracket did not shrink)
+              sigma_from = sigma_hi;
+              from       = hi;
             }
 
           s = next;
