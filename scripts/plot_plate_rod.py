@@ -9,7 +9,8 @@ DIR/bifurcation.png with three panels against the load parameter t:
 the out-of-plane amplitude (the dome height w(0) - mean rim w when the
 shape is a dome, else half the range of w, signed by the rim's leading
 out-of-plane lobe), the rim's lobe amplitudes (Fourier amplitudes of w and
-of the radial displacement, n = 1..8) on the bifurcated branches, and the
+of the radial displacement, for the mode numbers the domain admits) on the
+bifurcated branches, and the
 energy relative to the flat branch. One colour per branch, solid where the
 state is stable (no negative eigenvalue), dashed where it is not; located
 events are marked with dotted lines, the closed-form threshold with a grey
@@ -60,9 +61,13 @@ def plot_run(plt, run_dir):
                 return (1 - f) * flat_energy[a] + f * flat_energy[b]
         return flat_energy[flat_t[-1]]
 
+    # The rim's mode numbers in the table (0, n, 2n, ... on a sector pi/n).
+    numbers = sorted(int(k[len("rim_w_"):]) for k in columns if k.startswith("rim_w_"))
+    numbers = [n for n in numbers if n > 0]
+
     def amplitude(i):
         dome = columns["dome_height"][i]
-        lobes = [columns.get("rim_w_%d" % n, [0] * n_rows)[i] for n in range(1, 9)]
+        lobes = [columns["rim_w_%d" % n][i] for n in numbers]
         if abs(dome) >= max(lobes + [0]):
             return dome
         return 0.5 * columns["w_range"][i]
@@ -81,7 +86,7 @@ def plot_run(plt, run_dir):
         if b == 0:
             continue
         drawn = False
-        for n in range(1, 9):
+        for n in numbers:
             for name, marker in (("rim_w_%d" % n, "o"), ("rim_ur_%d" % n, "s")):
                 values = [columns.get(name, [0] * n_rows)[i] for i in rows]
                 if max(values + [0]) > 1e-3 * max(abs(amplitude(i)) for i in rows):

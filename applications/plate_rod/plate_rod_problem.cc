@@ -415,7 +415,7 @@ namespace cosmo
       {
         const double angle = prm.get_double("Sector angle");
         const double n     = 180. / angle;
-        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-9 * n || std::round(n) < 1)
+        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
           throw io::InputError("Mesh", "Sector angle", prm.get("Sector angle"),
                                "the sector must be pi/n: 180/n degrees for an integer n >= 1 "
                                "(180, 90, 60, 45, 36, 30, ...)");
@@ -463,12 +463,18 @@ namespace cosmo
     {
       triangulation.clear();
       const bool sector = domain == "sector";
-      if (sector)
+      if (sector && sector_n == 1)
+        {
+          // The half disc y >= 0 (half_hyper_ball is x >= 0): no degenerate apex cell.
+          GridGenerator::half_hyper_ball(triangulation, Point<2>(), radius);
+          GridTools::rotate(M_PI / 2, triangulation);
+        }
+      else if (sector)
         GridGenerator::quarter_hyper_ball(triangulation, Point<2>(), radius);
       else
         GridGenerator::hyper_ball(triangulation, Point<2>(), radius);
       triangulation.refine_global(refinements);
-      if (sector && sector_n != 2)
+      if (sector && sector_n > 2)
         {
           // Stretch the quarter disc in angle onto [0, pi/n]: circles stay circles.
           const double s = 2. / sector_n;
@@ -850,8 +856,10 @@ namespace cosmo
       s.rim_w_amplitude.assign(n_modes, 0.);
       s.rim_ur_amplitude.assign(n_modes, 0.);
       const bool sector = domain == "sector";
-      // Fourier coefficients of w and u_r on the rim in the polar angle;
-      // on a sector, of the mirror-symmetric extension (only k n survive).
+      // Fourier coefficients of w and u_r on the rim in the polar angle, for
+      // the mode numbers m = k step the domain admits (step = n on a sector
+      // pi/n: the mirror-symmetric extension has only those).
+      const unsigned int  step = sector_step();
       std::vector<double> aw(n_modes), bw(n_modes), ar(n_modes), br(n_modes);
       const QGauss<1>     face(degree + 1);
       FEFaceValues<2>     fev(*mapping, *fe, face, update_values | update_quadrature_points | update_JxW_values);
@@ -872,23 +880,22 @@ namespace cosmo
                   const double   ur = (values[q][0] * X[0] + values[q][1] * X[1]) / r;
                   ur_mean += ur * fev.JxW(q);
                   length += fev.JxW(q);
-                  for (unsigned int m = 0; m < n_modes; ++m)
+                  for (unsigned int k = 0; k < n_modes; ++k)
                     {
-                      aw[m] += w * std::cos(m * a) * da;
-                      bw[m] += w * std::sin(m * a) * da;
-                      ar[m] += ur * std::cos(m * a) * da;
-                      br[m] += ur * std::sin(m * a) * da;
+                      const double m = double(k * step);
+                      aw[k] += w * std::cos(m * a) * da;
+                      bw[k] += w * std::sin(m * a) * da;
+                      ar[k] += ur * std::cos(m * a) * da;
+                      br[k] += ur * std::sin(m * a) * da;
                     }
                 }
             }
       const double span = sector ? M_PI / sector_n : 2 * M_PI;
-      for (unsigned int m = 0; m < n_modes; ++m)
+      for (unsigned int k = 0; k < n_modes; ++k)
         {
-          if (sector && m % sector_n != 0)
-            continue;
-          const double f = (m == 0 ? 1. : 2.) / span;
-          s.rim_w_amplitude[m]  = f * (sector ? std::abs(aw[m]) : std::hypot(aw[m], bw[m]));
-          s.rim_ur_amplitude[m] = f * (sector ? std::abs(ar[m]) : std::hypot(ar[m], br[m]));
+          const double f = (k == 0 ? 1. : 2.) / span;
+          s.rim_w_amplitude[k]  = f * (sector ? std::abs(aw[k]) : std::hypot(aw[k], bw[k]));
+          s.rim_ur_amplitude[k] = f * (sector ? std::abs(ar[k]) : std::hypot(ar[k], br[k]));
         }
       s.rim_radial_strain = ur_mean / length / radius;
       // The apex carries w = 0 (gauge): the dome height is minus the rim's mean w.
@@ -915,14 +922,24 @@ namespace cosmo
     std::pair<unsigned int, bool>
     PlateRodProblem::classify_mode(const Vector<double> &mode) const
     {
-      const auto   s        = analyse(mode, 65);
-      const bool   out      = s.max_abs_w > s.max_abs_inplane;
-      const auto & a        = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
-      unsigned int n        = 0;
-      for (unsigned int m = 1; m < a.size(); ++m)
-        if (a[m] > a[n])
-          n = m;
-      return {n, out};
+      // Mode numbers up to what the rim resolves: one per rim face over the full circle
+      // (beyond, the Fourier amplitudes of the sampled rim alias).
+      unsigned int rim_faces = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            ++rim_faces;
+      const unsigned int full_circle = rim_faces * (domain == "sector" ? 2 * sector_n : 1);
+      const auto         s = analyse(mode, std::max(2u, full_circle / sector_step() + 1));
+      // Half the range of w (a mode's w is measured from the apex) against the largest
+      // in-plane displacement.
+      const bool   out = 0.5 * s.max_abs_w > s.max_abs_inplane;
+      const auto & a   = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
+      unsigned int k   = 0;
+      for (unsigned int j = 1; j < a.size(); ++j)
+        if (a[j] > a[k])
+          k = j;
+      return {k * sector_step(), out};
     }
 
     analysis::PlateRod
@@ -1408,10 +1425,11 @@ namespace cosmo
       steps_table.add_column("w_range");
       steps_table.add_column("max_inplane_displacement");
       steps_table.add_column("rim_radial_strain");
-      for (unsigned int m = 0; m < n_modes; ++m)
-        steps_table.add_column("rim_w_" + std::to_string(m));
-      for (unsigned int m = 0; m < n_modes; ++m)
-        steps_table.add_column("rim_ur_" + std::to_string(m));
+      // The mode numbers the domain admits: 0, n, ..., 8 n on a sector pi/n.
+      for (unsigned int k = 0; k < n_modes; ++k)
+        steps_table.add_column("rim_w_" + std::to_string(k * sector_step()));
+      for (unsigned int k = 0; k < n_modes; ++k)
+        steps_table.add_column("rim_ur_" + std::to_string(k * sector_step()));
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("smallest_eigenvalue");
 
@@ -1436,6 +1454,17 @@ namespace cosmo
         }
       catch (io::RunFailure &e)
         {
+          status  = "failed";
+          message = e.what();
+        }
+      catch (io::InputError &)
+        {
+          throw;
+        }
+      catch (std::exception &e)
+        {
+          // Anything else (a Jacobian that cannot be set up at an event, a file that
+          // cannot be written): still leave a summary of what was done.
           status  = "failed";
           message = e.what();
         }

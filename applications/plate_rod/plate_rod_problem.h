@@ -51,8 +51,8 @@ namespace cosmo
       double              plate_energy = 0, rod_energy = 0;
       double              w_centre = 0, max_abs_w = 0, max_abs_inplane = 0;
       double              rim_radial_strain = 0; ///< mean u_r / R on the rim
-      std::vector<double> rim_w_amplitude;       ///< |Fourier coefficient| of w on the rim, n = 0..
-      std::vector<double> rim_ur_amplitude;      ///< same for the radial displacement
+      std::vector<double> rim_w_amplitude;  ///< |Fourier coefficient| of w on the rim, m = k step
+      std::vector<double> rim_ur_amplitude; ///< same for the radial displacement
       int                 n_negative = -1;
       double              smallest_eigenvalue = 0;
     };
@@ -170,7 +170,13 @@ namespace cosmo
       {
         return constraints;
       }
-      /// Number of rim Fourier modes reported (n = 0 .. n_modes - 1).
+      /// 1 on the full disc, n on a sector pi/n: the admitted mode numbers are its multiples.
+      unsigned int
+      sector_step() const
+      {
+        return domain == "sector" ? sector_n : 1;
+      }
+      /// Number of rim Fourier modes reported (m = k sector_step(), k = 0 .. n_modes - 1).
       static constexpr unsigned int n_modes = 9;
 
       /// Mode type and number of a perturbation: dominant rim Fourier number and whether the
