@@ -82,19 +82,7 @@ def plot_run(plt, run_dir):
 
 
 def main(argv):
-    args = argv[1:]
-    if not args or any(a.startswith("-") for a in args):
-        sys.stderr.write(__doc__)
-        return 1
-    plt = plot_steps.import_pyplot()
-    if plt is None:
-        plot_steps.reexec_with_system_python()
-        sys.stderr.write("plot_branches.py: matplotlib cannot be imported\n")
-        return 2
-    for d in args:
-        out = plot_run(plt, d)
-        print("wrote %s" % out if out else "note: %s has no branch data; skipped" % d)
-    return 0
+    return plot_steps.plot_each_directory(argv, __doc__, plot_run, "branch data")
 
 
 if __name__ == "__main__":

@@ -72,6 +72,25 @@ def reexec_with_system_python():
               [SYSTEM_PYTHON, os.path.abspath(sys.argv[0])] + sys.argv[1:], env)
 
 
+def plot_each_directory(argv, doc, plot_run, what):
+    """The main() of a plotting script that draws one figure per run directory:
+    usage check, matplotlib (or the system interpreter that has it), then
+    plot_run(plt, DIR) for every DIR; `what` names what a skipped one lacks."""
+    args = argv[1:]
+    if not args or any(a.startswith("-") for a in args):
+        sys.stderr.write(doc)
+        return 1
+    plt = import_pyplot()
+    if plt is None:
+        reexec_with_system_python()
+        sys.stderr.write("%s: matplotlib cannot be imported\n" % os.path.basename(argv[0]))
+        return 2
+    for d in args:
+        out = plot_run(plt, d)
+        print("wrote %s" % out if out else "note: %s has no %s; skipped" % (d, what))
+    return 0
+
+
 def column_name(header):
     """'kappa1 [1/L]' -> 'kappa1'."""
     return header.split(" [", 1)[0].strip()

@@ -255,8 +255,8 @@ namespace
         const double P = analysis::axisymmetric_load_factor(poisson, 1.) * plate_D(h) / (R * R);
         const double r = P / (5. / 6 * E / (2 * (1 + poisson)) * h);
         check_close("h/R = " + std::to_string(h) + ": Cosserat/Kirchhoff - 1 = -r/(1 + r), r = N_K/(ks G h)",
-                    differences.back(), -r / (1 + r), 0.15);
-        // (the remainder: discretization and the O(Delta) of the prestressed state)
+                    differences.back(), -r / (1 + r), 0.06);
+        // (measured 1.2 % and 3.1 %: discretization and the O(Delta) of the prestressed state)
       }
     check("Cosserat threshold below Kirchhoff's (shear compliance)", differences[0] < 0 && differences[1] < 0);
     check_close("difference scales like (h/R)^2: ratio for h/R 0.04 -> 0.02", differences[0] / differences[1], 4, 0.15);
@@ -356,6 +356,22 @@ namespace
   // Anchor 2, rim outgrowing the plate: the out-of-plane n-lobed threshold
   // (rim bending and torsion, plate in tension) against its closed form, on
   // sectors pi/2 and pi/3, which keep the modes n = 2 and n = 3 first.
+  /// The lobes example's rim (EA = GA = 0.1, EI = GJ = 1e-6) growing by 1 % around a
+  /// plate that does not grow, on the sector pi/n, stopping at the first event.
+  Setup
+  rim_outgrowing_plate(const unsigned int n, const unsigned int refinements)
+  {
+    Setup s;
+    s.EA = 0.1, s.GA = 0.1, s.EI1 = s.EI2 = s.GJ = 1e-6;
+    s.rod_growth   = 1.01;
+    s.sector_angle = 180. / n;
+    s.refinements  = refinements;
+    s.t_max        = 0.2;
+    s.initial_step = 0.01;
+    s.extra        = "subsection Growth path\n set Stop at first event = true\nend\n";
+    return s;
+  }
+
   void
   out_of_plane_lobes()
   {
@@ -368,15 +384,8 @@ namespace
       std::vector<double> D;
       for (const unsigned int k : {1u, 2u, 3u})
         {
-          Setup s;
-          s.EA = 0.1, s.GA = 0.1, s.EI1 = s.EI2 = s.GJ = 1e-6;
-          s.rod_growth   = 1.01;
-          s.sector_angle = 90;
-          s.refinements  = k;
-          s.t_max        = 0.2;
-          s.initial_step = 0.01;
-          s.extra        = "subsection Growth path\n set Stop at first event = true\nend\n";
-          auto p         = make(s);
+          const Setup s = rim_outgrowing_plate(2, k);
+          auto        p = make(s);
           D.push_back(first_event(*p).second /
                         analysis::out_of_plane_critical_mismatch(s.closed_form(), 2) -
                       1);
@@ -389,21 +398,16 @@ namespace
     }
     for (const unsigned int n : {2u, 3u})
       {
-        Setup s;
-        s.EA = 0.1, s.GA = 0.1, s.EI1 = s.EI2 = s.GJ = 1e-6;
-        s.rod_growth   = 1.01;
-        s.sector_angle = 180. / n;
-        s.refinements  = n == 2 ? 2 : 3;
-        s.t_max        = 0.2;
-        s.initial_step = 0.01;
-        s.extra        = "subsection Growth path\n set Stop at first event = true\nend\n";
+        const Setup  s     = rim_outgrowing_plate(n, n == 2 ? 2 : 3);
         auto         p     = make(s);
         const double exact = analysis::out_of_plane_critical_mismatch(s.closed_form(), n);
         const auto   e     = first_event(*p);
         check_close("n = " + std::to_string(n) + " (sector pi/" + std::to_string(n) + ", " +
                       std::to_string(p->n_dofs()) + " DoFs): critical mismatch",
-                    e.second, exact, 5e-3);
-        // (3e-3 at n = 3, Delta = -8.1e-4: the closed form linearizes the prestress, O(Delta))
+                    e.second, exact, 6 * std::abs(exact));
+        // The closed form linearizes the prestress: it holds to O(|Delta|) relative; the
+        // n = 2 refinement series above converges to 3.7 |Delta| from it. Measured: 9.4e-4
+        // (n = 2, 3.0 |Delta|) and 3.0e-3 (n = 3, 3.7 |Delta|).
         if (!p->events().empty())
           {
             Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());

@@ -150,7 +150,7 @@ namespace
   void
   part1_thin_rectangle()
   {
-    const double E = 1, poisson = 0.3;
+    const double poisson = 0.3;
     for (const double ratio : {10., 20.})
       {
         const double w = 1, h = w / ratio;

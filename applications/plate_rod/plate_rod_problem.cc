@@ -177,31 +177,6 @@ namespace cosmo
           }
       }
 
-      /// Differentiate with respect to the local variables 3 .. 3 + M - 1 only; gradient and
-      /// Hessian are written into the full-size arrays (which the caller has zeroed).
-      template <int M, typename Energy>
-      void
-      differentiate_part(const std::array<double, n_plate> &z,
-                         const Energy &                     energy,
-                         const bool                         jacobian,
-                         double &                           W,
-                         std::array<double, n_plate> &      g,
-                         std::array<double, n_plate * n_plate> &H)
-      {
-        std::array<double, M>     x, gx;
-        std::array<double, M * M> Hx;
-        for (int k = 0; k < M; ++k)
-          x[k] = z[3 + k];
-        materials::internal::differentiate<M>(x, energy, jacobian, W, gx, Hx);
-        for (int a = 0; a < M; ++a)
-          {
-            g[3 + a] = gx[a];
-            if (jacobian)
-              for (int b = 0; b < M; ++b)
-                H[n_plate * (3 + a) + 3 + b] = Hx[M * a + b];
-          }
-      }
-
       std::string
       model_name(const kinematics::PlateRodModel m)
       {
@@ -713,13 +688,10 @@ namespace cosmo
                   return kinematics::plate_energy(y, gr, plate_law, model, membrane_bending,
                                                   cell_shear_scale);
                 };
-                g.fill(0.);
-                if (jacobian)
-                  H.fill(0.);
                 if (membrane_bending)
-                  differentiate_part<12>(z, energy_of, jacobian, W, g, H);
+                  materials::internal::differentiate_subset<12>(z, 3, energy_of, jacobian, W, g, H);
                 else
-                  differentiate_part<8>(z, energy_of, jacobian, W, g, H);
+                  materials::internal::differentiate_subset<8>(z, 3, energy_of, jacobian, W, g, H);
                 c.plate_energy += W * fev.JxW(q);
                 add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c);
               }
@@ -789,6 +761,11 @@ namespace cosmo
       };
       WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
                       Scratch(*mapping, *fe, full, reduced, face), Copy(dpc));
+      // Every assembly evaluates the energy: keep it with its state, so that the
+      // output of a converged step need not assemble once more.
+      assembled_at       = U;
+      assembled_load     = load_parameter;
+      assembled_energy   = {{plate_energy, rod_energy}};
       if (energies)
         {
           energies[0] = plate_energy;
@@ -905,16 +882,16 @@ namespace cosmo
         if (dof_component[i] == 2)
           wmin = std::min(wmin, U[i]), wmax = std::max(wmax, U[i]);
       s.max_abs_w = wmax - wmin;
+      // The in-plane displacement at every node: u1 and u2 of the same support point.
       std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+      const unsigned int                   nodes = fe->base_element(0).n_dofs_per_cell();
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           cell->get_dof_indices(idx);
-          for (unsigned int i = 0; i < idx.size(); ++i)
-            if (fe->system_to_component_index(i).first == 0)
-              for (unsigned int j = 0; j < idx.size(); ++j)
-                if (fe->system_to_component_index(j).first == 1 &&
-                    fe->system_to_component_index(j).second == fe->system_to_component_index(i).second)
-                  s.max_abs_inplane = std::max(s.max_abs_inplane, std::hypot(U[idx[i]], U[idx[j]]));
+          for (unsigned int k = 0; k < nodes; ++k)
+            s.max_abs_inplane =
+              std::max(s.max_abs_inplane, std::hypot(U[idx[fe->component_to_system_index(0, k)]],
+                                                     U[idx[fe->component_to_system_index(1, k)]]));
         }
       return s;
     }
@@ -1014,18 +991,21 @@ namespace cosmo
       load_parameter = report.t;
       PlateRodState s = analyse(U);
       s.n_negative    = report.n_negative;
+      auto same_state = [&](const Vector<double> &V, const double load) {
+        return V.size() == U.size() && load == load_parameter &&
+               std::equal(U.begin(), U.end(), V.begin());
+      };
+      // The driver has just factorized at this state, unless it located an event since.
+      if (!same_state(factorized_at, factorized_load))
+        setup_jacobian(U);
+      if (!same_state(assembled_at, assembled_load))
+        {
+          Vector<double> R;
+          assemble(U, &R, false);
+        }
+      s.plate_energy = assembled_energy[0];
+      s.rod_energy   = assembled_energy[1];
       {
-        Vector<double> R;
-        double         e[2];
-        assemble(U, &R, false, e);
-        s.plate_energy = e[0];
-        s.rod_energy   = e[1];
-      }
-      {
-        // The driver may have factorized elsewhere since (locating an event).
-        if (!(factorized_at.size() == U.size() && factorized_load == load_parameter &&
-              std::equal(U.begin(), U.end(), factorized_at.begin())))
-          setup_jacobian(U);
         io::PhaseTimer::Scope scope(timer, "stability (smallest eigenvalue)");
         Vector<double>        mask, mode;
         mode_mask(mask);
@@ -1382,11 +1362,7 @@ namespace cosmo
     {
       quiet        = options.quiet;
       write_output = true;
-      io::create_directory(output_directory);
-      log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
-      io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &o) {
-        prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
-      });
+      log = io::open_run_directory(output_directory, prm, quiet);
       plate_series = std::make_unique<io::PVDSeries>(output_directory + "/plate.pvd");
       rim_series   = std::make_unique<io::PVDSeries>(output_directory + "/rim.pvd");
       say("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
@@ -1533,13 +1509,10 @@ namespace cosmo
         prm.enter_subsection("Output");
         const std::string directory = prm.get("Output directory");
         prm.leave_subsection();
-        io::create_directory(directory);
-        io::RunLog log(directory + "/sweep-log.txt", options.quiet);
+        const auto log_file = io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt");
+        auto &     log      = *log_file;
         log("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
             ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
-        io::write_file_atomically(directory + "/parameters.prm", [&](std::ostream &o) {
-          prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
-        });
         io::CSVTable table;
         table.add_column("value", sweep.axis_label());
         for (const auto &c : {"converged", "t_critical", "mismatch_critical",

@@ -222,6 +222,9 @@ namespace cosmo
       std::vector<unsigned char>   dof_component; ///< field component of each DoF
       Vector<double>               factorized_at;  ///< the state of the last factorization
       double                       factorized_load = 0;
+      Vector<double>               assembled_at;   ///< the state of the last assembly
+      double                       assembled_load = 0;
+      std::array<double, 2>        assembled_energy{}; ///< its plate and rim energies
 
       // Run records
       std::vector<PlateRodState>        states;

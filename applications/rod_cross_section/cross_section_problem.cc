@@ -1170,16 +1170,11 @@ namespace cosmo
       quiet          = options.quiet;
       parameter_file = options.parameter_file;
       write_output   = true;
-      io::create_directory(output_directory);
-      log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
+      log = io::open_run_directory(output_directory, prm, quiet);
       pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
       pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
       if (!surface_faces.empty() || !surface_layers.layers().empty())
         pvd_surface = std::make_unique<io::PVDSeries>(output_directory + "/surface.pvd");
-      io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &out) {
-        prm.print_parameters(out, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
-      });
-
       say("rod_cross_section " + std::string(COSMO_VERSION) + ": " + parameter_file);
       {
         io::PhaseTimer::Scope scope(timer, "setup");
@@ -1276,8 +1271,8 @@ namespace cosmo
       prm.enter_subsection("Output");
       const std::string base = prm.get("Output directory");
       prm.leave_subsection();
-      io::create_directory(base);
-      io::RunLog log(base + "/sweep-log.txt", options.quiet);
+      const auto log_file = io::open_run_directory(base, prm, options.quiet, "sweep-log.txt");
+      auto &     log      = *log_file;
       log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
           ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
 

@@ -582,11 +582,7 @@ namespace cosmo
     {
       quiet        = options.quiet;
       write_output = true;
-      io::create_directory(output_directory);
-      log = std::make_unique<io::RunLog>(output_directory + "/log.txt", quiet);
-      io::write_file_atomically(output_directory + "/parameters.prm", [&](std::ostream &o) {
-        prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
-      });
+      log = io::open_run_directory(output_directory, prm, quiet);
       say("strip " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
       setup_system();
       std::ostringstream info;

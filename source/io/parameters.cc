@@ -46,6 +46,19 @@ namespace cosmo
         }
     }
 
+    std::unique_ptr<RunLog>
+    open_run_directory(const std::string &     directory,
+                       const ParameterHandler &prm,
+                       const bool              quiet,
+                       const std::string &     log_name)
+    {
+      create_directory(directory);
+      write_file_atomically(directory + "/parameters.prm", [&](std::ostream &o) {
+        prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
+      });
+      return std::make_unique<RunLog>(directory + "/" + log_name, quiet);
+    }
+
     std::vector<double>
     get_double_list(const ParameterHandler &prm,
                     const std::string &     entry,

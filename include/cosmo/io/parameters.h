@@ -3,7 +3,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <cosmo/io/output.h>
+
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -64,6 +67,17 @@ namespace cosmo
     /// Parse a .prm file; errors become InputError-style messages with status 1.
     void
     parse_parameter_file(ParameterHandler &prm, const std::string &file);
+
+    /**
+     * The start of every run's output (architecture.md): create the
+     * directory, write the parameters as read (parameters.prm, atomically)
+     * and open the log (log_name in it, flushed line by line).
+     */
+    std::unique_ptr<RunLog>
+    open_run_directory(const std::string &     directory,
+                       const ParameterHandler &prm,
+                       bool                    quiet,
+                       const std::string &     log_name = "log.txt");
 
     /// Comma list of doubles of fixed length, with a clear error.
     std::vector<double>

@@ -4,6 +4,7 @@
 #include <Sacado.hpp>
 
 #include <array>
+#include <cstddef>
 
 /**
  * The one place where an energy density is differentiated: value, gradient
@@ -56,6 +57,40 @@ namespace cosmo
             value              = W.val();
             for (int a = 0; a < N; ++a)
               gradient[a] = W.dx(a);
+          }
+      }
+
+      /**
+       * The same with respect to the M variables z[first], ..., z[first + M - 1]
+       * only, the others held fixed (an energy that does not depend on some
+       * local variables: the cost of nested AD grows like the square of the
+       * number of variables). `energy` receives the M numbers; gradient and
+       * Hessian are written into the full-size arrays, zero elsewhere.
+       */
+      template <int M, std::size_t N, typename Energy>
+      void
+      differentiate_subset(const std::array<double, N> &z,
+                           const unsigned int           first,
+                           const Energy &               energy,
+                           const bool                   with_hessian,
+                           double &                     value,
+                           std::array<double, N> &      gradient,
+                           std::array<double, N * N> &  hessian)
+      {
+        std::array<double, M>     x, gx;
+        std::array<double, M * M> Hx;
+        for (int k = 0; k < M; ++k)
+          x[k] = z[first + k];
+        differentiate<M>(x, energy, with_hessian, value, gx, Hx);
+        gradient.fill(0.);
+        if (with_hessian)
+          hessian.fill(0.);
+        for (int a = 0; a < M; ++a)
+          {
+            gradient[first + a] = gx[a];
+            if (with_hessian)
+              for (int b = 0; b < M; ++b)
+                hessian[N * (first + a) + first + b] = Hx[M * a + b];
           }
       }
     } // namespace internal
