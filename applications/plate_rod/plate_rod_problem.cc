@@ -1482,6 +1482,7 @@ namespace cosmo
               x["mode_vtu"]     = "event-" + tag + "-mode.vtu";
               x["eigenvalue"]   = e.eigenvalue;
             }
+          solvers::add_location_to_json(e, x);
           ev.push_back(x);
         }
       j["events"]  = ev;

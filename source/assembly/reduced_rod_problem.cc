@@ -269,6 +269,7 @@ namespace cosmo
           x["n_negative_before"] = e.n_negative_before;
           x["n_negative_after"]  = e.n_negative_after;
           x["eigenvalue"]        = e.eigenvalue;
+          solvers::add_location_to_json(e, x);
           for (unsigned int c = 0; c < 6; ++c)
             x["strains"][kinematics::strain_names[c]] = strains_at_events[k][c];
           if (event_extra)

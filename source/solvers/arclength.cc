@@ -1,5 +1,6 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/critical_point.h>
 
 #include <cmath>
 #include <iomanip>
@@ -27,11 +28,47 @@ namespace cosmo
       return status;
     }
 
+    double
+    BifurcationProblem::unknowns_scale(const Vector<double> &U) const
+    {
+      Vector<double> mask;
+      mode_mask(mask);
+      double m = 1;
+      for (unsigned int i = 0; i < U.size(); ++i)
+        if (mask[i] != 0)
+          m = std::max(m, std::abs(U[i]));
+      return m;
+    }
+
     void
     BifurcationProblem::mode_mask(Vector<double> &mask) const
     {
       mask.reinit(n_unknowns());
       mask = 1.;
+    }
+
+    void
+    add_location_to_json(const BifurcationProblem::Event &e, io::JSON &event)
+    {
+      io::JSON x    = io::JSON::object();
+      x["method"]   = e.located_by_newton ? "newton (minimally augmented system)" :
+                                            "bisection of the stability count";
+      x["factorizations"] = e.factorizations;
+      x["precision"]      = e.precision;
+      x["bracket"]        = io::JSON::array({e.lambda_lo, e.lambda_hi});
+      x["multiplicity"]   = e.multiplicity;
+      if (e.located_by_newton)
+        {
+          x["newton_iterations"] = e.newton_iterations;
+          x["residual"]          = e.residual_norm;
+          x["test_function"]     = e.test_function;
+          x["unfolding"]         = e.unfolding;
+        }
+      else
+        x["arclength_interval"] = e.arclength;
+      if (!e.message.empty())
+        x["message"] = e.message;
+      event["location"] = x;
     }
 
     void
@@ -68,9 +105,17 @@ namespace cosmo
       prm.declare_entry("Field weight", "0", Patterns::Double(0),
                         "theta in ds^2 = theta |dU|^2 + dlambda^2; 0: 1/(number of mode "
                         "unknowns), i.e. the mean square of the field.");
+      prm.declare_entry("Event location", "newton", Patterns::Selection("newton|bisection"),
+                        "A change of the stability count detects a fold or branch point. "
+                        "newton: locate it by Newton on the minimally augmented system "
+                        "(R = 0 and the bordered test function g = 0; branch points with an "
+                        "unfolding parameter), to round-off, with ~3-5 factorizations; "
+                        "bisection: bisect the count in the arclength to 'Event tolerance' "
+                        "(~30 factorizations, resolution limited by the sign of the crossing "
+                        "pivot). Newton falls back to bisection where it fails, and says so.");
       prm.declare_entry("Event tolerance", "1e-8", Patterns::Double(1e-15),
-                        "Folds and branch points are located by bisection until their "
-                        "arclength interval is below this.");
+                        "Bisection (Event location = bisection, or the fallback) stops when "
+                        "the arclength interval is below this.");
       prm.declare_entry("Switch branches", "true", Patterns::Bool(),
                         "At a simple branch point on the first branch, switch to the "
                         "bifurcated branch and follow it.");
@@ -103,6 +148,7 @@ namespace cosmo
       direction        = prm.get("Initial direction") == "increasing" ? 1. : -1.;
       theta            = prm.get_double("Field weight");
       event_tolerance  = prm.get_double("Event tolerance");
+      newton_location  = prm.get("Event location") == "newton";
       switch_branches  = prm.get_bool("Switch branches");
       both_directions  = prm.get_bool("Both directions");
       switch_amplitude = prm.get_double("Switch amplitude");
@@ -132,8 +178,10 @@ namespace cosmo
                         const Vector<double> &dU,
                         const double          dl,
                         const Vector<double> &Up,
-                        const double          lp)
+                        const double          lp,
+                        unsigned int &        factorizations)
           : problem(problem)
+          , factorizations(factorizations)
           , n(problem.n_unknowns())
           , theta(theta)
           , dl(dl)
@@ -176,6 +224,7 @@ namespace cosmo
           problem.set_load_parameter(X[n]);
           if (problem.load_derivative(U, X[n], Rl) != 0)
             return 1;
+          ++factorizations;
           if (problem.setup_jacobian(U) != 0)
             return 1;
           return problem.solve_with_jacobian(Rl, b); // b = J^-1 dR/dlambda
@@ -210,6 +259,7 @@ namespace cosmo
 
       private:
         BifurcationProblem &problem;
+        unsigned int &      factorizations;
         const unsigned int  n;
         const double        theta, dl, lp;
         Vector<double>      c;  // theta (mask o dU)
@@ -219,10 +269,11 @@ namespace cosmo
     } // namespace
 
     double
-    smallest_eigenvalue(BifurcationProblem &  problem,
-                        const Vector<double> &mask,
-                        Vector<double> &      phi,
-                        const unsigned int    max_iterations)
+    smallest_eigenvalue(BifurcationProblem &               problem,
+                        const Vector<double> &             mask,
+                        Vector<double> &                   phi,
+                        const unsigned int                 max_iterations,
+                        const std::vector<Vector<double>> &orthogonal_to)
     {
       const unsigned int n = problem.n_unknowns();
       auto dot = [&](const Vector<double> &a, const Vector<double> &b) {
@@ -231,9 +282,14 @@ namespace cosmo
           s += mask[i] * a[i] * b[i];
         return s;
       };
+      auto deflate = [&](Vector<double> &x) {
+        for (const auto &q : orthogonal_to)
+          x.add(-dot(x, q) / dot(q, q), q);
+      };
       phi.reinit(n);
       for (unsigned int i = 0; i < n; ++i)
         phi[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
+      deflate(phi);
       phi /= std::sqrt(dot(phi, phi));
       double mu = 0;
       for (unsigned int it = 0; it < max_iterations; ++it)
@@ -241,6 +297,7 @@ namespace cosmo
           Vector<double> x(n);
           problem.solve_with_jacobian(phi, x);
           x.scale(mask);
+          deflate(x);
           mu = dot(phi, x); // Rayleigh quotient of J^-1: 1/eigenvalue
           x /= std::sqrt(dot(x, x));
           if (dot(x, phi) < 0)
@@ -292,7 +349,7 @@ namespace cosmo
     {
       const unsigned int n = problem.n_unknowns();
       AugmentedSystem    system(problem, theta, mask, direction_U, direction_lambda, predictor_U,
-                             predictor_lambda);
+                             predictor_lambda, factorizations);
       Vector<double> X(n + 1);
       std::copy(predictor_U.begin(), predictor_U.end(), X.begin());
       X[n]                 = predictor_lambda;
@@ -313,6 +370,7 @@ namespace cosmo
       const unsigned int n = problem.n_unknowns();
       problem.set_load_parameter(s.lambda);
       Vector<double> Rl(n), z(n);
+      ++factorizations;
       if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
         throw NewtonFailure("the Jacobian cannot be set up at a converged state");
       s.n_negative = problem.n_negative_eigenvalues();
@@ -328,6 +386,246 @@ namespace cosmo
         {
           s.tU *= -1.;
           s.tlambda *= -1.;
+        }
+    }
+
+    bool
+    ArclengthContinuation::point_on_step(BifurcationProblem &problem,
+                                         const State &       s,
+                                         const double        sigma_lo,
+                                         const double        sigma_hi,
+                                         State &             mid,
+                                         double &            sigma)
+    {
+      // The midpoint, or next to it if the Jacobian is exactly singular
+      // there (a dyadic midpoint can hit the event).
+      for (const double fraction : {0.5, 0.49, 0.51})
+        {
+          sigma             = sigma_lo + fraction * (sigma_hi - sigma_lo);
+          Vector<double> Um = s.U;
+          Um.add(sigma, s.tU);
+          try
+            {
+              correct(problem, mid, s.tU, s.tlambda, Um, s.lambda + sigma * s.tlambda);
+              analyse(problem, mid, &s.tU, s.tlambda);
+              return true;
+            }
+          catch (NewtonFailure &failure)
+            {
+              say(std::string("  event location: the corrector failed inside the step (") +
+                  failure.what() + ")");
+            }
+        }
+      return false;
+    }
+
+    void
+    ArclengthContinuation::locate_events(BifurcationProblem &      problem,
+                                         const State &             s,
+                                         const double              ds,
+                                         const State &             next,
+                                         const unsigned int        branch,
+                                         const bool                may_switch,
+                                         std::vector<EventRecord> &events,
+                                         std::vector<State> &      switches)
+    {
+      using Kind = BifurcationProblem::Event::Kind;
+      // Which end of the bracket the problem's factorization belongs to:
+      // analyse(next) was the last factorization.
+      enum class Factorized
+      {
+        lo,
+        hi,
+        none
+      };
+      Factorized factorized = Factorized::hi;
+      double     sigma_from = 0;
+      std::vector<Vector<double>> modes_of_this_step;
+      State      from       = s;
+      // Two crossings inside one step are two events: after the first,
+      // look again between it and next.
+      while (s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != from.n_negative)
+        {
+          const unsigned int factorizations_at_detection = factorizations;
+          double             sigma_lo = sigma_from, sigma_hi = ds;
+          State              lo = from, hi = next;
+
+          // Isolate one crossing: bisect the count until it changes by one
+          // across the bracket (keeping the first crossing).
+          bool bisection_failed = false;
+          auto bisect_once      = [&]() {
+            State  mid;
+            double sigma = 0;
+            if (!point_on_step(problem, s, sigma_lo, sigma_hi, mid, sigma))
+              {
+                bisection_failed = true;
+                return;
+              }
+            if (mid.n_negative == lo.n_negative)
+              {
+                sigma_lo   = sigma;
+                lo         = mid;
+                factorized = Factorized::lo;
+              }
+            else
+              {
+                sigma_hi   = sigma;
+                hi         = mid;
+                factorized = Factorized::hi;
+              }
+          };
+          while (std::abs(hi.n_negative - lo.n_negative) > 1 &&
+                 sigma_hi - sigma_lo > settings.event_tolerance && !bisection_failed)
+            bisect_once();
+
+          EventRecord record;
+          auto &      e       = record.event;
+          e.kind              = (lo.tlambda * hi.tlambda < 0) ? Kind::fold : Kind::branch_point;
+          e.branch            = branch;
+          e.n_negative_before = from.n_negative;
+          e.n_negative_after  = hi.n_negative;
+          e.multiplicity      = std::abs(hi.n_negative - lo.n_negative);
+          e.lambda_lo         = lo.lambda;
+          e.lambda_hi         = hi.lambda;
+          e.arclength         = sigma_hi - sigma_lo;
+          Vector<double> phi;
+
+          // Locate a simple crossing by Newton on the augmented system, from
+          // the end of the bracket that is factorized. The crossing lies
+          // strictly inside the bracket; a Newton point outside it is another
+          // critical point nearby (two crossings close together): halve the
+          // bracket by the count and try again from its new end.
+          if (settings.newton_location && e.multiplicity == 1)
+            for (unsigned int attempt = 0; attempt < 4 && !e.located_by_newton; ++attempt)
+              {
+                if (attempt > 0)
+                  {
+                    bisect_once();
+                    if (bisection_failed)
+                      break;
+                  }
+                const State &start = (factorized == Factorized::lo) ? lo : hi;
+                problem.set_load_parameter(start.lambda);
+                if (factorized == Factorized::none)
+                  {
+                    ++factorizations;
+                    if (problem.setup_jacobian(start.U) != 0)
+                      {
+                        e.message = "the Jacobian cannot be set up at the detection bracket";
+                        break;
+                      }
+                  }
+                // The border: the mode of the eigenvalue nearest zero there,
+                // orthogonal to the modes located earlier in this step.
+                Vector<double> border;
+                smallest_eigenvalue(problem, mask, border, 30, modes_of_this_step);
+                const CriticalPoint cp = locate_critical_point(
+                  problem, e.kind == Kind::fold, start.U, start.lambda, border, mask, s.tU,
+                  s.tlambda, true, std::abs(hi.lambda - lo.lambda), newton.relative_tolerance);
+                factorizations += cp.factorizations;
+                factorized = Factorized::none;
+                // Its arclength along the step's tangent.
+                Vector<double> dU = cp.U;
+                dU -= s.U;
+                const double sigma  = dot(s.tU, dU) + s.tlambda * (cp.lambda - s.lambda);
+                const double margin = 1e-6 * (sigma_hi - sigma_lo);
+                if (cp.converged && sigma >= sigma_lo - margin && sigma <= sigma_hi + margin)
+                  {
+                    e.located_by_newton = true;
+                    e.lambda            = cp.lambda;
+                    e.newton_iterations = cp.iterations;
+                    e.residual_norm     = cp.residual_norm;
+                    e.test_function     = cp.test_function;
+                    e.unfolding         = cp.unfolding;
+                    e.eigenvalue        = cp.eigenvalue;
+                    e.precision         = cp.lambda_update;
+                    e.message.clear();
+                    record.state.assign(cp.U.begin(), cp.U.end());
+                    phi = cp.mode;
+                  }
+                else
+                  {
+                    std::ostringstream m;
+                    if (cp.converged)
+                      m << std::setprecision(10) << "Newton found the critical point at lambda = "
+                        << cp.lambda << ", outside the detection bracket [" << lo.lambda << ", "
+                        << hi.lambda << "]";
+                    else
+                      m << "Newton on the augmented system failed: " << cp.message;
+                    e.message = m.str();
+                    say("  event location: " + e.message +
+                        (attempt + 1 < 4 ? "; halving the bracket" : ""));
+                  }
+              }
+          if (settings.newton_location && !e.located_by_newton)
+            say("  event location: falling back to bisection of the stability count");
+
+          if (!e.located_by_newton)
+            {
+              while (sigma_hi - sigma_lo > settings.event_tolerance && !bisection_failed)
+                bisect_once();
+              e.lambda    = 0.5 * (lo.lambda + hi.lambda);
+              e.precision = 0.5 * std::abs(hi.lambda - lo.lambda);
+              e.arclength = sigma_hi - sigma_lo;
+              record.state.assign(lo.U.begin(), lo.U.end());
+              // The mode: inverse iteration with J at the event (nearly
+              // singular there), on the mode unknowns only.
+              if (e.kind == Kind::branch_point)
+                {
+                  problem.set_load_parameter(lo.lambda);
+                  ++factorizations;
+                  AssertThrow(problem.setup_jacobian(lo.U) == 0,
+                              ExcMessage("the Jacobian cannot be set up at a located event"));
+                  e.eigenvalue = smallest_eigenvalue(problem, mask, phi);
+                }
+            }
+          e.factorizations = factorizations - factorizations_at_detection;
+          Vector<double> U_event(record.state.begin(), record.state.end());
+          if (phi.size())
+            modes_of_this_step.push_back(phi);
+          if (e.kind == Kind::branch_point && phi.size())
+            {
+              phi /= std::sqrt(norm2(phi)); // unit in the arclength norm
+              record.mode.assign(phi.begin(), phi.end());
+            }
+          problem.set_load_parameter(e.lambda);
+          problem.located_event(e, U_event, record.mode.size() ? &phi : nullptr);
+
+          std::ostringstream m;
+          m << std::setprecision(12) << "  " << e.name() << " on branch " << branch
+            << " at lambda = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
+            << " -> " << e.n_negative_after << "; ";
+          if (e.located_by_newton)
+            m << "Newton on the augmented system: " << e.newton_iterations << " iterations, |d lambda| "
+              << std::setprecision(2) << e.precision << ", residual " << e.residual_norm;
+          else
+            m << "bisection of the count to arclength " << std::setprecision(3) << e.arclength
+              << (e.arclength > 2 * settings.event_tolerance ?
+                    ", NOT refined to the tolerance: the corrector failed inside the step" :
+                    "");
+          m << "; " << e.factorizations << " factorizations)";
+          if (e.multiplicity > 1)
+            m << " -- a multiple eigenvalue (" << e.multiplicity
+              << " cross at once): not switched here; a symmetry-reduced domain makes it simple";
+          say(m.str());
+
+          if (e.kind == Kind::branch_point && may_switch && e.multiplicity == 1 && phi.size())
+            for (const double sign : settings.both_directions ? std::vector<double>{1., -1.} :
+                                                                std::vector<double>{1.})
+              {
+                State start;
+                start.U      = U_event;
+                start.lambda = e.lambda;
+                start.tU     = phi;
+                start.tU *= sign;
+                start.tlambda = 0;
+                switches.push_back(start);
+              }
+          events.push_back(record);
+          if (sigma_hi >= ds || hi.n_negative == next.n_negative || bisection_failed)
+            break; // the last crossing of this step (or the bracket did not shrink)
+          sigma_from = sigma_hi;
+          from       = hi;
         }
     }
 
@@ -379,107 +677,7 @@ namespace cosmo
               continue;
             }
 
-          // Events between s and next: locate them by bisection in the
-          // arclength, one after the other (two crossings inside one step
-          // are two events: after the first, bisect again between it and
-          // next).
-          double sigma_from = 0;
-          State  from       = s;
-          while (s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != from.n_negative)
-            {
-              double sigma_lo = sigma_from, sigma_hi = ds;
-              State  lo = from, hi = next;
-              while (sigma_hi - sigma_lo > settings.event_tolerance)
-                {
-                  // The midpoint, or next to it if the Jacobian is exactly
-                  // singular there (a dyadic midpoint can hit the event).
-                  double sigma = 0.5 * (sigma_lo + sigma_hi);
-                  State  mid;
-                  bool   found = false;
-                  for (const double fraction : {0.5, 0.49, 0.51})
-                    {
-                      sigma             = sigma_lo + fraction * (sigma_hi - sigma_lo);
-                      Vector<double> Um = s.U;
-                      Um.add(sigma, s.tU);
-                      try
-                        {
-                          correct(problem, mid, s.tU, s.tlambda, Um, s.lambda + sigma * s.tlambda);
-                          analyse(problem, mid, &s.tU, s.tlambda);
-                          found = true;
-                          break;
-                        }
-                      catch (NewtonFailure &failure)
-                        {
-                          say(std::string("  event location: the corrector failed inside the "
-                                          "step (") + failure.what() + ")");
-                        }
-                    }
-                  if (!found)
-                    break; // keep the bracket reached so far
-                  if (mid.n_negative == from.n_negative)
-                    {
-                      sigma_lo = sigma;
-                      lo       = mid;
-                    }
-                  else
-                    {
-                      sigma_hi = sigma;
-                      hi       = mid;
-                    }
-                }
-              EventRecord record;
-              auto &      e = record.event;
-              e.kind        = (lo.tlambda * hi.tlambda < 0) ? BifurcationProblem::Event::Kind::fold :
-                                                       BifurcationProblem::Event::Kind::branch_point;
-              e.lambda            = 0.5 * (lo.lambda + hi.lambda);
-              e.arclength         = sigma_hi - sigma_lo;
-              e.branch            = branch;
-              e.n_negative_before = from.n_negative;
-              e.n_negative_after  = hi.n_negative;
-              record.state.assign(lo.U.begin(), lo.U.end());
-
-              // The mode: inverse iteration with J at the event (nearly
-              // singular there), on the mode unknowns only.
-              Vector<double> phi;
-              if (e.kind == BifurcationProblem::Event::Kind::branch_point)
-                {
-                  problem.set_load_parameter(lo.lambda);
-                  AssertThrow(problem.setup_jacobian(lo.U) == 0,
-                              ExcMessage("the Jacobian cannot be set up at a located event"));
-                  e.eigenvalue = smallest_eigenvalue(problem, mask, phi);
-                  // The mode in the arclength norm: unit theta-length.
-                  phi /= std::sqrt(norm2(phi));
-                  record.mode.assign(phi.begin(), phi.end());
-                }
-              problem.located_event(e, lo.U, phi.size() ? &phi : nullptr);
-              std::ostringstream m;
-              m << std::setprecision(10) << "  " << e.name() << " on branch " << branch
-                << " at lambda = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
-                << " -> " << e.n_negative_after << ", located to arclength " << e.arclength
-                << (e.arclength > 2 * settings.event_tolerance ?
-                      "; NOT refined to the tolerance: the corrector failed inside the step" :
-                      "")
-                << ")";
-              say(m.str());
-              const bool simple = std::abs(e.n_negative_after - e.n_negative_before) == 1;
-              if (e.kind == BifurcationProblem::Event::Kind::branch_point && may_switch && simple)
-                for (const double sign : settings.both_directions ? std::vector<double>{1., -1.} :
-                                                                    std::vector<double>{1.})
-                  {
-                    State start;
-                    start.U      = lo.U;
-                    start.lambda = lo.lambda;
-                    start.tU     = phi;
-                    start.tU *= sign;
-                    start.tlambda = 0;
-                    switches.push_back(start);
-                  }
-              events.push_back(record);
-              if (sigma_hi >= ds || hi.n_negative == next.n_negative)
-                break; // the last crossing of this step (or the bracket did not shrink)
-              sigma_from = sigma_hi;
-              from       = hi;
-            }
+          locate_events(problem, s, ds, next, branch, may_switch, events, switches);
 
           s = next;
           ++step;

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/io/output.h>
 #include <cosmo/solvers/continuation.h>
 #include <cosmo/solvers/newton.h>
 
@@ -71,6 +72,15 @@ namespace cosmo
       virtual void
       mode_mask(Vector<double> &mask) const;
 
+      /**
+       * A size of the mode unknowns at which the problem is noticeably
+       * nonlinear (a length for displacements; rotations are O(1)): the
+       * difference steps of the critical-point location's second derivatives
+       * are 1e-4 of it. Default: max(|U|_inf on the mode unknowns, 1).
+       */
+      virtual double
+      unknowns_scale(const Vector<double> &U) const;
+
       /// Called at every located event with the state there and, for a branch point, its mode.
       struct Event
       {
@@ -85,6 +95,18 @@ namespace cosmo
         unsigned int branch        = 0;
         int          n_negative_before = 0, n_negative_after = 0;
         double       eigenvalue    = 0; ///< of J along the mode (branch points)
+        /// How lambda was located: by Newton on the minimally augmented system
+        /// (critical_point.h) or, where that failed, by bisection of the count.
+        bool         located_by_newton = false;
+        unsigned int newton_iterations = 0; ///< of the augmented system
+        unsigned int factorizations    = 0; ///< spent between detection and location
+        double       residual_norm     = 0; ///< weighted max-norm of R at the located point
+        double       test_function     = 0; ///< g of the bordered system there
+        double       unfolding         = 0; ///< mu of the branch-point system (0: exact)
+        double       precision         = 0; ///< |d lambda| of the last update / half the bracket
+        double       lambda_lo = 0, lambda_hi = 0; ///< the detection bracket
+        unsigned int multiplicity      = 1; ///< |change of the count| at this point
+        std::string  message;              ///< why Newton location failed, if it did
         std::string
         name() const
         {
@@ -101,13 +123,24 @@ namespace cosmo
      * Jacobian on the mode unknowns (mask), and its unit eigenvector, by
      * inverse iteration with the last factorization (rhs and iterates are
      * masked, so bordered multipliers and strains act as constraints). Near a
-     * loss of stability it is the eigenvalue that crosses zero.
+     * loss of stability it is the eigenvalue that crosses zero. Iterates are
+     * kept orthogonal (masked) to the vectors orthogonal_to: modes already
+     * known, e.g. of a crossing just located in the same step.
      */
     double
-    smallest_eigenvalue(BifurcationProblem &  problem,
-                        const Vector<double> &mask,
-                        Vector<double> &      mode,
-                        unsigned int          max_iterations = 100);
+    smallest_eigenvalue(BifurcationProblem &               problem,
+                        const Vector<double> &             mask,
+                        Vector<double> &                   mode,
+                        unsigned int                       max_iterations = 100,
+                        const std::vector<Vector<double>> &orthogonal_to  = {});
+
+    /**
+     * How an event was located, for summary.json: "location": {"method",
+     * "newton_iterations", "factorizations", "residual", "test_function",
+     * "unfolding", "precision", "bracket", "message"}.
+     */
+    void
+    add_location_to_json(const BifurcationProblem::Event &e, io::JSON &event);
 
     struct ArclengthSettings
     {
@@ -122,7 +155,8 @@ namespace cosmo
       double       lambda_max         = 1e300;  ///< [lambda_min, lambda_max]
       double       direction          = 1;      ///< initial sign of dlambda/ds
       double       theta              = 0;      ///< 0: 1/(number of mode unknowns)
-      double       event_tolerance    = 1e-8;   ///< arclength interval of a located event
+      double       event_tolerance    = 1e-8;   ///< arclength interval of a bisected event
+      bool         newton_location    = true;   ///< "Event location = newton" (else bisection)
       bool         switch_branches    = true;
       bool         both_directions    = true;  ///< follow +phi and -phi
       double       switch_amplitude   = 1e-2;  ///< a in U* + a phi (phi unit in the theta norm)
@@ -173,6 +207,7 @@ namespace cosmo
       NewtonSettings    newton;
       double            theta = 1;
       Vector<double>    mask;
+      unsigned int      factorizations = 0; ///< setup_jacobian calls made by the driver
 
       void
       say(const std::string &s) const;
@@ -196,6 +231,29 @@ namespace cosmo
              std::vector<EventRecord> &events,
              std::vector<State> &      switches,
              unsigned int &            step);
+      /**
+       * The crossings of the stability count between s and next (a step of
+       * length ds along s's tangent): each isolated by bisection of the count
+       * until it changes by one, then located by Newton on the augmented
+       * system (or, failing that, by bisection to the tolerance).
+       */
+      void
+      locate_events(BifurcationProblem &      problem,
+                    const State &             s,
+                    double                    ds,
+                    const State &             next,
+                    unsigned int              branch,
+                    bool                      may_switch,
+                    std::vector<EventRecord> &events,
+                    std::vector<State> &      switches);
+      /// Converge and analyse the point at arclength sigma along s's tangent (near sigma if exactly singular).
+      bool
+      point_on_step(BifurcationProblem &problem,
+                    const State &       s,
+                    double              sigma_lo,
+                    double              sigma_hi,
+                    State &             mid,
+                    double &            sigma);
       double
       norm2(const Vector<double> &v) const;
       double

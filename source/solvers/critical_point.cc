@@ -1,0 +1,256 @@
+#include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/critical_point.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    namespace
+    {
+      double
+      masked_max(const Vector<double> &v, const Vector<double> &mask)
+      {
+        double m = 0;
+        for (unsigned int i = 0; i < v.size(); ++i)
+          if (mask[i] != 0)
+            m = std::max(m, std::abs(v[i]));
+        return m;
+      }
+
+      double
+      masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask)
+      {
+        double s = 0;
+        for (unsigned int i = 0; i < a.size(); ++i)
+          s += mask[i] * a[i] * b[i];
+        return s;
+      }
+
+      double
+      weighted_max_norm(BifurcationProblem &problem, const Vector<double> &R)
+      {
+        Vector<double> w;
+        problem.residual_weights(w);
+        double m = 0;
+        for (unsigned int i = 0; i < R.size(); ++i)
+          m = std::max(m, std::abs(w[i] * R[i]));
+        return m;
+      }
+    } // namespace
+
+    CriticalPoint
+    locate_critical_point(BifurcationProblem &         problem,
+                          const bool                   fold,
+                          const Vector<double> &       U0,
+                          const double                 lambda0,
+                          const Vector<double> &       border,
+                          const Vector<double> &       mask,
+                          const Vector<double> &       tU,
+                          const double                 tlambda,
+                          const bool                   factorized,
+                          const double                 lambda_scale,
+                          const double                 residual_tolerance,
+                          const CriticalPointSettings &settings)
+    {
+      const unsigned int n = problem.n_unknowns();
+      CriticalPoint      cp;
+      cp.is_fold = fold;
+      cp.U       = U0;
+      cp.lambda  = lambda0;
+
+      // The border: the mode estimate on the mode unknowns, unit length.
+      Vector<double> b = border;
+      b.scale(mask);
+      const double bn = std::sqrt(b * b);
+      if (!(bn > 0))
+        {
+          cp.message = "no mode estimate to border the Jacobian with";
+          return cp;
+        }
+      b /= bn;
+      // Branch points: keep (U, lambda) on the old branch's tangent along b.
+      const double beta_t = (!fold && tlambda != 0) ? (b * tU) / tlambda : 0.;
+
+      Vector<double> &U      = cp.U;
+      double &        lambda = cp.lambda;
+      double &        mu     = cp.unfolding;
+      Vector<double>  R(n), Rl(n), y(n), a(n), z(n), v(n), gU(n), Rp(n), Rm(n), Upv(n), Umv(n);
+      double          previous_update = INFINITY;
+      Vector<double>  last_dU(n);
+      double          last_d_lambda = 0;
+      bool            nudged        = false;
+      const double    U_scale         = problem.unknowns_scale(U0);
+
+      auto fail = [&](const std::string &why) {
+        cp.message = why;
+        problem.set_load_parameter(lambda);
+        return cp;
+      };
+
+      for (unsigned int it = 0;; ++it)
+        {
+          problem.set_load_parameter(lambda);
+          if (it > 0 || !factorized)
+            {
+              ++cp.factorizations;
+              if (problem.setup_jacobian(U) != 0)
+                {
+                  // An exactly singular J (a Newton step can land on the
+                  // critical point exactly in small problems): step back by a
+                  // millionth of the last update, once, and go on.
+                  if (it == 0 || nudged)
+                    return fail("the Jacobian cannot be set up at a Newton iterate");
+                  nudged = true;
+                  U.add(-1e-6, last_dU);
+                  lambda -= 1e-6 * last_d_lambda;
+                  problem.set_load_parameter(lambda);
+                  ++cp.factorizations;
+                  if (problem.setup_jacobian(U) != 0)
+                    return fail("the Jacobian cannot be set up at a Newton iterate");
+                }
+            }
+          if (problem.residual(U, R) != 0)
+            return fail("the residual cannot be evaluated at a Newton iterate");
+          const Vector<double> R0 = R; // without the unfolding term
+          if (!fold)
+            R.add(mu, b);
+          cp.residual_norm = weighted_max_norm(problem, R);
+
+          // The bordered system: g and v.
+          if (problem.solve_with_jacobian(b, y) != 0)
+            return fail("a solve with the Jacobian failed");
+          const double beta = b * y;
+          if (!std::isfinite(beta) || beta == 0)
+            return fail("the bordered system is singular (the border is orthogonal to the mode)");
+          const double g = -1. / beta;
+          v              = y;
+          v /= beta;
+          cp.test_function = g;
+          const double vv  = masked_dot(v, v, mask);
+          cp.eigenvalue    = -g / vv;
+          cp.mode          = v;
+          cp.mode.scale(mask);
+          cp.mode /= std::sqrt(vv);
+          cp.iterations = it;
+
+          if (it >= settings.max_iterations)
+            return fail("no convergence in " + std::to_string(settings.max_iterations) +
+                        " Newton iterations");
+
+          // Derivatives of g by central differences of R along v.
+          const double vmax = masked_max(v, mask);
+          // The difference step: 1e-4 of the size at which the problem is
+          // nonlinear (~eps^(1/4): truncation and round-off balanced).
+          const double eps = 1e-4 * U_scale / vmax;
+          const double h    = 1e-5 * (std::abs(lambda) + lambda_scale);
+          Upv               = U;
+          Upv.add(eps, v);
+          Umv = U;
+          Umv.add(-eps, v);
+          if (problem.residual(Upv, Rp) != 0 ||
+              problem.residual(Umv, Rm) != 0)
+            return fail("the residual cannot be evaluated near a Newton iterate");
+          // g_U = -R_UU[v, v]
+          gU = Rp;
+          gU.add(-2., R0);
+          gU += Rm;
+          gU *= -1. / (eps * eps);
+          // g_lambda = -v.(J(lambda + h) - J(lambda - h)) v / 2h
+          Vector<double> Jv_p(n), Jv_m(n), tmp(n);
+          problem.set_load_parameter(lambda + h);
+          int status = problem.residual(Upv, Jv_p);
+          status += problem.residual(Umv, tmp);
+          Jv_p -= tmp;
+          problem.set_load_parameter(lambda - h);
+          status += problem.residual(Upv, Jv_m);
+          status += problem.residual(Umv, tmp);
+          Jv_m -= tmp;
+          problem.set_load_parameter(lambda);
+          if (status != 0)
+            return fail("the residual cannot be evaluated near a Newton iterate");
+          Jv_p -= Jv_m;
+          const double g_lambda = -(v * Jv_p) / (4 * eps * h);
+          if (problem.load_derivative(U, lambda, Rl) != 0)
+            return fail("dR/dlambda cannot be evaluated at a Newton iterate");
+
+          // Block elimination with the factorization of J.
+          if (problem.solve_with_jacobian(R, a) != 0 || problem.solve_with_jacobian(Rl, z) != 0)
+            return fail("a solve with the Jacobian failed");
+          double d_lambda = 0, d_mu = 0;
+          if (fold)
+            {
+              const double denominator = g_lambda - gU * z;
+              if (!std::isfinite(denominator) || denominator == 0)
+                return fail("the fold system is singular (g does not change along the branch)");
+              d_lambda = (-g + gU * a) / denominator;
+            }
+          else
+            {
+              const double F3  = (b * U - b * U0) - beta_t * (lambda - lambda0);
+              const double A11 = g_lambda - gU * z, A12 = -(gU * y);
+              const double A21 = -(b * z + beta_t), A22 = -beta;
+              const double r1 = -g + gU * a, r2 = -F3 + b * a;
+              const double det = A11 * A22 - A12 * A21;
+              if (!std::isfinite(det) || det == 0)
+                return fail("the branch-point system is singular");
+              d_lambda = (r1 * A22 - A12 * r2) / det;
+              d_mu     = (A11 * r2 - A21 * r1) / det;
+            }
+          if (!std::isfinite(d_lambda) || !std::isfinite(d_mu))
+            return fail("the Newton update is not finite");
+          // dU = -a - d_lambda z - d_mu y
+          last_dU = a;
+          last_dU *= -1.;
+          last_dU.add(-d_lambda, z);
+          last_dU.add(-d_mu, y);
+          U += last_dU;
+          last_d_lambda = d_lambda;
+          lambda += d_lambda;
+          mu += d_mu;
+          cp.lambda_update = std::abs(d_lambda);
+          if (std::getenv("COSMO_DEBUG_CRITICAL_POINT"))
+            std::cerr << std::setprecision(15) << "    [critical point] it " << it << " lambda "
+                      << lambda << " d_lambda " << d_lambda << " g " << g << " g_lambda "
+                      << g_lambda << " gU.z " << gU * z << " gU.a " << gU * a << " gU.y "
+                      << gU * y << " |R| " << cp.residual_norm << " mu " << mu << " eps " << eps
+                      << "\n";
+          cp.lambda_history.push_back(lambda);
+
+          // Converged: a tiny update, or the round-off floor -- after a small
+          // update (quadratic convergence has done its work) one that no
+          // longer shrinks: the scatter of lambda is then round-off in g,
+          // |delta g| / |dg/dlambda| with |delta g| ~ eps |J|, and the
+          // precision reported is the larger of the two last updates.
+          const double scale = std::abs(lambda) + lambda_scale;
+          const bool   tiny  = cp.lambda_update <= settings.lambda_tolerance * scale;
+          const bool   floor = previous_update <= 1e-6 * scale &&
+                             cp.lambda_update > 0.25 * previous_update;
+          if (floor)
+            cp.lambda_update = std::max(cp.lambda_update, previous_update);
+          previous_update = std::abs(d_lambda);
+          if (tiny || floor)
+            {
+              problem.set_load_parameter(lambda);
+              if (problem.residual(U, R) != 0)
+                return fail("the residual cannot be evaluated at the located point");
+              if (!fold)
+                R.add(mu, b);
+              cp.residual_norm = weighted_max_norm(problem, R);
+              cp.iterations    = it + 1;
+              if (cp.residual_norm <= residual_tolerance)
+                {
+                  cp.converged = true;
+                  return cp;
+                }
+            }
+        }
+    }
+  } // namespace solvers
+} // namespace cosmo
