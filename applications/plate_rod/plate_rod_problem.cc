@@ -815,6 +815,12 @@ namespace cosmo
       return 0;
     }
 
+    double
+    PlateRodProblem::jacobian_abs_form(const Vector<double> &v) const
+    {
+      return solvers::absolute_quadratic_form(matrix, v);
+    }
+
     void
     PlateRodProblem::residual_weights(Vector<double> &w) const
     {

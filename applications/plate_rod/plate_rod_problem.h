@@ -106,6 +106,15 @@ namespace cosmo
       {
         return solver.n_negative_eigenvalues();
       }
+      /// |v|.|J||v| with the assembled Hessian (resolution of a located event).
+      double
+      jacobian_abs_form(const Vector<double> &v) const override;
+      /// Displacements are nonlinear on the scale of the radius, rotations on 1: the smaller.
+      double
+      unknowns_scale(const Vector<double> &) const override
+      {
+        return std::min(radius, 1.);
+      }
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
 

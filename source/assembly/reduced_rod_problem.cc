@@ -335,6 +335,12 @@ namespace cosmo
       return system->n_negative_eigenvalues(free, n_gauge);
     }
 
+    double
+    ReducedRodProblem::jacobian_abs_form(const Vector<double> &v) const
+    {
+      return system ? solvers::absolute_quadratic_form(system->matrix, v) : -1.;
+    }
+
     void
     ReducedRodProblem::mode_mask(Vector<double> &mask) const
     {

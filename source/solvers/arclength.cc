@@ -55,6 +55,8 @@ namespace cosmo
                                             "bisection of the stability count";
       x["factorizations"] = e.factorizations;
       x["precision"]      = e.precision;
+      if (e.resolution >= 0)
+        x["resolution"] = e.resolution;
       x["bracket"]        = io::JSON::array({e.lambda_lo, e.lambda_hi});
       x["multiplicity"]   = e.multiplicity;
       if (e.located_by_newton)
@@ -539,6 +541,7 @@ namespace cosmo
                     e.unfolding         = cp.unfolding;
                     e.eigenvalue        = cp.eigenvalue;
                     e.precision         = cp.lambda_update;
+                    e.resolution        = cp.resolution;
                     e.message.clear();
                     record.state.assign(cp.U.begin(), cp.U.end());
                     phi = cp.mode;
@@ -596,8 +599,13 @@ namespace cosmo
             << " at lambda = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
             << " -> " << e.n_negative_after << "; ";
           if (e.located_by_newton)
-            m << "Newton on the augmented system: " << e.newton_iterations << " iterations, |d lambda| "
-              << std::setprecision(2) << e.precision << ", residual " << e.residual_norm;
+            {
+              m << "Newton on the augmented system: " << e.newton_iterations
+                << " iterations, |d lambda| " << std::setprecision(2) << e.precision;
+              if (e.resolution >= 0)
+                m << " (round-off resolution " << e.resolution << ")";
+              m << ", residual " << e.residual_norm;
+            }
           else
             m << "bisection of the count to arclength " << std::setprecision(3) << e.arclength
               << (e.arclength > 2 * settings.event_tolerance ?

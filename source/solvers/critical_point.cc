@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -149,44 +150,53 @@ namespace cosmo
           // The difference step: 1e-4 of the size at which the problem is
           // nonlinear (~eps^(1/4): truncation and round-off balanced).
           const double eps = 1e-4 * U_scale / vmax;
-          const double h    = 1e-5 * (std::abs(lambda) + lambda_scale);
-          Upv               = U;
+          Upv              = U;
           Upv.add(eps, v);
           Umv = U;
           Umv.add(-eps, v);
-          if (problem.residual(Upv, Rp) != 0 ||
-              problem.residual(Umv, Rm) != 0)
+          if (problem.residual(Upv, Rp) != 0 || problem.residual(Umv, Rm) != 0)
             return fail("the residual cannot be evaluated near a Newton iterate");
-          // g_U = -R_UU[v, v]
+          // g_U = -R_UU[v, v] (for the energy's rows; it enters only through
+          // g_U.a and g_U.y, directions that do not move prescribed unknowns)
           gU = Rp;
           gU.add(-2., R0);
           gU += Rm;
           gU *= -1. / (eps * eps);
-          // g_lambda = -v.(J(lambda + h) - J(lambda - h)) v / 2h
-          Vector<double> Jv_p(n), Jv_m(n), tmp(n);
-          problem.set_load_parameter(lambda + h);
-          int status = problem.residual(Upv, Jv_p);
-          status += problem.residual(Umv, tmp);
-          Jv_p -= tmp;
-          problem.set_load_parameter(lambda - h);
-          status += problem.residual(Upv, Jv_m);
-          status += problem.residual(Umv, tmp);
-          Jv_m -= tmp;
+          if (problem.load_derivative(U, lambda, Rl) != 0)
+            return fail("dR/dlambda cannot be evaluated at a Newton iterate");
+          if (problem.solve_with_jacobian(R, a) != 0 || problem.solve_with_jacobian(Rl, z) != 0)
+            return fail("a solve with the Jacobian failed");
+          // dg/dlambda along the branch, A11 = g_lambda - g_U.z, as one
+          // directional difference of -v.J v along (-z, 1): exact also where
+          // lambda acts through prescribed unknowns (rows of R that are
+          // constraints, not the energy's gradient), which g_U above misses.
+          const double z_max = std::max(masked_max(z, mask), z.linfty_norm());
+          const double delta =
+            std::min(1e-5 * (std::abs(lambda) + lambda_scale),
+                     z_max > 0 ? 1e-4 * U_scale / z_max : INFINITY);
+          auto vJv = [&](const double sign, double &value) {
+            Vector<double> Ub = U;
+            Ub.add(-sign * delta, z);
+            problem.set_load_parameter(lambda + sign * delta);
+            Vector<double> Up = Ub, Um = Ub;
+            Up.add(eps, v);
+            Um.add(-eps, v);
+            const int status = problem.residual(Up, Rp) + problem.residual(Um, Rm);
+            Rp -= Rm;
+            value = (v * Rp) / (2 * eps);
+            return status;
+          };
+          double vJv_plus = 0, vJv_minus = 0;
+          const int status = vJv(1., vJv_plus) + vJv(-1., vJv_minus);
           problem.set_load_parameter(lambda);
           if (status != 0)
             return fail("the residual cannot be evaluated near a Newton iterate");
-          Jv_p -= Jv_m;
-          const double g_lambda = -(v * Jv_p) / (4 * eps * h);
-          if (problem.load_derivative(U, lambda, Rl) != 0)
-            return fail("dR/dlambda cannot be evaluated at a Newton iterate");
-
+          const double A11 = -(vJv_plus - vJv_minus) / (2 * delta);
           // Block elimination with the factorization of J.
-          if (problem.solve_with_jacobian(R, a) != 0 || problem.solve_with_jacobian(Rl, z) != 0)
-            return fail("a solve with the Jacobian failed");
           double d_lambda = 0, d_mu = 0;
           if (fold)
             {
-              const double denominator = g_lambda - gU * z;
+              const double denominator = A11;
               if (!std::isfinite(denominator) || denominator == 0)
                 return fail("the fold system is singular (g does not change along the branch)");
               d_lambda = (-g + gU * a) / denominator;
@@ -194,7 +204,7 @@ namespace cosmo
           else
             {
               const double F3  = (b * U - b * U0) - beta_t * (lambda - lambda0);
-              const double A11 = g_lambda - gU * z, A12 = -(gU * y);
+              const double A12 = -(gU * y);
               const double A21 = -(b * z + beta_t), A22 = -beta;
               const double r1 = -g + gU * a, r2 = -F3 + b * a;
               const double det = A11 * A22 - A12 * A21;
@@ -203,6 +213,15 @@ namespace cosmo
               d_lambda = (r1 * A22 - A12 * r2) / det;
               d_mu     = (A11 * r2 - A21 * r1) / det;
             }
+          // The resolution: a perturbation dJ of the factorization moves g by
+          // -v.dJ v; componentwise |dJ| <~ eps |J|, so |delta g| <~ eps
+          // |v|.|J||v|, and lambda moves by that over dg/dlambda along the
+          // branch (A11 = g_lambda - g_U.z).
+          cp.dg_dlambda          = A11;
+          const double abs_form = problem.jacobian_abs_form(v);
+          cp.resolution = abs_form > 0 ? std::numeric_limits<double>::epsilon() * abs_form /
+                                           std::abs(cp.dg_dlambda) :
+                                         -1.;
           if (!std::isfinite(d_lambda) || !std::isfinite(d_mu))
             return fail("the Newton update is not finite");
           // dU = -a - d_lambda z - d_mu y
@@ -217,8 +236,8 @@ namespace cosmo
           cp.lambda_update = std::abs(d_lambda);
           if (std::getenv("COSMO_DEBUG_CRITICAL_POINT"))
             std::cerr << std::setprecision(15) << "    [critical point] it " << it << " lambda "
-                      << lambda << " d_lambda " << d_lambda << " g " << g << " g_lambda "
-                      << g_lambda << " gU.z " << gU * z << " gU.a " << gU * a << " gU.y "
+                      << lambda << " d_lambda " << d_lambda << " g " << g << " dg/dlambda "
+                      << A11 << " gU.a " << gU * a << " gU.y "
                       << gU * y << " |R| " << cp.residual_norm << " mu " << mu << " eps " << eps
                       << "\n";
           cp.lambda_history.push_back(lambda);

@@ -13,6 +13,16 @@ namespace cosmo
 {
   namespace solvers
   {
+    double
+    absolute_quadratic_form(const SparseMatrix<double> &A, const Vector<double> &v)
+    {
+      double s = 0;
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          s += std::abs(it->value() * v[i] * v[it->column()]);
+      return s;
+    }
+
     struct SparseDirectSolver::MumpsData
     {
 #ifdef COSMO_WITH_MUMPS

@@ -148,6 +148,9 @@ namespace cosmo
       }
       int
       n_negative_eigenvalues() override;
+      /// |v|.|J||v| with the assembled Hessian (block A) (resolution of a located event).
+      double
+      jacobian_abs_form(const Vector<double> &v) const override;
       void
       mode_mask(Vector<double> &mask) const override;
 

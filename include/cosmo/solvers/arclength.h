@@ -81,6 +81,18 @@ namespace cosmo
       virtual double
       unknowns_scale(const Vector<double> &U) const;
 
+      /**
+       * |v|^T |J| |v| = sum_ij |J_ij| |v_i| |v_j| for the Jacobian last set up:
+       * a componentwise backward-stable factorization perturbs v.Jv by at
+       * most ~eps times this, which is the round-off resolution of a located
+       * critical point's test function. Negative if unknown.
+       */
+      virtual double
+      jacobian_abs_form(const Vector<double> & /*v*/) const
+      {
+        return -1;
+      }
+
       /// Called at every located event with the state there and, for a branch point, its mode.
       struct Event
       {
@@ -104,6 +116,7 @@ namespace cosmo
         double       test_function     = 0; ///< g of the bordered system there
         double       unfolding         = 0; ///< mu of the branch-point system (0: exact)
         double       precision         = 0; ///< |d lambda| of the last update / half the bracket
+        double       resolution        = -1; ///< eps |v|.|J||v| / |dg/dlambda| (-1: unknown)
         double       lambda_lo = 0, lambda_hi = 0; ///< the detection bracket
         unsigned int multiplicity      = 1; ///< |change of the count| at this point
         std::string  message;              ///< why Newton location failed, if it did

@@ -75,6 +75,9 @@ namespace cosmo
       double         eigenvalue = 0;       ///< Rayleigh quotient v.Jv / v.v = -g / v.v
       double         residual_norm = 0;    ///< weighted max-norm of R at the located point
       double         lambda_update = 0;    ///< |d lambda| of the last Newton update
+      double         dg_dlambda = 0;       ///< dg/dlambda along the branch (fold: with U on R = 0)
+      /// eps |v|.|J||v| / |dg/dlambda|: the round-off resolution of lambda (-1 if unknown)
+      double         resolution = -1;
       unsigned int   iterations = 0;
       unsigned int   factorizations = 0;
       std::vector<double> lambda_history; ///< lambda after each iteration

@@ -27,6 +27,14 @@ namespace cosmo
   {
     using namespace dealii;
 
+    /**
+     * sum_ij |A_ij| |v_i| |v_j| over the first A.m() entries of v: the bound
+     * of |v.dA v| for a componentwise perturbation |dA| <= |A| (round-off of
+     * a backward-stable factorization is eps times this, up to growth).
+     */
+    double
+    absolute_quadratic_form(const SparseMatrix<double> &A, const Vector<double> &v);
+
     class SparseDirectSolver
     {
     public:
