@@ -1522,7 +1522,7 @@ namespace cosmo
             ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
         io::CSVTable table;
         table.add_column("value", sweep.axis_label());
-        for (const auto &c : {"converged", "t_critical", "mismatch_critical",
+        for (const auto &c : {"converged", "t_critical", "t_resolution", "mismatch_critical",
                               "closed_form_mismatch", "mode_number", "mode_out_of_plane", "dofs",
                               "seconds"})
           table.add_column(c);
@@ -1532,7 +1532,7 @@ namespace cosmo
             const auto        start = std::chrono::steady_clock::now();
             const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
             double            converged = 0, t = NAN, D = NAN, closed = NAN, n = NAN, out = NAN,
-                   dofs = NAN;
+                   dofs = NAN, resolution = NAN;
             try
               {
                 sweep.apply(prm, k);
@@ -1556,8 +1556,9 @@ namespace cosmo
                   if (e.event.branch == 0 &&
                       e.event.kind == solvers::BifurcationProblem::Event::Kind::branch_point)
                     {
-                      t = e.event.lambda;
-                      D = problem.mismatch(t);
+                      t          = e.event.lambda;
+                      D          = problem.mismatch(t);
+                      resolution = solvers::event_resolution(e.event);
                       if (!e.mode.empty())
                         {
                           const auto c =
@@ -1577,7 +1578,7 @@ namespace cosmo
               }
             const double seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            table.add_row({sweep.value(k), converged, t, D, closed, n, out, dofs, seconds});
+            table.add_row({sweep.value(k), converged, t, resolution, D, closed, n, out, dofs, seconds});
             table.write(directory + "/sweep.csv");
             std::ostringstream line;
             line << std::setprecision(6) << "  " << sweep.label() << " = " << sweep.value(k)

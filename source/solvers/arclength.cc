@@ -3,6 +3,8 @@
 #include <cosmo/solvers/critical_point.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
 #include <iomanip>
 #include <sstream>
 
@@ -47,6 +49,12 @@ namespace cosmo
       mask = 1.;
     }
 
+    double
+    event_resolution(const BifurcationProblem::Event &e)
+    {
+      return std::max(e.precision, e.resolution);
+    }
+
     void
     add_location_to_json(const BifurcationProblem::Event &e, io::JSON &event)
     {
@@ -54,9 +62,8 @@ namespace cosmo
       x["method"]   = e.located_by_newton ? "newton (minimally augmented system)" :
                                             "bisection of the stability count";
       x["factorizations"] = e.factorizations;
-      x["precision"]      = e.precision;
-      if (e.resolution >= 0)
-        x["resolution"] = e.resolution;
+      x["last_update"]    = e.precision;
+      x["resolution"]     = event_resolution(e);
       x["bracket"]        = io::JSON::array({e.lambda_lo, e.lambda_hi});
       x["multiplicity"]   = e.multiplicity;
       if (e.located_by_newton)
@@ -313,6 +320,67 @@ namespace cosmo
       return mu != 0 ? 1. / mu : 0.;
     }
 
+    namespace
+    {
+      /**
+       * The mode of the eigenvalue of J nearest zero with the given sign:
+       * inverse iteration; if that finds an eigenvalue mu0 of the other sign
+       * (a cluster of soft modes nearer zero than the crossing one), power
+       * iteration on J^-1 - (1/mu0) I, whose dominant eigenvalue is 1/mu - 1/mu0
+       * of the wanted sign's eigenvalue nearest zero: every eigenvalue of the
+       * other sign maps into (-|1/mu0|, 0] or [0, |1/mu0|), the wanted ones
+       * beyond |1/mu0|. Returns the eigenvalue (0 if none of that sign found).
+       */
+      double
+      crossing_mode(BifurcationProblem &               problem,
+                    const Vector<double> &             mask,
+                    const double                       wanted_sign,
+                    const std::vector<Vector<double>> &orthogonal_to,
+                    Vector<double> &                   phi)
+      {
+        const double mu0 = smallest_eigenvalue(problem, mask, phi, 30, orthogonal_to);
+        if (mu0 * wanted_sign >= 0 || mu0 == 0)
+          return mu0;
+        const unsigned int n = problem.n_unknowns();
+        auto dot = [&](const Vector<double> &a, const Vector<double> &b) {
+          double s = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            s += mask[i] * a[i] * b[i];
+          return s;
+        };
+        const double   sigma = 1. / mu0;
+        Vector<double> x(n), d(n);
+        // Start away from the found mode, which the shift makes the weakest.
+        for (unsigned int i = 0; i < n; ++i)
+          x[i] = mask[i] * (1 + 0.3 * std::cos(0.7 * i + 0.2));
+        x.add(-dot(x, phi) / dot(phi, phi), phi);
+        x /= std::sqrt(dot(x, x));
+        double rho = 0;
+        for (unsigned int it = 0; it < 300; ++it)
+          {
+            Vector<double> y(n);
+            problem.solve_with_jacobian(x, y);
+            y.scale(mask);
+            for (const auto &q : orthogonal_to)
+              y.add(-dot(y, q) / dot(q, q), q);
+            rho = dot(x, y); // Rayleigh quotient of J^-1
+            y.add(-sigma, x);
+            y /= std::sqrt(dot(y, y));
+            if (dot(y, x) < 0)
+              y *= -1.;
+            d = y;
+            d -= x;
+            x = y;
+            if (std::sqrt(dot(d, d)) < 1e-8)
+              break;
+          }
+        if (rho * wanted_sign <= 0)
+          return 0;
+        phi = x;
+        return 1. / rho;
+      }
+    } // namespace
+
     ArclengthContinuation::ArclengthContinuation(const ArclengthSettings &settings,
                                                  const NewtonSettings &   newton)
       : settings(settings)
@@ -517,15 +585,21 @@ namespace cosmo
                         break;
                       }
                   }
-                // The border: the mode of the eigenvalue nearest zero there,
-                // orthogonal to the modes located earlier in this step.
+                // The border: the mode of the crossing eigenvalue, i.e. the
+                // one nearest zero with the sign the crossing gives it at
+                // this end (negative past a loss of stability), orthogonal to
+                // the modes located earlier in this step.
+                const bool     count_rises = hi.n_negative > lo.n_negative;
+                const bool     at_hi       = (&start == &hi);
+                const double   wanted_sign = (count_rises == at_hi) ? -1. : 1.;
                 Vector<double> border;
-                smallest_eigenvalue(problem, mask, border, 30, modes_of_this_step);
+                crossing_mode(problem, mask, wanted_sign, modes_of_this_step, border);
                 const CriticalPoint cp = locate_critical_point(
                   problem, e.kind == Kind::fold, start.U, start.lambda, border, mask, s.tU,
                   s.tlambda, true, std::abs(hi.lambda - lo.lambda), newton.relative_tolerance);
                 factorizations += cp.factorizations;
                 factorized = Factorized::none;
+                e.resolution = std::max(e.resolution, cp.resolution);
                 // Its arclength along the step's tangent.
                 Vector<double> dU = cp.U;
                 dU -= s.U;

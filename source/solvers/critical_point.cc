@@ -249,7 +249,10 @@ namespace cosmo
           // precision reported is the larger of the two last updates.
           const double scale = std::abs(lambda) + lambda_scale;
           const bool   tiny  = cp.lambda_update <= settings.lambda_tolerance * scale;
-          const bool   floor = previous_update <= 1e-6 * scale &&
+          // (the floor is at least the a-priori resolution: in a badly
+          // conditioned problem the updates wander at that level)
+          const double floor_level = std::max(1e-6 * scale, 4 * cp.resolution);
+          const bool   floor       = previous_update <= floor_level &&
                              cp.lambda_update > 0.25 * previous_update;
           if (floor)
             cp.lambda_update = std::max(cp.lambda_update, previous_update);

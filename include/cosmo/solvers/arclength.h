@@ -155,6 +155,16 @@ namespace cosmo
     void
     add_location_to_json(const BifurcationProblem::Event &e, io::JSON &event);
 
+    /**
+     * How far the located lambda can move under round-off (threads, CPU,
+     * inputs perturbed at 1e-14): the larger of the a-priori resolution and
+     * the last Newton update, or half the bisection bracket. Regression
+     * tolerances on event loads stand above this ("resolution" in
+     * summary.json's event location, "t_resolution" in sweep.csv).
+     */
+    double
+    event_resolution(const BifurcationProblem::Event &e);
+
     struct ArclengthSettings
     {
       bool         enabled            = false; ///< "Path following / Method = arclength"
