@@ -1,7 +1,10 @@
 // Part 3 benchmark: wall time per continuation step and per stability
 // evaluation of the growing plate bounded by a rod, full disc against the
 // quarter sector, at two mesh sizes; time from the flat state to the
-// located critical growth. Run from the build directory:
+// located critical growth, with the event located by Newton on the
+// augmented system and, for comparison, by bisection of the stability count
+// (factorizations spent between detection and location). Run from the build
+// directory:
 //   ./benchmark_plate_rod_growth [max refinements = 5]
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -21,10 +24,12 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const unsigned int               max_refinements = argc > 1 ? std::stoi(argv[1]) : 5;
-  std::cout << "domain      refs     DoFs  steps  t_critical  to critical [s]  per step [s]  "
-               "Jacobian [s]  factorization [s]  smallest eig. [s]\n";
+  std::cout << "domain     location   refs     DoFs  steps  t_critical        resolution  event "
+               "factorizations  to critical [s]  per step [s]  Jacobian [s]  factorization [s]  "
+               "smallest eig. [s]\n";
   for (const unsigned int k : {4u, max_refinements})
     for (const std::string domain : {"sector", "full disc"})
+      for (const std::string location : {"newton", "bisection"})
       {
         // The dome example's plate and rim (closed-form critical t = 0.226).
         ParameterHandler prm;
@@ -36,7 +41,8 @@ main(int argc, char **argv)
           << " set Global refinements = " << k << "\nend\n"
           << "subsection Growth path\n set Stop at first event = true\nend\n"
           << "subsection Arclength continuation\n set Initial step = 0.05\n set Maximum step = 0.1\n"
-          << " set Parameter range = 0, 1\n set Event tolerance = 1e-6\nend\n";
+          << " set Parameter range = 0, 1\n set Event tolerance = 1e-6\n set Event location = "
+          << location << "\nend\n";
         prm.parse_input_from_string(t.str());
         plate_rod::PlateRodProblem p;
         p.parse_parameters(prm);
@@ -52,10 +58,14 @@ main(int argc, char **argv)
           return tm.calls(phase) ? tm.seconds(phase) / tm.calls(phase) : 0.;
         };
         const unsigned int steps = p.path().size();
-        std::cout << std::left << std::setw(10) << domain << std::right << std::setw(6) << k
-                  << std::setw(9) << p.n_dofs() << std::setw(7) << steps << std::setw(12)
-                  << std::setprecision(6) << (p.events().empty() ? NAN : p.events()[0].event.lambda)
-                  << std::setprecision(3) << std::setw(17) << total << std::setw(14)
+        const solvers::BifurcationProblem::Event *e =
+          p.events().empty() ? nullptr : &p.events()[0].event;
+        std::cout << std::left << std::setw(11) << domain << std::setw(10) << location << std::right
+                  << std::setw(5) << k << std::setw(9) << p.n_dofs() << std::setw(7) << steps
+                  << std::setw(18) << std::setprecision(12) << (e ? e->lambda : NAN)
+                  << std::setprecision(3) << std::setw(12)
+                  << (e ? solvers::event_resolution(*e) : NAN) << std::setw(22)
+                  << (e ? e->factorizations : 0) << std::setw(17) << total << std::setw(14)
                   << total / std::max(1u, steps) << std::setw(14) << per("assembly (Jacobian)")
                   << std::setw(19) << per("factorization") << std::setw(19)
                   << per("stability (smallest eigenvalue)") << std::endl;

@@ -70,6 +70,7 @@ namespace
       for (unsigned int i = 0; i < eigenvalues.size(); ++i)
         negative += eigenvalues[i] < 0;
       J = H;
+      H_last = H;
       try
         {
           J.compute_lu_factorization();
@@ -92,6 +93,15 @@ namespace
     {
       return negative;
     }
+    double
+    jacobian_abs_form(const Vector<double> &v) const override
+    {
+      double s = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          s += std::abs(H_last(i, j) * v[i] * v[j]);
+      return s;
+    }
     void
     converged_step(const Vector<double> &U, const solvers::StepReport &r) override
     {
@@ -113,7 +123,23 @@ namespace
     Vector<double>           eigenvalues;
     FullMatrix<double>       eigenvectors;
     int                      negative = 0;
+    FullMatrix<double>       H_last;
   };
+
+  /// The event was located by Newton on the augmented system, with at most 8
+  /// factorizations, to a resolution below a tenth of the tolerance used on it.
+  void
+  check_location(const solvers::BifurcationProblem::Event &e, const double tolerance)
+  {
+    std::cout << "  located by " << (e.located_by_newton ? "Newton" : "bisection") << " in "
+              << e.newton_iterations << " iterations, " << e.factorizations
+              << " factorizations, resolution " << solvers::event_resolution(e) << "\n";
+    check("located by Newton on the augmented system", e.located_by_newton);
+    check("at most 8 factorizations from detection to location (" +
+            std::to_string(e.factorizations) + ")",
+          e.factorizations <= 8);
+    check("resolution below a tenth of the tolerance", solvers::event_resolution(e) < 0.1 * tolerance);
+  }
 
   solvers::ArclengthSettings
   settings(double lambda_min, double lambda_max)
@@ -169,8 +195,10 @@ namespace
             events[0].event.kind == solvers::BifurcationProblem::Event::Kind::branch_point);
     if (events.empty())
       return;
-    // Along x = 0 the arclength is lambda itself: the tolerance carries over.
-    check_close("branch point at lambda = 1", events[0].event.lambda, 1, 0, 1e-9);
+    // Located by Newton: the resolution (printed; the last update, 4e-14,
+    // bounds it here) is below a tenth of the tolerance.
+    check_close("branch point at lambda = 1", events[0].event.lambda, 1, 0, 1e-12);
+    check_location(events[0].event, 1e-12);
     check_close("mode = +-(1, 0): |phi_y|", std::abs(events[0].mode[1]), 0, 0, 1e-12);
     check_close("eigenvalue of J along the mode ~ 0", events[0].event.eigenvalue, 0, 0, 1e-8);
     double worst = 0, worst_trivial = 0;
@@ -239,7 +267,10 @@ namespace
       return;
     // The fold is located to arclength 1e-10 in x; lambda = x^2 there.
     check_close("fold at x = 0", events[0].state[0], 0, 0, 1e-9);
-    check_close("fold at lambda = 0", events[0].event.lambda, 0, 0, 1e-9);
+    // (this toy lands exactly on x = 0 where J is singular: 10 iterations; no
+    // factorization count is asserted here)
+    check_close("fold at lambda = 0", events[0].event.lambda, 0, 0, 1e-12);
+    check("located by Newton on the augmented system", events[0].event.located_by_newton);
     double worst = 0, final_lambda = 0, final_x = 0;
     unsigned int wrong = 0;
     for (const auto &pt : p.history)
@@ -328,7 +359,9 @@ namespace
                                                      events[0].event.n_negative_after == 1);
     if (events.empty())
       return;
-    check_close("critical load = discrete Euler load", events[0].event.lambda, lambda_c, 1e-9);
+    // Resolution eps |v|.|J||v| / |dg/dlambda| = 1.4e-12 (6e-13 relative, printed).
+    check_close("critical load = discrete Euler load", events[0].event.lambda, lambda_c, 1e-10);
+    check_location(events[0].event, 1e-10 * lambda_c);
     std::cout << "  (discrete " << lambda_c << ", continuum pi^2/4 = " << M_PI * M_PI / 4 << ")\n";
     // The mode against sin(pi i/(2n+1)), both normalized, sign fixed.
     double dot = 0, nm = 0, ne = 0;

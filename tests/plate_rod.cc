@@ -242,7 +242,11 @@ namespace
           const auto   e     = first_event(*p);
           std::ostringstream what;
           what << "rho = " << rho << ", " << p->n_dofs() << " DoFs: critical mismatch";
-          check_close(what.str(), e.second, exact, k == 3 ? 1e-4 : 3e-3);
+          // k = 3: discretization 2.4e-5 plus the round-off scatter of this
+          // Kirchhoff-penalty threshold, measured up to 3.7e-5 relative
+          // (1 vs 2 BLAS threads, growth perturbed by 1e-14; its a-priori bound
+          // eps |v|.|J||v| / |dg/dt| is 4.5e-4: doc/theory-continuation.md 4).
+          check_close(what.str(), e.second, exact, k == 3 ? 1.5e-4 : 3e-3);
           if (rho == 1.)
             errors.push_back(std::abs(e.second / exact - 1));
           if (!p->events().empty() && k == 2)
