@@ -182,11 +182,86 @@ namespace
     }
   };
 
+  // E = (1 - l) x^2/2 + x^4/4 + (2 - l) y^2/2 + y^4/4 + c x^2 y^2/2, c = 1/2:
+  // the trivial branch has branch points at l = 1 (x) and 2 (y); on the
+  // x-branch x^2 = l - 1 the y-stiffness 2 - l + c x^2 = (3 - l)/2 vanishes
+  // at l = 3, a secondary branch point, from which the mixed branch
+  // x^2 + c y^2 = l - 1, y^2 + c x^2 = l - 2 starts.
+  class TwoModes : public DenseProblem
+  {
+  public:
+    static constexpr double c = 0.5;
+    TwoModes()
+      : DenseProblem(2)
+    {}
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      const double x = U[0], y = U[1];
+      R[0]    = (1 - l) * x + x * x * x + c * x * y * y;
+      R[1]    = (2 - l) * y + y * y * y + c * x * x * y;
+      H(0, 0) = 1 - l + 3 * x * x + c * y * y;
+      H(1, 1) = 2 - l + 3 * y * y + c * x * x;
+      H(0, 1) = H(1, 0) = 2 * c * x * y;
+    }
+  };
+
+  void
+  secondary_bifurcation()
+  {
+    TwoModes                   p;
+    solvers::ArclengthSettings s = settings(0, 4);
+    s.maximum_depth              = 2;
+    s.maximum_branches           = 6;
+    solvers::ArclengthContinuation driver(s, newton());
+    driver.progress = [](const std::string &m) { std::cout << m << "\n"; };
+    Vector<double> U(2);
+    const auto     events = driver.run(p, U, 0.);
+    // The secondary branch point: on a branch switched to from the first.
+    double secondary = NAN;
+    for (const auto &e : events)
+      if (e.event.branch != 0 && e.event.kind == solvers::BifurcationProblem::Event::Kind::branch_point &&
+          std::abs(e.state[0]) > 0.1)
+        secondary = e.event.lambda;
+    check_close("secondary branch point on the x-branch at l = 3", secondary, 3, 0, 1e-12);
+    // A branch of depth 2 (mixed: x, y != 0) lies on the closed form.
+    double       worst = 0;
+    unsigned int mixed = 0;
+    for (const auto &pt : p.history)
+      if (std::abs(pt.U[0]) > 1e-3 && std::abs(pt.U[1]) > 1e-3)
+        {
+          ++mixed;
+          const double x2 = pt.U[0] * pt.U[0], y2 = pt.U[1] * pt.U[1];
+          worst = std::max({worst, std::abs(x2 + TwoModes::c * y2 - (pt.lambda - 1)),
+                            std::abs(y2 + TwoModes::c * x2 - (pt.lambda - 2))});
+        }
+    check("the mixed branch (depth 2) was followed (" + std::to_string(mixed) + " states)", mixed > 5);
+    check_close("mixed branch on x^2 + c y^2 = l - 1, y^2 + c x^2 = l - 2", worst, 0, 0, 1e-10);
+  }
+
   void
   pitchfork()
   {
-    Pitchfork               p;
-    solvers::ArclengthContinuation driver(settings(-1, 2), newton());
+    // By default the -phi half of the symmetric pitchfork is recognized as
+    // the mirror image of the +phi half and not followed.
+    {
+      Pitchfork                      q;
+      solvers::ArclengthContinuation d(settings(-1, 2), newton());
+      Vector<double>                 U(2);
+      d.run(q, U, 0.);
+      unsigned int branches = 0;
+      for (const auto &pt : q.history)
+        branches = std::max(branches, pt.branch + 1);
+      check("mirror image recognized: the trivial branch and one half (" +
+              std::to_string(branches) + " branches)",
+            branches == 2);
+    }
+    Pitchfork                  p;
+    solvers::ArclengthSettings both = settings(-1, 2);
+    both.follow_mirror_images       = true;
+    solvers::ArclengthContinuation driver(both, newton());
     driver.progress = [](const std::string &s) { std::cout << s << "\n"; };
     Vector<double> U(2);
     const auto     events = driver.run(p, U, 0.);
@@ -408,6 +483,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever}};
+  const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
+                                   {"secondary_bifurcation", secondary_bifurcation}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

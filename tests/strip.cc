@@ -277,7 +277,9 @@ namespace
       "subsection Rod strains\n set Free strains = nu3\nend\n"
       "subsection Path following\n set Method = arclength\nend\n"
       "subsection Arclength continuation\n set Parameter range = 0, 0.55\n set Initial step = 0.02\n"
-      " set Maximum step = 0.05\n set Maximum number of branches = 3\n set Maximum number of steps = 40\nend\n";
+      " set Maximum step = 0.05\n set Maximum number of branches = 3\n set Maximum number of steps = 40\n"
+      // both halves of the pitchfork: the test checks that they are mirror images
+      " set Follow mirror images = true\nend\n";
     auto p = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2}}, arclength, cells);
     p->follow_branches();
     if (path)

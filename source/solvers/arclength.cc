@@ -2,6 +2,8 @@
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point.h>
 
+#include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -135,6 +137,17 @@ namespace cosmo
                         "branch from the branch point, along the mode.");
       prm.declare_entry("Maximum number of branches", "4", Patterns::Integer(1, 100),
                         "Branches followed in all, the first included.");
+      prm.declare_entry("Maximum branch depth", "1", Patterns::Integer(0, 100),
+                        "Switch at simple branch points on branches of depth below this: "
+                        "0 no switching, 1 on the first branch only, 2 also on the branches "
+                        "switched to from it (secondary bifurcations), and so on. The branches "
+                        "switched to from a branch are followed right after it, up to "
+                        "'Maximum number of branches' in all.");
+      prm.declare_entry("Follow mirror images", "false", Patterns::Bool(),
+                        "At a branch point where the branches along +phi and -phi start at the "
+                        "same lambda (to 1e-6 of their distance from the branch point: the "
+                        "two halves of a symmetric pitchfork, images of each other under the "
+                        "problem's symmetry), follow only +phi and say so; true follows both.");
       prm.leave_subsection();
     }
 
@@ -162,6 +175,8 @@ namespace cosmo
       both_directions  = prm.get_bool("Both directions");
       switch_amplitude = prm.get_double("Switch amplitude");
       maximum_branches = prm.get_integer("Maximum number of branches");
+      maximum_depth    = prm.get_integer("Maximum branch depth");
+      follow_mirror_images = prm.get_bool("Follow mirror images");
       if (!(lambda_min < lambda_max))
         throw io::InputError("Arclength continuation", "Parameter range",
                              prm.get("Parameter range"), "min < max");
@@ -701,6 +716,9 @@ namespace cosmo
                 start.tU     = phi;
                 start.tU *= sign;
                 start.tlambda = 0;
+                start.depth   = s.depth + 1;
+                start.branch  = branch;
+                start.sign    = sign;
                 switches.push_back(start);
               }
           events.push_back(record);
@@ -734,6 +752,7 @@ namespace cosmo
           Up.add(ds, s.tU);
           const double lp = s.lambda + ds * s.tlambda;
           State        next;
+          next.depth = s.depth;
           NewtonResult r;
           try
             {
@@ -807,12 +826,18 @@ namespace cosmo
       }
 
       std::vector<EventRecord> events;
-      std::vector<State>       switches;
-      follow(problem, s, 0, settings.switch_branches, events, switches, step);
+      std::vector<State>       switches; // grows while branches are followed
+      follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
+             switches, step);
 
       unsigned int branch = 1;
-      for (const auto &start : switches)
+      // The first point of the +phi branch of each branch point switched at
+      // (by the branch it leaves and its lambda), to recognize the -phi
+      // branch as its mirror image.
+      std::map<std::pair<unsigned int, double>, double> plus_lambda;
+      for (std::size_t q = 0; q < switches.size(); ++q)
         {
+          const State start = switches[q];
           if (branch >= settings.maximum_branches)
             {
               say("  maximum number of branches reached; further branch switches skipped");
@@ -821,22 +846,14 @@ namespace cosmo
           // First point of the new branch: a distance a along the mode, on
           // the hyperplane orthogonal to it (so not back on the old branch).
           State          first;
+          first.depth = start.depth;
           Vector<double> Up = start.U;
           Up.add(settings.switch_amplitude, start.tU);
+          NewtonResult r;
           try
             {
-              const NewtonResult r =
-                correct(problem, first, start.tU, 0., Up, start.lambda);
+              r = correct(problem, first, start.tU, 0., Up, start.lambda);
               analyse(problem, first, &start.tU, 0.);
-              StepReport report;
-              report.step              = ++step;
-              report.t                 = first.lambda;
-              report.newton_iterations = r.iterations;
-              report.residual_norm     = r.residual_norm;
-              report.branch            = branch;
-              report.n_negative        = first.n_negative;
-              problem.set_load_parameter(first.lambda);
-              problem.converged_step(first.U, report);
             }
           catch (NewtonFailure &e)
             {
@@ -844,10 +861,52 @@ namespace cosmo
               ++branch;
               continue;
             }
-          say("  following branch " + std::to_string(branch) + " from lambda = " +
-              std::to_string(first.lambda));
-          std::vector<State> no_switches;
-          follow(problem, first, branch, false, events, no_switches, step);
+          const auto key = std::make_pair(start.branch, start.lambda);
+          if (start.sign > 0)
+            plus_lambda[key] = first.lambda;
+          else if (start.sign < 0 && plus_lambda.count(key) && !settings.follow_mirror_images)
+            {
+              // The halves of a symmetric pitchfork start at the same lambda
+              // (lambda - lambda* is even in the amplitude); a generic branch
+              // point's differ at first order.
+              const double d = std::abs(first.lambda - plus_lambda[key]);
+              const double scale = std::max(std::abs(first.lambda - start.lambda),
+                                            std::abs(plus_lambda[key] - start.lambda));
+              if (d <= 1e-6 * scale + 1e-14 * (1 + std::abs(start.lambda)))
+                {
+                  std::ostringstream m;
+                  m << std::setprecision(10) << "  the branch along -phi from lambda = "
+                    << start.lambda << " (branch " << start.branch
+                    << ") is the mirror image of the one along +phi (their first points agree in "
+                       "lambda to "
+                    << std::setprecision(2) << d
+                    << "): followed once ('Follow mirror images = true' follows both)";
+                  say(m.str());
+                  continue;
+                }
+            }
+          {
+            StepReport report;
+            report.step              = ++step;
+            report.t                 = first.lambda;
+            report.newton_iterations = r.iterations;
+            report.residual_norm     = r.residual_norm;
+            report.branch            = branch;
+            report.n_negative        = first.n_negative;
+            problem.set_load_parameter(first.lambda);
+            problem.converged_step(first.U, report);
+          }
+          say("  following branch " + std::to_string(branch) + " (depth " +
+              std::to_string(first.depth) + ", from branch " + std::to_string(start.branch) +
+              ") from lambda = " + std::to_string(first.lambda));
+          const std::size_t queued = switches.size();
+          follow(problem, first, branch,
+                 settings.switch_branches && first.depth < settings.maximum_depth, events,
+                 switches, step);
+          // The branches switched to from this one come next (depth first):
+          // a secondary bifurcation is followed before the first branch's
+          // later branch points.
+          std::rotate(switches.begin() + q + 1, switches.begin() + queued, switches.end());
           ++branch;
         }
       return events;

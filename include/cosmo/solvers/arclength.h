@@ -184,6 +184,8 @@ namespace cosmo
       bool         both_directions    = true;  ///< follow +phi and -phi
       double       switch_amplitude   = 1e-2;  ///< a in U* + a phi (phi unit in the theta norm)
       unsigned int maximum_branches   = 4;
+      unsigned int maximum_depth      = 1;     ///< switch on branches of depth < this
+      bool         follow_mirror_images = false; ///< follow -phi when it mirrors +phi
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -224,6 +226,9 @@ namespace cosmo
         Vector<double> tU;             ///< tangent, U part
         double         tlambda    = 0; ///< tangent, lambda part
         int            n_negative = -1;
+        unsigned int   depth      = 0; ///< 0 the first branch, k+1 switched from depth k
+        unsigned int   branch     = 0; ///< of a switch start: the branch it leaves
+        double         sign       = 0; ///< of a switch start: +1 along +phi, -1 along -phi
       };
 
       ArclengthSettings settings;
