@@ -31,10 +31,12 @@ def read_study(d):
             col.setdefault(k.split(" [")[0], []).append(plot_steps.to_float(v))
     model = "?"
     try:
-        for line in open(os.path.join(d, "parameters.prm")):
-            m = re.match(r"\s*set Model\s*=\s*(.+)", line)
-            if m:
-                model = m.group(1).split("#")[0].strip()
+        text = open(os.path.join(d, "parameters.prm")).read()
+        m = re.search(r"^\s*set Model\s*=\s*([^#\n]+)", text, re.M)
+        if m:
+            model = m.group(1).strip()
+        if re.search(r"^\s*set Critical curve\s*=\s*true", text, re.M):
+            model += " (critical curve)"
     except OSError:
         pass
     axis = next((k for k in rows[0] if k.startswith("value")), "value") if rows else "value"

@@ -79,6 +79,12 @@ if ((${#plates[@]})); then
     python3 scripts/plot_plate_rod_study.py output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
       "${studies_pr[@]}" || { log "plotting the plate_rod study FAILED" >&2; failed=1; }
   fi
+  curve=output/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat
+  if [[ -f "$curve/critical_curve.csv" ]]; then
+    python3 scripts/plot_plate_rod_study.py "$curve/critical_curve.png" "$curve" \
+      output/plate_rod/studies/critical_growth_vs_rim_stiffness_cosserat ||
+      { log "plotting the critical curve FAILED" >&2; failed=1; }
+  fi
 fi
 
 log "output is in $REPO/output/ (logs in output/logs/)"

@@ -266,6 +266,14 @@ namespace cosmo
       prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
                         "Stop where the first change of stability is located (critical "
                         "growth only: studies, quick checks).");
+      prm.declare_entry("Critical curve", "false", Patterns::Bool(),
+                        "In a study (section Parameter sweep): from the second value on, "
+                        "continue the critical point of the previous values (secant "
+                        "prediction in the swept value, then Newton on the augmented system; "
+                        "no path from t = 0) instead of an independent run. A point where "
+                        "that fails, or where another mode has become critical first, is run "
+                        "independently (said in the log; column 'continued' = 0). Writes "
+                        "critical_curve.csv (the columns of sweep.csv, which is written too).");
       prm.leave_subsection();
       io::ParameterSweep::declare_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
@@ -991,6 +999,36 @@ namespace cosmo
     }
 
     void
+    PlateRodProblem::locate_from_guess()
+    {
+      const CriticalGuess &g = *critical_guess;
+      if (g.U.size() != dof_handler.n_dofs())
+        throw io::RunFailure("the critical point to start from has " + std::to_string(g.U.size()) +
+                             " DoFs, this mesh " + std::to_string(dof_handler.n_dofs()));
+      solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
+      driver.progress = [this](const std::string &s) { say(s); };
+      const bool stop = stop_at_first_event;
+      stop_at_first_event = false; // located_event must not end the run here
+      const auto record = driver.locate_from(*this, g.U, g.t, false, g.mode);
+      stop_at_first_event = stop;
+      if (!record.event.located_by_newton)
+        throw io::RunFailure(record.event.message);
+      // On the flat branch the count at the critical point is 0 or 1 (the
+      // crossing eigenvalue's sign is round-off there): more means another
+      // mode became critical below it.
+      if (record.event.n_negative_after > 1)
+        throw io::RunFailure("another mode is critical below the continued critical point (" +
+                             std::to_string(record.event.n_negative_after) +
+                             " negative eigenvalues there): the critical mode changed");
+      solution = Vector<double>(record.state.begin(), record.state.end());
+      solvers::StepReport report;
+      report.t          = record.event.lambda;
+      report.n_negative = record.event.n_negative_after;
+      set_load_parameter(report.t);
+      converged_step(solution, report);
+    }
+
+    void
     PlateRodProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
     {
       solution = U;
@@ -1418,6 +1456,10 @@ namespace cosmo
       std::string status = "converged", message;
       try
         {
+          if (critical_guess)
+            locate_from_guess();
+          else
+          {
           set_load_parameter(path_start);
           solve_flat_state(path_start);
           if (setup_jacobian(solution) == 0 && n_negative_eigenvalues() > 0)
@@ -1428,6 +1470,7 @@ namespace cosmo
                 " negative eigenvalues) and no initial guess of a buckled state can be given: "
                 "start the path below the first critical growth (t = 0 always is)");
           follow_branches();
+          }
         }
       catch (solvers::NewtonFailure &e)
         {
@@ -1520,38 +1563,88 @@ namespace cosmo
         auto &     log      = *log_file;
         log("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
             ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
+        prm.enter_subsection("Growth path");
+        const bool curve = prm.get_bool("Critical curve");
+        prm.leave_subsection();
         io::CSVTable table;
         table.add_column("value", sweep.axis_label());
         for (const auto &c : {"converged", "t_critical", "t_resolution", "mismatch_critical",
                               "closed_form_mismatch", "mode_number", "mode_out_of_plane", "dofs",
-                              "seconds"})
+                              "seconds", "factorizations", "continued"})
           table.add_column(c);
+        // The critical points found so far (critical curve): value, state, t, mode.
+        struct Found
+        {
+          double         value, t;
+          Vector<double> U, mode;
+        };
+        std::vector<Found> found;
         std::string refused;
         for (unsigned int k = 0; k < sweep.size(); ++k)
           {
             const auto        start = std::chrono::steady_clock::now();
             const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
             double            converged = 0, t = NAN, D = NAN, closed = NAN, n = NAN, out = NAN,
-                   dofs = NAN, resolution = NAN;
+                   dofs = NAN, resolution = NAN, factorizations = NAN, continued = 0;
             try
               {
                 sweep.apply(prm, k);
                 io::ParameterSweep::set_entry(prm, "Output/Output directory", point, "Output",
                                               "Output directory");
-                PlateRodProblem problem;
-                problem.parse_parameters(prm);
                 io::RunOptions quiet = options;
                 quiet.quiet          = true;
-                try
+                auto problem_ptr     = std::make_unique<PlateRodProblem>();
+                problem_ptr->parse_parameters(prm);
+                if (curve && !found.empty())
                   {
-                    problem.run(quiet, prm);
-                    converged = 1;
+                    // Secant prediction of the critical point at this value.
+                    PlateRodProblem::CriticalGuess g;
+                    const Found &                  a = found.back();
+                    g.U                              = a.U;
+                    g.t                              = a.t;
+                    g.mode                           = a.mode;
+                    if (found.size() > 1 && found[found.size() - 2].U.size() == a.U.size())
+                      {
+                        const Found &b = found[found.size() - 2];
+                        // (in the logarithm of the value where all are positive:
+                        // studies of stiffnesses span decades)
+                        const double v = sweep.value(k);
+                        const bool   logs = v > 0 && a.value > 0 && b.value > 0;
+                        const double f =
+                          logs ? std::log(v / a.value) / std::log(a.value / b.value) :
+                                 (v - a.value) / (a.value - b.value);
+                        g.U.sadd(1 + f, -f, b.U);
+                        g.t = (1 + f) * a.t - f * b.t;
+                      }
+                    problem_ptr->start_from_critical_point(g);
+                    try
+                      {
+                        problem_ptr->run(quiet, prm);
+                        converged = 1;
+                        continued = 1;
+                      }
+                    catch (io::RunFailure &e)
+                      {
+                        log("  point " + std::to_string(k) +
+                            ": continuing the critical point failed (" + e.what() +
+                            "); an independent run instead");
+                        problem_ptr = std::make_unique<PlateRodProblem>();
+                        problem_ptr->parse_parameters(prm);
+                      }
                   }
-                catch (io::RunFailure &e)
-                  {
-                    log("  point " + std::to_string(k) + ": " + e.what());
-                  }
-                dofs = problem.n_dofs();
+                PlateRodProblem &problem = *problem_ptr;
+                if (continued == 0)
+                  try
+                    {
+                      problem.run(quiet, prm);
+                      converged = 1;
+                    }
+                  catch (io::RunFailure &e)
+                    {
+                      log("  point " + std::to_string(k) + ": " + e.what());
+                    }
+                dofs           = problem.n_dofs();
+                factorizations = problem.timings().calls("factorization");
                 for (const auto &e : problem.events())
                   if (e.event.branch == 0 &&
                       e.event.kind == solvers::BifurcationProblem::Event::Kind::branch_point)
@@ -1559,6 +1652,10 @@ namespace cosmo
                       t          = e.event.lambda;
                       D          = problem.mismatch(t);
                       resolution = solvers::event_resolution(e.event);
+                      if (curve && converged == 1 && e.event.located_by_newton)
+                        found.push_back({sweep.value(k), t,
+                                         Vector<double>(e.state.begin(), e.state.end()),
+                                         Vector<double>(e.mode.begin(), e.mode.end())});
                       if (!e.mode.empty())
                         {
                           const auto c =
@@ -1578,8 +1675,11 @@ namespace cosmo
               }
             const double seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            table.add_row({sweep.value(k), converged, t, resolution, D, closed, n, out, dofs, seconds});
+            table.add_row({sweep.value(k), converged, t, resolution, D, closed, n, out, dofs, seconds,
+                           factorizations, continued});
             table.write(directory + "/sweep.csv");
+            if (curve)
+              table.write(directory + "/critical_curve.csv");
             std::ostringstream line;
             line << std::setprecision(6) << "  " << sweep.label() << " = " << sweep.value(k)
                  << ": critical t = " << t << ", mismatch " << D << " (closed form " << closed

@@ -211,6 +211,29 @@ namespace cosmo
       double                         stiffness_coupling = 0;
       double                         path_start = 0;
       bool                           stop_at_first_event = false;
+
+    public:
+      /**
+       * A critical point to start from instead of a path from t: run() then
+       * locates the critical point by Newton on the augmented system from
+       * this guess (the next point of a critical curve) and reports it as
+       * the first event. The guess must have this problem's DoFs.
+       */
+      struct CriticalGuess
+      {
+        Vector<double> U, mode;
+        double         t = 0;
+      };
+      void
+      start_from_critical_point(const CriticalGuess &g)
+      {
+        critical_guess = std::make_unique<CriticalGuess>(g);
+      }
+
+    private:
+      std::unique_ptr<CriticalGuess> critical_guess;
+      void
+      locate_from_guess();
       solvers::NewtonSettings        newton_settings;
       solvers::ArclengthSettings     arclength_settings;
       std::string                    output_directory;

@@ -801,6 +801,58 @@ namespace cosmo
         }
     }
 
+    EventRecord
+    ArclengthContinuation::locate_from(BifurcationProblem &  problem,
+                                       const Vector<double> &U,
+                                       const double          lambda,
+                                       const bool            fold,
+                                       const Vector<double> &mode)
+    {
+      problem.mode_mask(mask);
+      theta = settings.theta > 0 ? settings.theta : 1. / std::max(1., mask.l1_norm());
+      EventRecord record;
+      auto &      e = record.event;
+      e.kind = fold ? BifurcationProblem::Event::Kind::fold : BifurcationProblem::Event::Kind::branch_point;
+      const Vector<double> no_tangent(U.size());
+      const CriticalPoint  cp =
+        locate_critical_point(problem, fold, U, lambda, mode, mask, no_tangent, 0., false,
+                              1e-2 * std::abs(lambda) + 1e-12, newton.relative_tolerance);
+      e.factorizations    = cp.factorizations;
+      e.n_negative_before = 0;
+      e.n_negative_after  = problem.n_negative_eigenvalues();
+      e.lambda_lo = e.lambda_hi = lambda;
+      if (!cp.converged)
+        {
+          e.message = "Newton on the augmented system failed: " + cp.message;
+          say("  critical point from the guess at lambda = " + std::to_string(lambda) + ": " +
+              e.message);
+          return record;
+        }
+      e.located_by_newton = true;
+      e.lambda            = cp.lambda;
+      e.newton_iterations = cp.iterations;
+      e.residual_norm     = cp.residual_norm;
+      e.test_function     = cp.test_function;
+      e.unfolding         = cp.unfolding;
+      e.eigenvalue        = cp.eigenvalue;
+      e.precision         = cp.lambda_update;
+      e.resolution        = cp.resolution;
+      record.state.assign(cp.U.begin(), cp.U.end());
+      Vector<double> phi = cp.mode;
+      phi /= std::sqrt(norm2(phi));
+      record.mode.assign(phi.begin(), phi.end());
+      std::ostringstream m;
+      m << std::setprecision(12) << "  " << e.name() << " at lambda = " << e.lambda
+        << " from the guess at lambda = " << lambda << " (Newton on the augmented system: "
+        << e.newton_iterations << " iterations, " << e.factorizations
+        << " factorizations, resolution " << std::setprecision(2) << event_resolution(e)
+        << ", negative eigenvalues there " << e.n_negative_after << ")";
+      say(m.str());
+      problem.set_load_parameter(e.lambda);
+      problem.located_event(e, cp.U, e.kind == BifurcationProblem::Event::Kind::branch_point ? &phi : nullptr);
+      return record;
+    }
+
     std::vector<EventRecord>
     ArclengthContinuation::run(BifurcationProblem &problem, Vector<double> &U, const double lambda)
     {

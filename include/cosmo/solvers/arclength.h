@@ -218,6 +218,25 @@ namespace cosmo
       std::vector<EventRecord>
       run(BifurcationProblem &problem, Vector<double> &U, double lambda);
 
+      /**
+       * Locate a critical point by Newton on the augmented system from a
+       * guess (U, lambda) and a mode estimate, without a path to it: the
+       * step of a critical curve, where the guess is the critical point at
+       * the previous value of a second parameter. Reports it through
+       * problem.located_event() (branch 0) and returns it; event.located_by_newton
+       * is false, with the reason in event.message, if Newton failed.
+       * n_negative_after is the count at the located point's last
+       * factorization: on a stable branch it is 0 or 1 (the critical
+       * eigenvalue's sign is round-off there); more means another mode
+       * became critical first.
+       */
+      EventRecord
+      locate_from(BifurcationProblem &  problem,
+                  const Vector<double> &U,
+                  double                lambda,
+                  bool                  fold,
+                  const Vector<double> &mode);
+
     private:
       struct State
       {

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# A critical curve (Growth path / Critical curve = true) against the study of
+# independent runs at the same values: every continued point must agree in
+# t_critical within max(1e-7 t, 2 x the stated resolution) and must have cost
+# fewer factorizations than the independent run of that value; prints the
+# ratio of the factorizations of the whole study to the curve's.
+# usage: critical_curve.sh <plate_rod> <independent study.prm> <curve.prm> <scratch dir>
+set -euo pipefail
+exe=$(realpath "$1") independent=$(realpath "$2") curve=$(realpath "$3") dir=$(realpath -m "$4")
+rm -rf "$dir" && mkdir -p "$dir"
+for name in independent curve; do
+  prm=${!name}
+  sed -e "s|^\( *set Output directory *=\).*|\1 $dir/$name|" "$prm" > "$dir/$name.prm"
+  "$exe" --quiet "$dir/$name.prm" > "$dir/$name.log" 2>&1 || { tail -5 "$dir/$name.log"; exit 1; }
+done
+python3 - "$dir/independent/sweep.csv" "$dir/curve/critical_curve.csv" <<'PY'
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1])))
+b = list(csv.DictReader(open(sys.argv[2])))
+assert len(a) == len(b) and a, "the two tables differ in length"
+bad = 0
+fa = fb = 0.0
+for x, y in zip(a, b):
+    ta, tb = float(x["t_critical"]), float(y["t_critical"])
+    tol = max(1e-7 * abs(ta), 2 * max(float(x["t_resolution"]), float(y["t_resolution"])))
+    fa += float(x["factorizations"]); fb += float(y["factorizations"])
+    ok = abs(ta - tb) <= tol and (y["continued"] == "0" or float(y["factorizations"]) < float(x["factorizations"]))
+    bad += not ok
+    print("value %s: t %.12g (independent, %s factorizations) vs %.12g (%s, %s factorizations): "
+          "|diff| %.2e relative, tolerance %.2e%s" % (
+        list(x.values())[0], ta, x["factorizations"], tb,
+        "continued" if y["continued"] == "1" else "independent", y["factorizations"],
+        abs(ta - tb) / abs(ta), tol / abs(ta), "" if ok else "  <-- FAILS"))
+assert any(y["continued"] == "1" for y in b), "no point was continued"
+print("factorizations: independent study %d, critical curve %d (ratio %.2f)" % (fa, fb, fa / fb))
+sys.exit(1 if bad else 0)
+PY
