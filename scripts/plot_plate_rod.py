@@ -13,8 +13,9 @@ of the radial displacement, for the mode numbers the domain admits) on the
 bifurcated branches, and the
 energy relative to the flat branch. One colour per branch, solid where the
 state is stable (no negative eigenvalue), dashed where it is not; located
-events are marked with dotted lines, the closed-form threshold with a grey
-band. Exit status 0, 1 bad usage, 2 no matplotlib.
+events are marked with dotted lines labelled with their kind (BP branch
+point, F fold), mode number and branch, the closed-form threshold with a
+grey band. Exit status 0, 1 bad usage, 2 no matplotlib.
 """
 
 import json
@@ -98,9 +99,17 @@ def plot_run(plt, run_dir):
             axes[1].plot([columns["t"][i] for i in rows],
                          [columns["rim_radial_strain"][i] for i in rows], "-", color="C%d" % b,
                          label="branch %d: rim radial strain (no lobes)" % b)
-    for e in summary.get("events", []):
+    for k, e in enumerate(summary.get("events", [])):
         for ax in axes:
             ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
+        # Label: kind (BP branch point, F fold), mode number and type, branch.
+        label = "%s%s b%d" % ("F" if e.get("kind") == "fold" else "BP",
+                              (" n=%d%s" % (e["mode_number"],
+                                            "" if e.get("mode_type_out_of_plane", 1) else " planar"))
+                              if "mode_number" in e else "", e.get("branch", 0))
+        axes[0].annotate(label, xy=(e.get("t", math.nan), 1 - 0.06 * (k % 8)),
+                         xycoords=("data", "axes fraction"), fontsize=6, rotation=90,
+                         ha="right", va="top", color="dimgray")
     first = summary.get("closed_form", {}).get("first", {}).get("t")
     if first is not None and math.isfinite(first):
         for ax in axes:
