@@ -331,6 +331,69 @@ namespace
                     differences[k] / differences[k + 1], 4, 0.12 + tolerances[k] + tolerances[k + 1]);
   }
 
+  // The full disc's double eigenvalues (cos 2 theta, sin 2 theta of the
+  // saddle: the count jumps by 2) are located and switched in the fixed-point
+  // space of the reflection y -> -y, where the pair is simple: the full disc
+  // finds the branch the sector pi/2 (whose mirrors keep only cos 2k theta)
+  // finds. Lobes setting of parameter_files/plate_rod/lobes.prm, 2 refinements
+  // of each mesh (the meshes differ: the thresholds agree to the
+  // discretization, measured 2.2e-4 relative, tolerance 1e-3).
+  void
+  full_disc_double_eigenvalue()
+  {
+    Setup s;
+    s.EA = s.GA = 0.1;
+    s.EI1 = s.EI2 = s.GJ = 1e-6;
+    s.rod_growth          = 1.01;
+    s.t_max               = 0.25;
+    s.initial_step        = 0.02;
+    s.maximum_step        = 0.1;
+    s.switch_branches     = true;
+    s.branches            = 2;
+    s.refinements         = 2;
+    s.sector_angle        = 90;
+    s.model               = "cosserat";
+    std::vector<double> threshold, amplitude;
+    for (const std::string domain : {"full disc", "sector"})
+      {
+        s.domain = domain;
+        auto p   = make(s);
+        p->solve_flat_state(0.);
+        p->follow_branches();
+        if (p->events().empty())
+          {
+            check(domain + ": an event", false);
+            return;
+          }
+        const auto &e = p->events().front();
+        Vector<double> mode(e.mode.begin(), e.mode.end());
+        const auto     c = p->classify_mode(mode);
+        std::cout << "  " << domain << ", " << p->n_dofs() << " DoFs: first event t = "
+                  << std::setprecision(10) << e.event.lambda << ", count " << e.event.n_negative_before
+                  << " -> " << e.event.n_negative_after << ", mode n = " << c.first
+                  << (e.event.located_by_newton ? ", Newton" : ", bisection") << "\n";
+        check(domain + ": the saddle n = 2, out of plane, located by Newton",
+              c.first == 2 && c.second && e.event.located_by_newton);
+        if (domain == "full disc")
+          check("full disc: a double eigenvalue (count 0 -> 2)", e.event.multiplicity == 2);
+        threshold.push_back(e.event.lambda);
+        // |w_2| on the rim on the switched branch at t = 0.2, interpolated.
+        const unsigned int k2 = 2 / (domain == "sector" ? 2 : 1);
+        const auto &       path = p->path();
+        double             a    = NAN;
+        for (unsigned int i = 1; i < path.size(); ++i)
+          if (path[i].branch == 1 && path[i - 1].branch == 1 && path[i - 1].t < 0.2 && path[i].t >= 0.2)
+            {
+              const double f = (0.2 - path[i - 1].t) / (path[i].t - path[i - 1].t);
+              a = (1 - f) * path[i - 1].rim_w_amplitude[k2] + f * path[i].rim_w_amplitude[k2];
+            }
+        std::cout << "    |w_2| on the rim at t = 0.2 on the switched branch: " << a << "\n";
+        amplitude.push_back(a);
+      }
+    check_close("threshold: full disc against sector", threshold[0], threshold[1], 1e-3);
+    check_close("saddle amplitude at t = 0.2: full disc against sector", amplitude[0], amplitude[1], 1e-2);
+  }
+
   // Anchor 4: a sector and the full disc on the same branch.
   void
   sector_vs_full_disc()
@@ -580,6 +643,7 @@ main(int argc, char **argv)
                              {"axisymmetric_threshold", axisymmetric_threshold},
                              {"cosserat_vs_kirchhoff", cosserat_vs_kirchhoff},
                              {"sector_vs_full_disc", sector_vs_full_disc},
+                             {"full_disc_double_eigenvalue", full_disc_double_eigenvalue},
                              {"von_karman_vs_cosserat", von_karman_vs_cosserat},
                              {"out_of_plane_lobes", out_of_plane_lobes},
                              {"planar_lobes", planar_lobes},

@@ -604,6 +604,50 @@ namespace cosmo
           for (unsigned int i = 0; i < idx.size(); ++i)
             dof_component[idx[i]] = fe->system_to_component_index(i).first;
         }
+      make_reflection();
+    }
+
+    void
+    PlateRodProblem::make_reflection()
+    {
+      // The full disc's reflection y -> -y: u1, u3 even, u2 odd; the rotation
+      // vector is axial, theta -> -diag(1, -1, 1) theta: theta1 and alpha
+      // (about E3) odd, theta2 even. DoFs are paired by their support points.
+      reflection.clear();
+      if (domain == "sector")
+        return;
+      std::vector<Point<2>> points(dof_handler.n_dofs());
+      DoFTools::map_dofs_to_support_points(*mapping, dof_handler, points);
+      const double scale = 1e-7 * radius;
+      std::map<std::tuple<long long, long long, unsigned int>, types::global_dof_index> at;
+      auto key = [&](const Point<2> &p, const unsigned int c) {
+        return std::make_tuple(std::llround(p[0] / scale), std::llround(p[1] / scale), c);
+      };
+      for (types::global_dof_index i = 0; i < points.size(); ++i)
+        at[key(points[i], dof_component[i])] = i;
+      const double sign[6] = {1, -1, 1, -1, 1, -1};
+      reflection.resize(points.size());
+      for (types::global_dof_index i = 0; i < points.size(); ++i)
+        {
+          const auto it = at.find(key(Point<2>(points[i][0], -points[i][1]), dof_component[i]));
+          if (it == at.end())
+            {
+              reflection.clear(); // the mesh is not mirror-symmetric: no reflection
+              return;
+            }
+          reflection[i] = {it->second, sign[dof_component[i]]};
+        }
+    }
+
+    bool
+    PlateRodProblem::project_to_fixed_point_space(Vector<double> &v) const
+    {
+      if (reflection.empty() || v.size() != reflection.size())
+        return false;
+      const Vector<double> w = v;
+      for (unsigned int i = 0; i < v.size(); ++i)
+        v[i] = 0.5 * (w[i] + reflection[i].second * w[reflection[i].first]);
+      return true;
     }
 
     kinematics::PlateGrowthAtPoint
@@ -1035,6 +1079,7 @@ namespace cosmo
       load_parameter = report.t;
       PlateRodState s = analyse(U);
       s.n_negative    = report.n_negative;
+      s.branch        = report.branch;
       auto same_state = [&](const Vector<double> &V, const double load) {
         return V.size() == U.size() && load == load_parameter &&
                std::equal(U.begin(), U.end(), V.begin());

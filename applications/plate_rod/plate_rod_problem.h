@@ -55,6 +55,7 @@ namespace cosmo
       std::vector<double> rim_ur_amplitude; ///< same for the radial displacement
       int                 n_negative = -1;
       double              smallest_eigenvalue = 0;
+      unsigned int        branch = 0; ///< of the continuation (0 the first)
     };
 
     class PlateRodProblem : public solvers::BifurcationProblem
@@ -230,8 +231,16 @@ namespace cosmo
         critical_guess = std::make_unique<CriticalGuess>(g);
       }
 
+      /// Full disc: (v + S v)/2 with S the reflection y -> -y (sector: false).
+      bool
+      project_to_fixed_point_space(Vector<double> &v) const override;
+
     private:
       std::unique_ptr<CriticalGuess> critical_guess;
+      /// Full disc: the DoF each DoF maps to under y -> -y, and the sign.
+      std::vector<std::pair<types::global_dof_index, double>> reflection;
+      void
+      make_reflection();
       void
       locate_from_guess();
       solvers::NewtonSettings        newton_settings;

@@ -3,6 +3,7 @@
 #include <cosmo/solvers/critical_point.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <cmath>
 #include <cstdlib>
@@ -347,15 +348,13 @@ namespace cosmo
        * beyond |1/mu0|. Returns the eigenvalue (0 if none of that sign found).
        */
       double
-      crossing_mode(BifurcationProblem &               problem,
-                    const Vector<double> &             mask,
-                    const double                       wanted_sign,
-                    const std::vector<Vector<double>> &orthogonal_to,
-                    Vector<double> &                   phi)
+      crossing_mode(BifurcationProblem &                          problem,
+                    const Vector<double> &                        mask,
+                    const double                                  wanted_sign,
+                    const std::vector<Vector<double>> &           orthogonal_to,
+                    Vector<double> &                              phi,
+                    const std::function<void(Vector<double> &)> &project = {})
       {
-        const double mu0 = smallest_eigenvalue(problem, mask, phi, 30, orthogonal_to);
-        if (mu0 * wanted_sign >= 0 || mu0 == 0)
-          return mu0;
         const unsigned int n = problem.n_unknowns();
         auto dot = [&](const Vector<double> &a, const Vector<double> &b) {
           double s = 0;
@@ -363,36 +362,58 @@ namespace cosmo
             s += mask[i] * a[i] * b[i];
           return s;
         };
-        const double   sigma = 1. / mu0;
-        Vector<double> x(n), d(n);
-        // Start away from the found mode, which the shift makes the weakest.
+        // y = P (J^-1 x), masked, deflated; returns the Rayleigh quotient x.y.
+        auto apply = [&](const Vector<double> &x, Vector<double> &y) {
+          problem.solve_with_jacobian(x, y);
+          y.scale(mask);
+          if (project)
+            project(y);
+          for (const auto &q : orthogonal_to)
+            y.add(-dot(y, q) / dot(q, q), q);
+          return dot(x, y);
+        };
+        // Power iteration on J^-1 - sigma I from x0; returns 1/rho.
+        auto iterate = [&](Vector<double> x, const double sigma, const unsigned int iterations) {
+          x /= std::sqrt(dot(x, x));
+          double rho = 0;
+          for (unsigned int it = 0; it < iterations; ++it)
+            {
+              Vector<double> y(n);
+              rho = apply(x, y);
+              y.add(-sigma, x);
+              y /= std::sqrt(dot(y, y));
+              if (dot(y, x) < 0)
+                y *= -1.;
+              Vector<double> d = y;
+              d -= x;
+              x = y;
+              if (std::sqrt(dot(d, d)) < 1e-8)
+                break;
+            }
+          phi = x;
+          return rho != 0 ? 1. / rho : 0.;
+        };
+        Vector<double> x0(n);
         for (unsigned int i = 0; i < n; ++i)
-          x[i] = mask[i] * (1 + 0.3 * std::cos(0.7 * i + 0.2));
-        x.add(-dot(x, phi) / dot(phi, phi), phi);
-        x /= std::sqrt(dot(x, x));
-        double rho = 0;
-        for (unsigned int it = 0; it < 300; ++it)
-          {
-            Vector<double> y(n);
-            problem.solve_with_jacobian(x, y);
-            y.scale(mask);
-            for (const auto &q : orthogonal_to)
-              y.add(-dot(y, q) / dot(q, q), q);
-            rho = dot(x, y); // Rayleigh quotient of J^-1
-            y.add(-sigma, x);
-            y /= std::sqrt(dot(y, y));
-            if (dot(y, x) < 0)
-              y *= -1.;
-            d = y;
-            d -= x;
-            x = y;
-            if (std::sqrt(dot(d, d)) < 1e-8)
-              break;
-          }
-        if (rho * wanted_sign <= 0)
-          return 0;
-        phi = x;
-        return 1. / rho;
+          x0[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
+        if (project)
+          project(x0);
+        for (const auto &q : orthogonal_to)
+          x0.add(-dot(x0, q) / dot(q, q), q);
+        const double mu0 = iterate(x0, 0., 30);
+        if (mu0 * wanted_sign >= 0 || mu0 == 0)
+          return mu0;
+        // Every eigenvalue of the other sign maps into (-|1/mu0|, 0] or
+        // [0, |1/mu0|) under J^-1 - (1/mu0) I, the wanted ones beyond.
+        const Vector<double> found = phi;
+        Vector<double>       x1(n);
+        for (unsigned int i = 0; i < n; ++i)
+          x1[i] = mask[i] * (1 + 0.3 * std::cos(0.7 * i + 0.2));
+        if (project)
+          project(x1);
+        x1.add(-dot(x1, found) / dot(found, found), found);
+        const double mu = iterate(x1, 1. / mu0, 300);
+        return mu * wanted_sign > 0 ? mu : 0.;
       }
     } // namespace
 
@@ -559,7 +580,13 @@ namespace cosmo
                 factorized = Factorized::hi;
               }
           };
+          // A double crossing of a problem with a reflection may be a double
+          // eigenvalue (D_n symmetry): it is located in the reflection's
+          // fixed-point space, where it is simple, rather than bisected.
+          Vector<double> probe(s.U.size());
+          const bool     has_reflection = problem.project_to_fixed_point_space(probe);
           while (std::abs(hi.n_negative - lo.n_negative) > 1 &&
+                 !(has_reflection && std::abs(hi.n_negative - lo.n_negative) == 2) &&
                  sigma_hi - sigma_lo > settings.event_tolerance && !bisection_failed)
             bisect_once();
 
@@ -580,7 +607,11 @@ namespace cosmo
           // strictly inside the bracket; a Newton point outside it is another
           // critical point nearby (two crossings close together): halve the
           // bracket by the count and try again from its new end.
-          if (settings.newton_location && e.multiplicity == 1)
+          const bool symmetric_double = has_reflection && e.multiplicity == 2;
+          std::function<void(Vector<double> &)> project;
+          if (symmetric_double)
+            project = [&problem](Vector<double> &v) { problem.project_to_fixed_point_space(v); };
+          if (settings.newton_location && (e.multiplicity == 1 || symmetric_double))
             for (unsigned int attempt = 0; attempt < 4 && !e.located_by_newton; ++attempt)
               {
                 if (attempt > 0)
@@ -608,10 +639,13 @@ namespace cosmo
                 const bool     at_hi       = (&start == &hi);
                 const double   wanted_sign = (count_rises == at_hi) ? -1. : 1.;
                 Vector<double> border;
-                crossing_mode(problem, mask, wanted_sign, modes_of_this_step, border);
+                // (a double eigenvalue: in the fixed-point space of the
+                // reflection, where its symmetric representative is simple)
+                crossing_mode(problem, mask, wanted_sign, modes_of_this_step, border, project);
                 const CriticalPoint cp = locate_critical_point(
                   problem, e.kind == Kind::fold, start.U, start.lambda, border, mask, s.tU,
-                  s.tlambda, true, std::abs(hi.lambda - lo.lambda), newton.relative_tolerance);
+                  s.tlambda, true, std::abs(hi.lambda - lo.lambda), newton.relative_tolerance,
+                  CriticalPointSettings(), project);
                 factorizations += cp.factorizations;
                 factorized = Factorized::none;
                 e.resolution = std::max(e.resolution, cp.resolution);
@@ -701,12 +735,16 @@ namespace cosmo
                     ", NOT refined to the tolerance: the corrector failed inside the step" :
                     "");
           m << "; " << e.factorizations << " factorizations)";
-          if (e.multiplicity > 1)
+          if (e.multiplicity > 1 && symmetric_double && e.located_by_newton)
+            m << " -- a double eigenvalue: located and switched onto its symmetric "
+                 "representative, in the fixed-point space of the problem's reflection";
+          else if (e.multiplicity > 1)
             m << " -- a multiple eigenvalue (" << e.multiplicity
               << " cross at once): not switched here; a symmetry-reduced domain makes it simple";
           say(m.str());
 
-          if (e.kind == Kind::branch_point && may_switch && e.multiplicity == 1 && phi.size())
+          if (e.kind == Kind::branch_point && may_switch && phi.size() &&
+              (e.multiplicity == 1 || (symmetric_double && e.located_by_newton)))
             for (const double sign : settings.both_directions ? std::vector<double>{1., -1.} :
                                                                 std::vector<double>{1.})
               {

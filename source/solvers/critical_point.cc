@@ -58,7 +58,8 @@ namespace cosmo
                           const bool                   factorized,
                           const double                 lambda_scale,
                           const double                 residual_tolerance,
-                          const CriticalPointSettings &settings)
+                          const CriticalPointSettings &settings,
+                          const std::function<void(Vector<double> &)> &project)
     {
       const unsigned int n = problem.n_unknowns();
       CriticalPoint      cp;
@@ -76,6 +77,11 @@ namespace cosmo
           return cp;
         }
       b /= bn;
+      if (project)
+        {
+          project(b);
+          b /= std::sqrt(b * b);
+        }
       // Branch points: keep (U, lambda) on the old branch's tangent along b.
       const double beta_t = (!fold && tlambda != 0) ? (b * tU) / tlambda : 0.;
 
@@ -127,6 +133,8 @@ namespace cosmo
           // The bordered system: g and v.
           if (problem.solve_with_jacobian(b, y) != 0)
             return fail("a solve with the Jacobian failed");
+          if (project)
+            project(y);
           const double beta = b * y;
           if (!std::isfinite(beta) || beta == 0)
             return fail("the bordered system is singular (the border is orthogonal to the mode)");
@@ -229,6 +237,8 @@ namespace cosmo
           last_dU *= -1.;
           last_dU.add(-d_lambda, z);
           last_dU.add(-d_mu, y);
+          if (project)
+            project(last_dU);
           U += last_dU;
           last_d_lambda = d_lambda;
           lambda += d_lambda;

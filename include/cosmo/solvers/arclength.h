@@ -93,6 +93,21 @@ namespace cosmo
         return -1;
       }
 
+      /**
+       * Project v onto the fixed-point space of one reflection of the
+       * problem's symmetry (v = (v + S v)/2) and return true; false (v
+       * untouched) if the problem has none. At a double eigenvalue of a
+       * D_n-symmetric problem (the full disc: cos n theta and sin n theta) the
+       * eigenvalue is simple in that space (equivariant branching lemma), so
+       * the driver locates it and switches onto the symmetric representative
+       * there.
+       */
+      virtual bool
+      project_to_fixed_point_space(Vector<double> & /*v*/) const
+      {
+        return false;
+      }
+
       /// Called at every located event with the state there and, for a branch point, its mode.
       struct Event
       {

@@ -5,6 +5,7 @@
 
 #include <cosmo/solvers/continuation.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -89,7 +90,9 @@ namespace cosmo
      * estimate (masked, any length); (tU, tlambda): the branch tangent at the
      * start (branch points). If factorized is true, the problem's current
      * factorization is J(U0, lambda0) and is reused for the first iteration.
-     * residual_tolerance: the weighted max-norm R must reach. Never throws
+     * residual_tolerance: the weighted max-norm R must reach. project (if
+     * given) keeps the iterates in a fixed-point space of the symmetry, where
+     * a double eigenvalue is simple (it projects every Newton update). Never throws
      * for a failed iteration: returns converged = false with the message.
      */
     CriticalPoint
@@ -104,7 +107,8 @@ namespace cosmo
                           bool                          factorized,
                           double                        lambda_scale,
                           double                        residual_tolerance,
-                          const CriticalPointSettings & settings = CriticalPointSettings());
+                          const CriticalPointSettings & settings = CriticalPointSettings(),
+                          const std::function<void(Vector<double> &)> &project = {});
   } // namespace solvers
 } // namespace cosmo
 
