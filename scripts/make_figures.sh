@@ -17,6 +17,8 @@
 #                                   output/plate_rod/{dome,lobes}/bifurcation.png
 #   doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
 #                                   the three models' study (plot_plate_rod_study.py)
+#   doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
+#                                   the critical curve against the independent study
 # Exit status 1 if an expected input is missing (run run_examples.sh).
 set -euo pipefail
 
@@ -61,6 +63,13 @@ for n in dome lobes; do
 done
 cp output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
    doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
+curve=output/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat/critical_curve.png
+if [[ -f "$curve" ]]; then
+  cp "$curve" doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
+else
+  log "missing $curve (run run_examples.sh)" >&2
+  missing=1
+fi
 python3 scripts/plot_section.py "output/$SECTION" "doc/figures/section_$SECTION.png" von_Mises_stress >/dev/null
 for f in doc/figures/*.png; do
   printf '[cosmo] %-55s %6s bytes\n' "$f" "$(wc -c <"$f")"
