@@ -1,5 +1,5 @@
 // Validation of the part-1 cross-section solver against closed forms
-// (rod-cross-section.md, anchors 1-4 and 6). Run as
+// (doc/specification/rod-cross-section.md, anchors 1-4 and 6). Run as
 //   test_cross_section <case>
 // Each case prints measured value, reference and tolerance; the tolerances
 // are justified next to each check (discretization error measured on the

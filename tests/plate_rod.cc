@@ -1,5 +1,5 @@
 // Validation of the part-3 solver, a growing plate bounded by a rod
-// (plate-rod.md verification anchors 1-5, and the AD derivatives). Run as
+// (doc/specification/plate-rod.md verification anchors 1-5, and the AD derivatives). Run as
 // test_plate_rod <case>.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>

@@ -17,7 +17,7 @@ main()
   materials::QuadraticRodLaw law;
   law.stiffness         = {{3, 4, 10, 0.5, 0.7, 0.4}};
   const double R        = 2;
-  law.reference_strains = {{0, 0, 1, 0, -1 / R, 0}}; // a ring of radius R in the frame of plate-rod.md
+  law.reference_strains = {{0, 0, 1, 0, -1 / R, 0}}; // a ring of radius R in the frame of doc/specification/plate-rod.md
   const double g        = 1.25;
   // The grown ring: radius g R, arc length per reference length g, so
   // nu = (0, 0, g) and kappa per reference length (0, -g/(g R), 0) = kappa0.

@@ -1,4 +1,4 @@
-// Validation of the part-2 strip solver (strip.md anchors 1 and 4, and the
+// Validation of the part-2 strip solver (doc/specification/strip.md anchors 1 and 4, and the
 // AD derivatives). Run as test_strip <case>.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -266,7 +266,7 @@ namespace
     check_close("bending moment scales with f s^3", b.resultants[3], a.resultants[3] * f * s * s * s, 1e-7);
   }
 
-  // Width-wise buckling under twist at zero axial force (strip.md): the flat
+  // Width-wise buckling under twist at zero axial force (doc/specification/strip.md): the flat
   // helicoid loses stability at a critical twist; the driver detects it,
   // locates it, switches to the bifurcated branch and follows it.
   double

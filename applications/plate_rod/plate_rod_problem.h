@@ -27,7 +27,7 @@
 
 /**
  * Part 3: a growing circular Cosserat plate bounded by a Cosserat rod
- * (plate-rod.md). The disc |X| <= R (or the sector 0 <= theta <= pi/n with
+ * (doc/specification/plate-rod.md). The disc |X| <= R (or the sector 0 <= theta <= pi/n with
  * mirror conditions) carries the plate's displacement u (3), its rotation
  * vector (theta1, theta2) and the rim's rotation alpha about the plate
  * normal (a field whose DoFs off the rim are constrained to zero): FE_Q(p)^6

@@ -24,7 +24,7 @@
 
 /**
  * Part 1: the morphoelastic rod's cross-section problem
- * (rod-cross-section.md).
+ * (doc/specification/rod-cross-section.md).
  *
  * Unknowns, in this order: the displacement u = w - X of the cross-section
  * (three components on the 2D section, FE_Q(p)^3), the six multipliers of the

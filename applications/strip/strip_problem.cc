@@ -63,7 +63,7 @@ namespace cosmo
                         "Degree p of FE_Q(p) for u and theta.");
       prm.declare_entry("Shear integration", "reduced", Patterns::Selection("reduced|full"),
                         "reduced: the transverse shear energy with p Gauss points (against "
-                        "shear locking, strip.md); full: p + 1 like the rest.");
+                        "shear locking, doc/specification/strip.md); full: p + 1 like the rest.");
       prm.leave_subsection();
       materials::NaghdiPlateLaw::declare_parameters(prm);
       assembly::ReducedRodProblem::declare_strain_parameters(prm);

@@ -19,7 +19,7 @@
 /**
  * Part 2: a strip (a Cosserat/Naghdi plate of width w and thickness h)
  * reduced to a special Cosserat rod by the helical Cauchy-Born rule
- * (strip.md):
+ * (doc/specification/strip.md):
  *
  *   phi(eta, s) = r(s) + R(s) y(eta),   d(eta, s) = R(s) q(eta),
  *
@@ -29,7 +29,7 @@
  * constraints are int u = 0, int eta u3 = 0 (rotation about the plate
  * normal), int eta u2 = 0 (rotation about the axis) and int theta1 = 0
  * (rotation about the width line: the linear counterpart of int q.E3 = 0,
- * strip.md). Free edges: natural boundary conditions.
+ * doc/specification/strip.md). Free edges: natural boundary conditions.
  *
  * The plate energy at each quadrature point is differentiated by Sacado with
  * respect to its 16 local variables (u, u', theta1, theta3 and their

@@ -301,12 +301,7 @@ namespace cosmo
                         const std::vector<Vector<double>> &orthogonal_to)
     {
       const unsigned int n = problem.n_unknowns();
-      auto dot = [&](const Vector<double> &a, const Vector<double> &b) {
-        double s = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          s += mask[i] * a[i] * b[i];
-        return s;
-      };
+      auto dot = [&](const Vector<double> &a, const Vector<double> &b) { return masked_dot(a, b, mask); };
       auto deflate = [&](Vector<double> &x) {
         for (const auto &q : orthogonal_to)
           x.add(-dot(x, q) / dot(q, q), q);
@@ -347,6 +342,24 @@ namespace cosmo
        * other sign maps into (-|1/mu0|, 0] or [0, |1/mu0|), the wanted ones
        * beyond |1/mu0|. Returns the eigenvalue (0 if none of that sign found).
        */
+      /// An event located by Newton: its load, state and the iteration's figures.
+      void
+      take_location(const CriticalPoint &cp, EventRecord &record)
+      {
+        auto &e             = record.event;
+        e.located_by_newton = true;
+        e.lambda            = cp.lambda;
+        e.newton_iterations = cp.iterations;
+        e.residual_norm     = cp.residual_norm;
+        e.test_function     = cp.test_function;
+        e.unfolding         = cp.unfolding;
+        e.eigenvalue        = cp.eigenvalue;
+        e.precision         = cp.lambda_update;
+        e.resolution        = cp.resolution;
+        e.message.clear();
+        record.state.assign(cp.U.begin(), cp.U.end());
+      }
+
       double
       crossing_mode(BifurcationProblem &                          problem,
                     const Vector<double> &                        mask,
@@ -356,12 +369,7 @@ namespace cosmo
                     const std::function<void(Vector<double> &)> &project = {})
       {
         const unsigned int n = problem.n_unknowns();
-        auto dot = [&](const Vector<double> &a, const Vector<double> &b) {
-          double s = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            s += mask[i] * a[i] * b[i];
-          return s;
-        };
+        auto dot = [&](const Vector<double> &a, const Vector<double> &b) { return masked_dot(a, b, mask); };
         // y = P (J^-1 x), masked, deflated; returns the Rayleigh quotient x.y.
         auto apply = [&](const Vector<double> &x, Vector<double> &y) {
           problem.solve_with_jacobian(x, y);
@@ -433,10 +441,7 @@ namespace cosmo
     double
     ArclengthContinuation::dot(const Vector<double> &a, const Vector<double> &b) const
     {
-      double s = 0;
-      for (unsigned int i = 0; i < a.size(); ++i)
-        s += mask[i] * a[i] * b[i];
-      return theta * s;
+      return theta * masked_dot(a, b, mask);
     }
 
     double
@@ -656,17 +661,7 @@ namespace cosmo
                 const double margin = 1e-6 * (sigma_hi - sigma_lo);
                 if (cp.converged && sigma >= sigma_lo - margin && sigma <= sigma_hi + margin)
                   {
-                    e.located_by_newton = true;
-                    e.lambda            = cp.lambda;
-                    e.newton_iterations = cp.iterations;
-                    e.residual_norm     = cp.residual_norm;
-                    e.test_function     = cp.test_function;
-                    e.unfolding         = cp.unfolding;
-                    e.eigenvalue        = cp.eigenvalue;
-                    e.precision         = cp.lambda_update;
-                    e.resolution        = cp.resolution;
-                    e.message.clear();
-                    record.state.assign(cp.U.begin(), cp.U.end());
+                    take_location(cp, record);
                     phi = cp.mode;
                   }
                 else
@@ -866,16 +861,7 @@ namespace cosmo
               e.message);
           return record;
         }
-      e.located_by_newton = true;
-      e.lambda            = cp.lambda;
-      e.newton_iterations = cp.iterations;
-      e.residual_norm     = cp.residual_norm;
-      e.test_function     = cp.test_function;
-      e.unfolding         = cp.unfolding;
-      e.eigenvalue        = cp.eigenvalue;
-      e.precision         = cp.lambda_update;
-      e.resolution        = cp.resolution;
-      record.state.assign(cp.U.begin(), cp.U.end());
+      take_location(cp, record);
       Vector<double> phi = cp.mode;
       phi /= std::sqrt(norm2(phi));
       record.mode.assign(phi.begin(), phi.end());

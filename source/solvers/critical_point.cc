@@ -26,15 +26,6 @@ namespace cosmo
       }
 
       double
-      masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask)
-      {
-        double s = 0;
-        for (unsigned int i = 0; i < a.size(); ++i)
-          s += mask[i] * a[i] * b[i];
-        return s;
-      }
-
-      double
       weighted_max_norm(BifurcationProblem &problem, const Vector<double> &R)
       {
         Vector<double> w;
@@ -45,6 +36,15 @@ namespace cosmo
         return m;
       }
     } // namespace
+
+    double
+    masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask)
+    {
+      double s = 0;
+      for (unsigned int i = 0; i < a.size(); ++i)
+        s += mask[i] * a[i] * b[i];
+      return s;
+    }
 
     CriticalPoint
     locate_critical_point(BifurcationProblem &         problem,

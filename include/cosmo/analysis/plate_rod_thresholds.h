@@ -2,7 +2,7 @@
 #define cosmo_analysis_plate_rod_thresholds_h
 
 /**
- * Closed forms of part 3 (plate-rod.md, "Critical growth, analytically"):
+ * Closed forms of part 3 (doc/specification/plate-rod.md, "Critical growth, analytically"):
  * a flat circular Kirchhoff plate (radius R, thickness h, E, Poisson v)
  * welded to a rim rod (EA, out-of-plane bending EI1 about the radial axis,
  * in-plane bending EI2 about the plate normal, torsion GJ about the

@@ -22,7 +22,7 @@
  * is eliminated with Y = A^-1 B (n_border extra solves with the same
  * factorization) and the small Schur complement S = E - B^T Y, which is the
  * condensed stiffness d(n, m)/d(nu, kappa) of the rod when the field is at
- * equilibrium (rod-cross-section.md).
+ * equilibrium (doc/specification/rod-cross-section.md).
  *
  * Each border unknown is either free (its row is the equation above) or
  * prescribed (its row is the identity: the driver changes it, Newton does

@@ -12,7 +12,7 @@
  * A constitutive table of a reduced rod: energy, resultants and 6x6
  * stiffness on a grid of two strains (the others as prescribed or free in
  * "Rod strains"), so that a rod simulator can use the nonlinear law of the
- * section (strip.md, issue 4). Written as table.csv (one row per grid point)
+ * section (doc/specification/strip.md, issue 4). Written as table.csv (one row per grid point)
  * and table.h5 (datasets strain_1, strain_2, energy [n1 x n2], resultants
  * [n1 x n2 x 6], stiffness [n1 x n2 x 6 x 6], converged [n1 x n2]).
  *

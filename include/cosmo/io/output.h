@@ -12,7 +12,7 @@
 #include <vector>
 
 /**
- * The output contract of every application (architecture.md): one directory
+ * The output contract of every application (doc/specification/architecture.md): one directory
  * with parameters.prm, summary.json, steps.csv, solution.pvd + VTU files and
  * log.txt. Every file except the log is written to a temporary name and
  * renamed, so a killed run never leaves a half-written file; the log is

@@ -12,7 +12,7 @@
 
 /**
  * Parameter handling shared by every application: the command-line contract
- * (architecture.md), parsing with errors that name the file, the entry and
+ * (doc/specification/architecture.md), parsing with errors that name the file, the entry and
  * the allowed values, and the exit statuses (0 success, 1 bad input,
  * 2 a run that could not proceed, e.g. continuation below its minimum step).
  */
@@ -69,7 +69,7 @@ namespace cosmo
     parse_parameter_file(ParameterHandler &prm, const std::string &file);
 
     /**
-     * The start of every run's output (architecture.md): create the
+     * The start of every run's output (doc/specification/architecture.md): create the
      * directory, write the parameters as read (parameters.prm, atomically)
      * and open the log (log_name in it, flushed line by line).
      */

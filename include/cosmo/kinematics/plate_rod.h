@@ -8,7 +8,7 @@
 #include <array>
 
 /**
- * Kinematics of a plate bounded by a rod (plate-rod.md), as energy densities
+ * Kinematics of a plate bounded by a rod (doc/specification/plate-rod.md), as energy densities
  * of local variables on which the finite-element DoFs act linearly (Sacado
  * differentiates them, as for the strip).
  *
@@ -22,7 +22,7 @@
  *   Lambda = exp([theta]x) exp(alpha [E3]x) Lambda0,
  *
  * with Lambda0 = [d1 d2 d3] = [e_r, E3, -e_theta] (a proper rotation; the
- * rod runs clockwise so that kappa0 = (0, -1/R, 0) as in plate-rod.md) and
+ * rod runs clockwise so that kappa0 = (0, -1/R, 0) as in doc/specification/plate-rod.md) and
  * alpha the rod's rotation about the plate normal, a field that lives on
  * the rim only. Then Lambda E2 = exp([theta]x) E3 = d: the rod's d2 is the
  * plate's director for every value of the unknowns. Its strains are
@@ -32,7 +32,7 @@
  *
  * from Lambda^T Lambda' (T the right Jacobian of exp, rotation.h).
  *
- * Three models share the fields (plate-rod.md "Models"): the Cosserat plate
+ * Three models share the fields (doc/specification/plate-rod.md "Models"): the Cosserat plate
  * and rod; the same with the transverse shear stiffnesses multiplied by a
  * penalty (the Kirchhoff limit; reduced integration keeps it locking-free);
  * von Karman: d = E3 + beta, beta = theta x E3, membrane strain

@@ -7,7 +7,7 @@
 #include <array>
 
 /**
- * The helical Cauchy-Born kinematics of a strip (strip.md): a plate whose
+ * The helical Cauchy-Born kinematics of a strip (doc/specification/strip.md): a plate whose
  * mid-surface and director are phi(eta, s) = r(s) + R(s) y(eta) and
  * d = R(s) q(eta), with the helix (r, R) of uniform rod strains (nu, kappa).
  * In the rod frame d phi/ds -> nu + kappa x y, d phi/d eta -> y',
@@ -24,7 +24,7 @@ namespace cosmo
 
     /**
        * The plate energy density at one point of the width line, as a
-       * function of the local variables z (strip.md, helical Cauchy-Born
+       * function of the local variables z (doc/specification/strip.md, helical Cauchy-Born
        * kinematics): y = eta E1 + u, Fp = [y' | nu + kappa x y],
        * q = exp([theta]x) E2, grad d = [q' | kappa x q].
        */

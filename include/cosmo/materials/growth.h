@@ -12,7 +12,7 @@
 /**
  * Growth tensors Fg(X1, X2) of the multiplicative decomposition F = Fe Fg.
  *
- * Kinds (rod-cross-section.md): isotropic g I; axial I + (g-1) E3 (x) E3;
+ * Kinds (doc/specification/rod-cross-section.md): isotropic g I; axial I + (g-1) E3 (x) E3;
  * fibre I + (g-1) f (x) f with a unit field f given by expressions, or helical
  * fibres f = cos(a) E3 + sin(a) E_theta (active filaments); orthotropic
  * diag(g1, g2, g3). Factors are expressions of x, y (the cross-section

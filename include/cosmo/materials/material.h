@@ -18,7 +18,7 @@
  * Jg W(F Fg^-1) (growth decomposition F = Fe Fg), and its first and second
  * derivatives with respect to F by Sacado (forward mode, nested, static size:
  * nine variables per quadrature point, which is cheaper than differentiating
- * with respect to all cell DoFs, rod-cross-section.md).
+ * with respect to all cell DoFs, doc/specification/rod-cross-section.md).
  */
 namespace cosmo
 {

@@ -10,7 +10,7 @@
 #include <string>
 
 /**
- * In-plane growth of a plate (plate-rod.md): G = g_r e_r (x) e_r +
+ * In-plane growth of a plate (doc/specification/plate-rod.md): G = g_r e_r (x) e_r +
  * g_t e_t (x) e_t in polar axes about the origin, the factors expressions of
  * the radius r (isotropic: g_r = g_t = g). Ramped by the load parameter as
  * 1 + t (g - 1). Section "Plate growth".

@@ -8,7 +8,7 @@
 
 /**
  * The geometrically exact five-parameter Cosserat (Naghdi) plate
- * (strip.md): mid-surface gradient Fp (3x2), unit director d, and the
+ * (doc/specification/strip.md): mid-surface gradient Fp (3x2), unit director d, and the
  * strain measures
  *
  *   membrane  eps   = 1/2 (Fp^T Fp - I)
@@ -70,7 +70,7 @@ namespace cosmo
     }
 
     /**
-     * The measures of a grown plate (F = Fe G, plate-rod.md): with the
+     * The measures of a grown plate (F = Fe G, doc/specification/plate-rod.md): with the
      * in-plane growth G (2x2, of the reference plane) the elastic parts are
      * Fp G^-1 and grad d G^-1, i.e. the columns a_j, d_j replaced by
      * sum_i a_i (G^-1)_ij; the energy is then counted per grown area, det G

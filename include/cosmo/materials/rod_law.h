@@ -5,7 +5,7 @@
 
 /**
  * A special Cosserat rod with a quadratic law in its six strains and axial
- * growth (plate-rod.md): with reference strains (nu0, kappa0) and growth g,
+ * growth (doc/specification/plate-rod.md): with reference strains (nu0, kappa0) and growth g,
  * the stress-free rod has strains g nu0 and kappa0 (a ring of radius R grows
  * to radius g R: the curvature per reference length stays 1/R), and the
  * energy per reference length is

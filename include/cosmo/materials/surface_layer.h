@@ -13,7 +13,7 @@
 /**
  * A Gurtin-Murdoch surface layer on the lateral surface of the rod, i.e. on
  * (part of) the boundary curve of the cross-section
- * (rod-cross-section.md, "Energy with growth").
+ * (doc/specification/rod-cross-section.md, "Energy with growth").
  *
  * The surface deformation gradient maps the reference tangent plane, spanned
  * by the boundary tangent T and the axis E3, into space: a 3x2 matrix Fs with

@@ -14,7 +14,7 @@
 
 /**
  * Pseudo-arclength continuation with stability tracking, event location and
- * branch switching (continuation.md).
+ * branch switching (doc/specification/continuation.md).
  *
  * The branch (U(s), lambda(s)) of R(U, lambda) = 0 is followed in its
  * arclength s, ds^2 = theta |dU|^2 + dlambda^2 (theta = 1/n by default), so

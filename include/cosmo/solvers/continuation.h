@@ -10,7 +10,7 @@
 #include <string>
 
 /**
- * Natural-parameter continuation (continuation.md): the load parameter t
+ * Natural-parameter continuation (doc/specification/continuation.md): the load parameter t
  * (growth and prescribed strains are ramped by it) goes from its start to a
  * target in adaptive steps. Each step: a secant predictor, a checked Newton
  * corrector; an easy step (few iterations) lets the next one grow, a failed

@@ -95,6 +95,10 @@ namespace cosmo
      * a double eigenvalue is simple (it projects every Newton update). Never throws
      * for a failed iteration: returns converged = false with the message.
      */
+    /// sum_i mask_i a_i b_i: the dot product on the mode unknowns.
+    double
+    masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask);
+
     CriticalPoint
     locate_critical_point(BifurcationProblem &          problem,
                           bool                          fold,
