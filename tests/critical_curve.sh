@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A critical curve (Growth path / Critical curve = true) against the study of
 # independent runs at the same values: every continued point must agree in
-# t_critical within max(1e-7 t, 2 x the stated resolution) and must have cost
+# t_critical within max(1e-7 t, 2 x the stated resolution), with the same
+# critical mode, and must have cost
 # fewer factorizations than the independent run of that value; prints the
 # ratio of the factorizations of the whole study to the curve's.
 # usage: critical_curve.sh <plate_rod> <independent study.prm> <curve.prm> <scratch dir>
@@ -25,6 +26,8 @@ for x, y in zip(a, b):
     tol = max(1e-7 * abs(ta), 2 * max(float(x["t_resolution"]), float(y["t_resolution"])))
     fa += float(x["factorizations"]); fb += float(y["factorizations"])
     ok = abs(ta - tb) <= tol and (y["continued"] == "0" or float(y["factorizations"]) < float(x["factorizations"]))
+    # the same critical mode (a continued point must not be another mode's)
+    ok = ok and x["mode_number"] == y["mode_number"] and x["mode_out_of_plane"] == y["mode_out_of_plane"]
     bad += not ok
     print("value %s: t %.12g (independent, %s factorizations) vs %.12g (%s, %s factorizations): "
           "|diff| %.2e relative, tolerance %.2e%s" % (

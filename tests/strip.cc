@@ -356,6 +356,50 @@ namespace
             std::to_string(above) + " not below)",
           n_checked > 2 && wrong == 0 && above == 0);
   }
+
+  // The sequence of width-wise modes under twist (the thesis: the flat
+  // helicoid first buckles antisymmetrically about the centre line, then
+  // symmetrically), and the secondary bifurcation on a bifurcated branch
+  // that the driver follows to depth 2 (parameter_files/strip/twist_buckling.prm).
+  // The flat helicoid and the mesh are mirror-symmetric about eta = 0, so
+  // each mode of the primary branch is even or odd in u2 exactly, up to
+  // the round-off of the mesh's mirrored vertices and of the null vector
+  // (located to ~1e-11, doc/theory-continuation.md 4): |parity| = 1 to 1e-6.
+  void
+  twist_buckling_sequence()
+  {
+    const std::string arclength =
+      "subsection Rod strains\n set Free strains = nu3\nend\n"
+      "subsection Path following\n set Method = arclength\nend\n"
+      "subsection Arclength continuation\n set Parameter range = 0, 0.8\n set Initial step = 0.02\n"
+      " set Maximum step = 0.05\n set Maximum number of branches = 5\n set Maximum number of steps = 60\n"
+      " set Maximum branch depth = 2\nend\n";
+    auto       p       = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2}}, arclength, 40);
+    const auto records = p->follow_branches();
+    std::vector<double> primary;
+    bool                secondary = false;
+    for (const auto &r : records)
+      {
+        const double parity =
+          r.mode.empty() ? NAN : p->mode_parity(Vector<double>(r.mode.begin(), r.mode.end()));
+        std::cout << "  " << r.event.name() << " on branch " << r.event.branch << " at t = "
+                  << std::setprecision(10) << r.event.lambda << ", mode parity "
+                  << std::setprecision(12) << parity << "\n";
+        if (r.event.branch == 0 && std::isfinite(parity))
+          primary.push_back(parity);
+        secondary = secondary || (r.event.branch > 0 &&
+                                  r.event.kind == solvers::BifurcationProblem::Event::Kind::branch_point);
+      }
+    check("at least two branch points on the flat helicoid", primary.size() >= 2);
+    if (primary.size() < 2)
+      return;
+    for (unsigned int k = 0; k < primary.size(); ++k)
+      check_close("|parity| of mode " + std::to_string(k + 1) + " of the flat helicoid",
+                  std::abs(primary[k]), 1, 1e-6);
+    check("the first mode is antisymmetric about the centre line", primary[0] < 0);
+    check("the second mode is symmetric about the centre line", primary[1] > 0);
+    check("a branch point on a bifurcated branch (secondary bifurcation) located", secondary);
+  }
 } // namespace
 
 int
@@ -367,6 +411,7 @@ main(int argc, char **argv)
                                    {"tangent_fd", tangent_fd},
                                    {"part1_thin_rectangle", part1_thin_rectangle},
                                    {"twist_buckling", twist_buckling},
+                                   {"twist_buckling_sequence", twist_buckling_sequence},
                                    {"cubic_twist", cubic_twist},
                                    {"anticlastic_bending", anticlastic_bending},
                                    {"scale_invariance", scale_invariance}};

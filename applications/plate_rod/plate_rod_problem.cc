@@ -14,6 +14,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/solvers/critical_curve.h>
 #include <cosmo/materials/energy_derivatives.h>
 
 #include "plate_rod_problem.h"
@@ -268,12 +269,15 @@ namespace cosmo
                         "growth only: studies, quick checks).");
       prm.declare_entry("Critical curve", "false", Patterns::Bool(),
                         "In a study (section Parameter sweep): from the second value on, "
-                        "continue the critical point of the previous values (secant "
-                        "prediction in the swept value, then Newton on the augmented system; "
-                        "no path from t = 0) instead of an independent run. A point where "
-                        "that fails, or where another mode has become critical first, is run "
-                        "independently (said in the log; column 'continued' = 0). Writes "
-                        "critical_curve.csv (the columns of sweep.csv, which is written too).");
+                        "continue the critical point of the previous values (extrapolated "
+                        "through up to three of them in the swept value, then Newton on the "
+                        "augmented system; no path from t = 0) instead of an independent run. "
+                        "A point where that fails, or where another mode has become critical "
+                        "first, is run independently (said in the log; column 'continued' = "
+                        "0); where the mode changes, the new mode is continued back to the "
+                        "previous value and the codimension-2 point estimated (columns "
+                        "codim2_value, codim2_t). Writes critical_curve.csv (the columns of "
+                        "sweep.csv, which is written too).");
       prm.leave_subsection();
       io::ParameterSweep::declare_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
@@ -874,6 +878,23 @@ namespace cosmo
     }
 
     void
+    PlateRodProblem::mode_mask(Vector<double> &mask) const
+    {
+      // A constrained DoF's value follows from its masters: it carries no
+      // independent part of a mode. Above all the border of the critical-point
+      // system must vanish there: the solve returns J^-1 on the constrained
+      // space only for right-hand sides with no slave entries, and a border
+      // with them made the bordered test function g unsymmetric, its
+      // derivative -v.dJ v wrong by ~3 % and Newton linear (rate 0.026,
+      // measured on the sector) instead of quadratic.
+      mask.reinit(n_unknowns());
+      mask = 1.;
+      for (unsigned int i = 0; i < mask.size(); ++i)
+        if (constraints.is_constrained(i))
+          mask[i] = 0;
+    }
+
+    void
     PlateRodProblem::residual_weights(Vector<double> &w) const
     {
       // Nodal forces against E h R, nodal moments against E h R^2.
@@ -1053,18 +1074,35 @@ namespace cosmo
       driver.progress = [this](const std::string &s) { say(s); };
       const bool stop = stop_at_first_event;
       stop_at_first_event = false; // located_event must not end the run here
-      const auto record = driver.locate_from(*this, g.U, g.t, false, g.mode);
+      // 1e-10 relative: a thousandth of the agreement a curve owes the
+      // independent study (1e-7) and below the plate's round-off resolution
+      // (up to 7e-8 relative, doc/theory-continuation.md 4).
+      const auto record = driver.locate_from(*this, g.U, g.t, false, g.mode, 1e-10);
       stop_at_first_event = stop;
       if (!record.event.located_by_newton)
         throw io::RunFailure(record.event.message);
-      // On the flat branch the count at the critical point is 0 or 1 (the
-      // crossing eigenvalue's sign is round-off there): more means another
-      // mode became critical below it.
-      if (record.event.n_negative_after > 1)
+      // The count at the last factorization, less the critical eigenvalue
+      // itself where that factorization put it on the negative side (its
+      // sign is round-off at the critical point; the Rayleigh quotient
+      // eigenvalue is of the same factorization): any other negative
+      // eigenvalue is a mode that became critical below this one. (A count
+      // of 1 alone does not tell the two apart: it once let a 16-lobed
+      // point pass where the 14-lobed mode was already critical.)
+      const int others =
+        record.event.n_negative_after - (record.event.eigenvalue < 0 ? 1 : 0);
+      if (others > 0)
         throw io::RunFailure("another mode is critical below the continued critical point (" +
                              std::to_string(record.event.n_negative_after) +
-                             " negative eigenvalues there): the critical mode changed");
+                             " negative eigenvalues there, the critical one's eigenvalue " +
+                             std::to_string(record.event.eigenvalue) +
+                             "): the critical mode changed");
       solution = Vector<double>(record.state.begin(), record.state.end());
+      // The last factorization is at the last Newton iterate, which the last
+      // update moved by less than the located precision: its inertia and
+      // smallest eigenvalue are the critical point's to that precision, so
+      // the report below does not factorize again.
+      factorized_at   = solution;
+      factorized_load = record.event.lambda;
       solvers::StepReport report;
       report.t          = record.event.lambda;
       report.n_negative = record.event.n_negative_after;
@@ -1591,6 +1629,44 @@ namespace cosmo
     namespace
     {
       /**
+       * The critical point of a mode found at one value of a study continued
+       * back to value k (quietly, into directory): its t there, NaN if
+       * Newton fails. There the mode is not the first critical one, so the
+       * count check of a continued point fails by design and is not an error.
+       */
+      double
+      continue_back(ParameterHandler &           prm,
+                    const io::ParameterSweep &   sweep,
+                    const unsigned int           k,
+                    const std::string &          directory,
+                    const Vector<double> &       U,
+                    const Vector<double> &       mode,
+                    const double                 t,
+                    const io::RunOptions &       options)
+      {
+        sweep.apply(prm, k);
+        io::ParameterSweep::set_entry(prm, "Output/Output directory", directory, "Output",
+                                      "Output directory");
+        PlateRodProblem problem;
+        problem.parse_parameters(prm);
+        PlateRodProblem::CriticalGuess g;
+        g.U    = U;
+        g.mode = mode;
+        g.t    = t;
+        problem.start_from_critical_point(g);
+        try
+          {
+            problem.run(options, prm);
+          }
+        catch (io::RunFailure &)
+          {}
+        for (const auto &x : problem.events())
+          if (x.event.located_by_newton)
+            return x.event.lambda;
+        return NAN;
+      }
+
+      /**
        * A study (section "Parameter sweep"): the run repeated for each value
        * of one entry, each point in its own directory point-NN/, and
        * sweep.csv with the critical growth (the first located event on the
@@ -1617,20 +1693,27 @@ namespace cosmo
                               "closed_form_mismatch", "mode_number", "mode_out_of_plane", "dofs",
                               "seconds", "factorizations", "continued"})
           table.add_column(c);
-        // The critical points found so far (critical curve): value, state, t, mode.
-        struct Found
+        for (const auto &c : {"mode_change", "codim2_value", "codim2_t"})
+          table.add_column(c);
+        // The critical points continued so far (critical curve), and the
+        // previous value's critical point (mode changes).
+        solvers::CriticalCurvePredictor predictor;
+        struct Previous
         {
-          double         value, t;
+          double         value = NAN, t = NAN, n = NAN, out = NAN;
           Vector<double> U, mode;
-        };
-        std::vector<Found> found;
+        } previous;
         std::string refused;
         for (unsigned int k = 0; k < sweep.size(); ++k)
           {
             const auto        start = std::chrono::steady_clock::now();
             const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
             double            converged = 0, t = NAN, D = NAN, closed = NAN, n = NAN, out = NAN,
-                   dofs = NAN, resolution = NAN, factorizations = NAN, continued = 0;
+                   dofs = NAN, resolution = NAN, factorizations = NAN, continued = 0,
+                   mode_change = 0, codim2_value = NAN, codim2_t = NAN;
+            // The previous mode's critical point continued to this value
+            // where another mode has become critical first (t there).
+            double previous_mode_t = NAN;
             try
               {
                 sweep.apply(prm, k);
@@ -1640,27 +1723,10 @@ namespace cosmo
                 quiet.quiet          = true;
                 auto problem_ptr     = std::make_unique<PlateRodProblem>();
                 problem_ptr->parse_parameters(prm);
-                if (curve && !found.empty())
+                PlateRodProblem::CriticalGuess g;
+                unsigned int                   order = 0;
+                if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode, &order))
                   {
-                    // Secant prediction of the critical point at this value.
-                    PlateRodProblem::CriticalGuess g;
-                    const Found &                  a = found.back();
-                    g.U                              = a.U;
-                    g.t                              = a.t;
-                    g.mode                           = a.mode;
-                    if (found.size() > 1 && found[found.size() - 2].U.size() == a.U.size())
-                      {
-                        const Found &b = found[found.size() - 2];
-                        // (in the logarithm of the value where all are positive:
-                        // studies of stiffnesses span decades)
-                        const double v = sweep.value(k);
-                        const bool   logs = v > 0 && a.value > 0 && b.value > 0;
-                        const double f =
-                          logs ? std::log(v / a.value) / std::log(a.value / b.value) :
-                                 (v - a.value) / (a.value - b.value);
-                        g.U.sadd(1 + f, -f, b.U);
-                        g.t = (1 + f) * a.t - f * b.t;
-                      }
                     problem_ptr->start_from_critical_point(g);
                     try
                       {
@@ -1673,6 +1739,10 @@ namespace cosmo
                         log("  point " + std::to_string(k) +
                             ": continuing the critical point failed (" + e.what() +
                             "); an independent run instead");
+                        for (const auto &x : problem_ptr->events())
+                          if (x.event.located_by_newton &&
+                              x.event.n_negative_after - (x.event.eigenvalue < 0 ? 1 : 0) > 0)
+                            previous_mode_t = x.event.lambda;
                         problem_ptr = std::make_unique<PlateRodProblem>();
                         problem_ptr->parse_parameters(prm);
                       }
@@ -1697,10 +1767,6 @@ namespace cosmo
                       t          = e.event.lambda;
                       D          = problem.mismatch(t);
                       resolution = solvers::event_resolution(e.event);
-                      if (curve && converged == 1 && e.event.located_by_newton)
-                        found.push_back({sweep.value(k), t,
-                                         Vector<double>(e.state.begin(), e.state.end()),
-                                         Vector<double>(e.mode.begin(), e.mode.end())});
                       if (!e.mode.empty())
                         {
                           const auto c =
@@ -1708,6 +1774,52 @@ namespace cosmo
                           n   = c.first;
                           out = c.second;
                         }
+                      // A new critical mode: the previous curve ends (a
+                      // codimension-2 point lies between the two values).
+                      if (std::isfinite(previous.n) && std::isfinite(n) &&
+                          (n != previous.n || out != previous.out))
+                        {
+                          mode_change = 1;
+                          predictor.clear();
+                        }
+                      if (curve && converged == 1 && e.event.located_by_newton)
+                        predictor.add(sweep.value(k), t,
+                                      Vector<double>(e.state.begin(), e.state.end()),
+                                      Vector<double>(e.mode.begin(), e.mode.end()));
+                      if (mode_change == 1 && curve && std::isfinite(previous_mode_t) &&
+                          previous.U.size() == e.state.size())
+                        {
+                          // Where the two critical curves cross: the new mode
+                          // continued back to the previous value (a few
+                          // factorizations), then the secants intersected.
+                          const double t_back = continue_back(
+                            prm, sweep, k - 1, directory + "/point-" +
+                                                 Utilities::int_to_string(k, 2) + "/back",
+                            Vector<double>(e.state.begin(), e.state.end()),
+                            Vector<double>(e.mode.begin(), e.mode.end()), t, quiet);
+                          sweep.apply(prm, k);
+                          if (solvers::codimension_two_estimate(previous.value, previous.t,
+                                                                t_back, sweep.value(k),
+                                                                previous_mode_t, t, codim2_value,
+                                                                codim2_t))
+                            {
+                              std::ostringstream m;
+                              m << std::setprecision(6) << "  the critical mode changes from n = "
+                                << previous.n << " to n = " << n << " between "
+                                << sweep.label() << " = " << previous.value << " and "
+                                << sweep.value(k) << ": codimension-2 point near "
+                                << sweep.label() << " = " << codim2_value << ", t = " << codim2_t
+                                << " (the two critical curves' secants crossed)";
+                              log(m.str());
+                            }
+                        }
+                      else if (mode_change == 1)
+                        log("  the critical mode changes from n = " +
+                            std::to_string(int(previous.n)) + " to n = " + std::to_string(int(n)) +
+                            " between the previous value and this one");
+                      previous = {sweep.value(k), t, n, out,
+                                  Vector<double>(e.state.begin(), e.state.end()),
+                                  Vector<double>(e.mode.begin(), e.mode.end())};
                       break;
                     }
                 std::string text;
@@ -1721,7 +1833,7 @@ namespace cosmo
             const double seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             table.add_row({sweep.value(k), converged, t, resolution, D, closed, n, out, dofs, seconds,
-                           factorizations, continued});
+                           factorizations, continued, mode_change, codim2_value, codim2_t});
             table.write(directory + "/sweep.csv");
             if (curve)
               table.write(directory + "/critical_curve.csv");

@@ -95,6 +95,9 @@ namespace cosmo
       solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
       void
       residual_weights(Vector<double> &w) const override;
+      /// 0 on the DoFs the constraints determine (mirror edges, alpha off the rim).
+      void
+      mode_mask(Vector<double> &mask) const override;
       void
       set_load_parameter(double t) override
       {

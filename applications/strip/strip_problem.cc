@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace cosmo
@@ -492,10 +493,51 @@ namespace cosmo
       });
     }
 
+    double
+    StripProblem::mode_parity(const Vector<double> &mode) const
+    {
+      // u2 at each node, keyed by its eta (rounded to 1e-9 of the width:
+      // the graded mesh's vertices are mirror images to round-off).
+      std::map<long long, double> u2;
+      const auto &               unit = fe->base_element(0).get_unit_support_points();
+      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(idx);
+          const double x0 = cell->vertex(0)[0], x1 = cell->vertex(1)[0];
+          for (unsigned int i = 0; i < idx.size(); ++i)
+            {
+              const auto ci = fe->system_to_component_index(i);
+              if (ci.first != 1)
+                continue;
+              const double eta = x0 + (x1 - x0) * unit[ci.second][0];
+              u2[std::llround(eta / strip_width * 1e9)] = mode[idx[i]];
+            }
+        }
+      double cross = 0, square = 0;
+      for (const auto &[key, value] : u2)
+        {
+          const auto mirror = u2.find(-key);
+          AssertThrow(mirror != u2.end(), ExcMessage("the width mesh is not symmetric"));
+          cross += value * mirror->second;
+          square += value * value;
+        }
+      return square > 0 ? cross / square : 0.;
+    }
+
     void
     StripProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
     {
       ReducedRodProblem::located_event(e, U, mode);
+      event_parities.push_back(mode ? mode_parity(*mode) : NAN);
+      if (mode)
+        {
+          std::ostringstream m;
+          m << "  mode " << (event_parities.back() > 0 ? "symmetric" : "antisymmetric")
+            << " about the centre line (parity " << std::setprecision(3) << event_parities.back()
+            << ")";
+          say(m.str());
+        }
       if (!write_output)
         return;
       const std::string tag = Utilities::int_to_string(located_events.size(), 2);
@@ -643,6 +685,11 @@ namespace cosmo
         x["state_vtu"]        = "event-" + tag + ".vtu";
         if (events()[k].kind == Event::Kind::branch_point)
           x["mode_vtu"] = "event-" + tag + "-mode.vtu";
+        if (k < event_parities.size() && std::isfinite(event_parities[k]))
+          {
+            x["mode_parity"]   = event_parities[k];
+            x["mode_symmetry"] = event_parities[k] > 0 ? "symmetric" : "antisymmetric";
+          }
       });
       j["timings"]     = timer.to_json();
 

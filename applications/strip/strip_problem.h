@@ -88,6 +88,15 @@ namespace cosmo
       std::vector<solvers::EventRecord>
       follow_branches();
 
+      /**
+       * The width-wise parity of a mode: sum u2(eta) u2(-eta) / sum u2(eta)^2
+       * over the out-of-plane displacement u2 (the plate normal is E2), +1
+       * for a mode symmetric about the centre line, -1 antisymmetric. The
+       * mesh is symmetric about eta = 0, so every node has its mirror node.
+       */
+      double
+      mode_parity(const Vector<double> &mode) const;
+
     protected:
       int
       assemble_field(const Vector<double> &       U,
@@ -128,6 +137,8 @@ namespace cosmo
       Vector<double>               solution;
 
       assembly::ReducedRodState    last_state;
+      /// mode_parity() of each located branch point's mode (NaN for folds).
+      std::vector<double>          event_parities;
       io::CSVTable                 steps_table;
       std::unique_ptr<io::RunLog>  log;
 

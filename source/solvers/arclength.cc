@@ -839,17 +839,20 @@ namespace cosmo
                                        const Vector<double> &U,
                                        const double          lambda,
                                        const bool            fold,
-                                       const Vector<double> &mode)
+                                       const Vector<double> &mode,
+                                       const double          relative_tolerance)
     {
       problem.mode_mask(mask);
       theta = settings.theta > 0 ? settings.theta : 1. / std::max(1., mask.l1_norm());
       EventRecord record;
       auto &      e = record.event;
       e.kind = fold ? BifurcationProblem::Event::Kind::fold : BifurcationProblem::Event::Kind::branch_point;
-      const Vector<double> no_tangent(U.size());
-      const CriticalPoint  cp =
+      const Vector<double>  no_tangent(U.size());
+      CriticalPointSettings cps;
+      cps.lambda_tolerance = relative_tolerance;
+      const CriticalPoint   cp =
         locate_critical_point(problem, fold, U, lambda, mode, mask, no_tangent, 0., false,
-                              1e-2 * std::abs(lambda) + 1e-12, newton.relative_tolerance);
+                              1e-2 * std::abs(lambda) + 1e-12, newton.relative_tolerance, cps);
       e.factorizations    = cp.factorizations;
       e.n_negative_before = 0;
       e.n_negative_after  = problem.n_negative_eigenvalues();

@@ -264,10 +264,24 @@ namespace cosmo
           const double floor_level = std::max(1e-6 * scale, 4 * cp.resolution);
           const bool   floor       = previous_update <= floor_level &&
                              cp.lambda_update > 0.25 * previous_update;
+          // Or contracted: once the updates shrink superlinearly (this one
+          // at most a tenth of the last and small), the error left after it
+          // is about |d_k|^2 / |d_k-1| (the last contraction applied once
+          // more; for quadratic convergence it is smaller still). Accepting
+          // then saves the factorization that would only confirm it.
+          const double left_after =
+            previous_update > 0 && std::isfinite(previous_update) ?
+              cp.lambda_update * cp.lambda_update / previous_update :
+              INFINITY;
+          const bool contracted = !tiny && !floor && cp.lambda_update <= 1e-3 * scale &&
+                                  cp.lambda_update <= 0.1 * previous_update &&
+                                  left_after <= settings.lambda_tolerance * scale;
           if (floor)
             cp.lambda_update = std::max(cp.lambda_update, previous_update);
+          else if (contracted)
+            cp.lambda_update = left_after; // the estimated error, reported as the precision
           previous_update = std::abs(d_lambda);
-          if (tiny || floor)
+          if (tiny || floor || contracted)
             {
               problem.set_load_parameter(lambda);
               if (problem.residual(U, R) != 0)

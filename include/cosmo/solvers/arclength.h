@@ -66,8 +66,11 @@ namespace cosmo
 
       /**
        * 1 for the unknowns that carry a mode shape (field DoFs), 0 for those
-       * that do not (Lagrange multipliers, bordered unknowns). Used for the
-       * null vector at a branch point and the arclength norm. Default: all 1.
+       * that do not (Lagrange multipliers, bordered unknowns, DoFs whose
+       * values constraints determine). Used for the null vector at a branch
+       * point, the border of the critical-point system (which must vanish on
+       * constrained DoFs for the bordered test function to be symmetric) and
+       * the arclength norm. Default: all 1.
        */
       virtual void
       mode_mask(Vector<double> &mask) const;
@@ -243,14 +246,16 @@ namespace cosmo
        * n_negative_after is the count at the located point's last
        * factorization: on a stable branch it is 0 or 1 (the critical
        * eigenvalue's sign is round-off there); more means another mode
-       * became critical first.
+       * became critical first. relative_tolerance: of the located lambda
+       * (critical_point.h; a curve needs far less than the 1e-13 of events).
        */
       EventRecord
       locate_from(BifurcationProblem &  problem,
                   const Vector<double> &U,
                   double                lambda,
                   bool                  fold,
-                  const Vector<double> &mode);
+                  const Vector<double> &mode,
+                  double                relative_tolerance = 1e-13);
 
     private:
       struct State

@@ -60,7 +60,9 @@ namespace cosmo
     struct CriticalPointSettings
     {
       unsigned int max_iterations = 10;
-      /// Converged when |d lambda| <= tolerance (|lambda| + lambda_scale).
+      /// Converged when |d lambda| <= tolerance (|lambda| + lambda_scale), or
+      /// when the error estimated after a superlinearly contracted update,
+      /// |d_k|^2 / |d_k-1|, is below it.
       double lambda_tolerance = 1e-13;
     };
 
@@ -75,7 +77,7 @@ namespace cosmo
       double         test_function = 0;    ///< g at the located point
       double         eigenvalue = 0;       ///< Rayleigh quotient v.Jv / v.v = -g / v.v
       double         residual_norm = 0;    ///< weighted max-norm of R at the located point
-      double         lambda_update = 0;    ///< |d lambda| of the last Newton update
+      double         lambda_update = 0;    ///< |d lambda| of the last Newton update (or the error estimated after it)
       double         dg_dlambda = 0;       ///< dg/dlambda along the branch (fold: with U on R = 0)
       /// eps |v|.|J||v| / |dg/dlambda|: the round-off resolution of lambda (-1 if unknown)
       double         resolution = -1;
