@@ -38,11 +38,7 @@ namespace cosmo
     {
       Vector<double> mask;
       mode_mask(mask);
-      double m = 1;
-      for (unsigned int i = 0; i < U.size(); ++i)
-        if (mask[i] != 0)
-          m = std::max(m, std::abs(U[i]));
-      return m;
+      return std::max(1., masked_max(U, mask));
     }
 
     void
@@ -56,6 +52,12 @@ namespace cosmo
     event_resolution(const BifurcationProblem::Event &e)
     {
       return std::max(e.precision, e.resolution);
+    }
+
+    int
+    other_negative_modes(const BifurcationProblem::Event &e)
+    {
+      return e.n_negative_after - (e.eigenvalue < 0 ? 1 : 0);
     }
 
     void
@@ -293,6 +295,68 @@ namespace cosmo
       };
     } // namespace
 
+    namespace
+    {
+      /**
+       * Power iteration on P (J^-1 - shift I) on the mode unknowns, with the
+       * problem's current factorization: P masks, projects onto the fixed-point
+       * space (if project is given) and deflates the vectors orthogonal_to.
+       * From a fixed, generic start (seed chooses one of two), until the
+       * iterate moves by less than tolerance. mode: the unit iterate; returns
+       * 1/rho with rho the last Rayleigh quotient of P J^-1 (0 if none), i.e.
+       * with shift 0 the eigenvalue of J nearest zero (inverse iteration).
+       */
+      double
+      power_iteration(BifurcationProblem &                          problem,
+                      const Vector<double> &                        mask,
+                      const double                                  shift,
+                      const unsigned int                            max_iterations,
+                      const double                                  tolerance,
+                      const std::vector<Vector<double>> &           orthogonal_to,
+                      Vector<double> &                              mode,
+                      const unsigned int                            seed    = 0,
+                      const std::function<void(Vector<double> &)> &project = {},
+                      const Vector<double> *start_orthogonal_to           = nullptr)
+      {
+        const unsigned int n = problem.n_unknowns();
+        auto dot = [&](const Vector<double> &a, const Vector<double> &b) { return masked_dot(a, b, mask); };
+        auto restrict = [&](Vector<double> &y) {
+          y.scale(mask);
+          if (project)
+            project(y);
+          for (const auto &q : orthogonal_to)
+            y.add(-dot(y, q) / dot(q, q), q);
+        };
+        Vector<double> x(n);
+        for (unsigned int i = 0; i < n; ++i)
+          x[i] = seed == 0 ? 1 + 0.1 * std::sin(1.3 * i + 0.7) : 1 + 0.3 * std::cos(0.7 * i + 0.2);
+        restrict(x);
+        if (start_orthogonal_to)
+          x.add(-dot(x, *start_orthogonal_to) / dot(*start_orthogonal_to, *start_orthogonal_to),
+                *start_orthogonal_to);
+        x /= std::sqrt(dot(x, x));
+        double rho = 0;
+        for (unsigned int it = 0; it < max_iterations; ++it)
+          {
+            Vector<double> y(n);
+            problem.solve_with_jacobian(x, y);
+            restrict(y);
+            rho = dot(x, y);
+            y.add(-shift, x);
+            y /= std::sqrt(dot(y, y));
+            if (dot(y, x) < 0)
+              y *= -1.;
+            Vector<double> d = y;
+            d -= x;
+            x = y;
+            if (std::sqrt(dot(d, d)) < tolerance)
+              break;
+          }
+        mode = x;
+        return rho != 0 ? 1. / rho : 0.;
+      }
+    } // namespace
+
     double
     smallest_eigenvalue(BifurcationProblem &               problem,
                         const Vector<double> &             mask,
@@ -300,48 +364,11 @@ namespace cosmo
                         const unsigned int                 max_iterations,
                         const std::vector<Vector<double>> &orthogonal_to)
     {
-      const unsigned int n = problem.n_unknowns();
-      auto dot = [&](const Vector<double> &a, const Vector<double> &b) { return masked_dot(a, b, mask); };
-      auto deflate = [&](Vector<double> &x) {
-        for (const auto &q : orthogonal_to)
-          x.add(-dot(x, q) / dot(q, q), q);
-      };
-      phi.reinit(n);
-      for (unsigned int i = 0; i < n; ++i)
-        phi[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
-      deflate(phi);
-      phi /= std::sqrt(dot(phi, phi));
-      double mu = 0;
-      for (unsigned int it = 0; it < max_iterations; ++it)
-        {
-          Vector<double> x(n);
-          problem.solve_with_jacobian(phi, x);
-          x.scale(mask);
-          deflate(x);
-          mu = dot(phi, x); // Rayleigh quotient of J^-1: 1/eigenvalue
-          x /= std::sqrt(dot(x, x));
-          if (dot(x, phi) < 0)
-            x *= -1.;
-          Vector<double> d = x;
-          d -= phi;
-          phi = x;
-          if (std::sqrt(dot(d, d)) < 1e-12)
-            break;
-        }
-      return mu != 0 ? 1. / mu : 0.;
+      return power_iteration(problem, mask, 0., max_iterations, 1e-12, orthogonal_to, phi);
     }
 
     namespace
     {
-      /**
-       * The mode of the eigenvalue of J nearest zero with the given sign:
-       * inverse iteration; if that finds an eigenvalue mu0 of the other sign
-       * (a cluster of soft modes nearer zero than the crossing one), power
-       * iteration on J^-1 - (1/mu0) I, whose dominant eigenvalue is 1/mu - 1/mu0
-       * of the wanted sign's eigenvalue nearest zero: every eigenvalue of the
-       * other sign maps into (-|1/mu0|, 0] or [0, |1/mu0|), the wanted ones
-       * beyond |1/mu0|. Returns the eigenvalue (0 if none of that sign found).
-       */
       /// An event located by Newton: its load, state and the iteration's figures.
       void
       take_location(const CriticalPoint &cp, EventRecord &record)
@@ -360,6 +387,15 @@ namespace cosmo
         record.state.assign(cp.U.begin(), cp.U.end());
       }
 
+      /**
+       * The mode of the eigenvalue of J nearest zero with the given sign:
+       * inverse iteration; if that finds an eigenvalue mu0 of the other sign
+       * (a cluster of soft modes nearer zero than the crossing one), power
+       * iteration on J^-1 - (1/mu0) I, whose dominant eigenvalue is 1/mu - 1/mu0
+       * of the wanted sign's eigenvalue nearest zero: every eigenvalue of the
+       * other sign maps into (-|1/mu0|, 0] or [0, |1/mu0|), the wanted ones
+       * beyond |1/mu0|. Returns the eigenvalue (0 if none of that sign found).
+       */
       double
       crossing_mode(BifurcationProblem &                          problem,
                     const Vector<double> &                        mask,
@@ -368,59 +404,17 @@ namespace cosmo
                     Vector<double> &                              phi,
                     const std::function<void(Vector<double> &)> &project = {})
       {
-        const unsigned int n = problem.n_unknowns();
-        auto dot = [&](const Vector<double> &a, const Vector<double> &b) { return masked_dot(a, b, mask); };
-        // y = P (J^-1 x), masked, deflated; returns the Rayleigh quotient x.y.
-        auto apply = [&](const Vector<double> &x, Vector<double> &y) {
-          problem.solve_with_jacobian(x, y);
-          y.scale(mask);
-          if (project)
-            project(y);
-          for (const auto &q : orthogonal_to)
-            y.add(-dot(y, q) / dot(q, q), q);
-          return dot(x, y);
-        };
-        // Power iteration on J^-1 - sigma I from x0; returns 1/rho.
-        auto iterate = [&](Vector<double> x, const double sigma, const unsigned int iterations) {
-          x /= std::sqrt(dot(x, x));
-          double rho = 0;
-          for (unsigned int it = 0; it < iterations; ++it)
-            {
-              Vector<double> y(n);
-              rho = apply(x, y);
-              y.add(-sigma, x);
-              y /= std::sqrt(dot(y, y));
-              if (dot(y, x) < 0)
-                y *= -1.;
-              Vector<double> d = y;
-              d -= x;
-              x = y;
-              if (std::sqrt(dot(d, d)) < 1e-8)
-                break;
-            }
-          phi = x;
-          return rho != 0 ? 1. / rho : 0.;
-        };
-        Vector<double> x0(n);
-        for (unsigned int i = 0; i < n; ++i)
-          x0[i] = mask[i] * (1 + 0.1 * std::sin(1.3 * i + 0.7));
-        if (project)
-          project(x0);
-        for (const auto &q : orthogonal_to)
-          x0.add(-dot(x0, q) / dot(q, q), q);
-        const double mu0 = iterate(x0, 0., 30);
+        const double mu0 =
+          power_iteration(problem, mask, 0., 30, 1e-8, orthogonal_to, phi, 0, project);
         if (mu0 * wanted_sign >= 0 || mu0 == 0)
           return mu0;
-        // Every eigenvalue of the other sign maps into (-|1/mu0|, 0] or
-        // [0, |1/mu0|) under J^-1 - (1/mu0) I, the wanted ones beyond.
-        const Vector<double> found = phi;
-        Vector<double>       x1(n);
-        for (unsigned int i = 0; i < n; ++i)
-          x1[i] = mask[i] * (1 + 0.3 * std::cos(0.7 * i + 0.2));
-        if (project)
-          project(x1);
-        x1.add(-dot(x1, found) / dot(found, found), found);
-        const double mu = iterate(x1, 1. / mu0, 300);
+        // (the start orthogonal to the mode found; the iterates are not:
+        // that mode is the one the shift maps below the wanted ones)
+        Vector<double> x1;
+        const double   mu =
+          power_iteration(problem, mask, 1. / mu0, 300, 1e-8, orthogonal_to, x1, 1, project,
+                          &phi);
+        phi = x1;
         return mu * wanted_sign > 0 ? mu : 0.;
       }
     } // namespace
@@ -653,7 +647,6 @@ namespace cosmo
                   CriticalPointSettings(), project);
                 factorizations += cp.factorizations;
                 factorized = Factorized::none;
-                e.resolution = std::max(e.resolution, cp.resolution);
                 // Its arclength along the step's tangent.
                 Vector<double> dU = cp.U;
                 dU -= s.U;
@@ -759,6 +752,9 @@ namespace cosmo
             break; // the last crossing of this step (or the bracket did not shrink)
           sigma_from = sigma_hi;
           from       = hi;
+          // (the last factorization is of wherever this event's location
+          // ended, not of the next bracket's ends)
+          factorized = Factorized::none;
         }
     }
 

@@ -35,7 +35,8 @@ namespace cosmo
       // a point of another size cannot be combined).
       std::vector<const Point *> used;
       for (auto q = points.rbegin(); q != points.rend(); ++q)
-        if (q->U.size() == points.back().U.size() && q->p != p &&
+        if (q->U.size() == points.back().U.size() && q->mode.size() == points.back().mode.size() &&
+            q->p != p &&
             std::none_of(used.begin(), used.end(), [&](const Point *u) { return u->p == q->p; }))
           used.push_back(&*q);
       if (used.empty())
@@ -58,12 +59,8 @@ namespace cosmo
           U.add(w[i], used[i]->U);
           lambda += w[i] * used[i]->lambda;
           // A mode is defined up to sign: align with the last one.
-          const double s =
-            (used[i]->mode.size() == used[0]->mode.size() && used[i]->mode * used[0]->mode < 0) ?
-              -1. :
-              1.;
-          if (used[i]->mode.size() == mode.size())
-            mode.add(s * w[i], used[i]->mode);
+          const double s = used[i]->mode * used[0]->mode < 0 ? -1. : 1.;
+          mode.add(s * w[i], used[i]->mode);
         }
       if (order)
         *order = used.size();
@@ -83,7 +80,7 @@ namespace cosmo
       const bool   logs = p0 > 0 && p1 > 0;
       const double x0 = logs ? std::log(p0) : p0, x1 = logs ? std::log(p1) : p1;
       const double d0 = a0 - b0, d1 = a1 - b1;
-      if (!(d0 != d1) || !std::isfinite(d0) || !std::isfinite(d1))
+      if (d0 == d1 || !std::isfinite(d0) || !std::isfinite(d1))
         return false;
       // lambda_a - lambda_b is linear in x between the points: its zero.
       const double s = d0 / (d0 - d1);

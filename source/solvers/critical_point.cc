@@ -16,16 +16,6 @@ namespace cosmo
     namespace
     {
       double
-      masked_max(const Vector<double> &v, const Vector<double> &mask)
-      {
-        double m = 0;
-        for (unsigned int i = 0; i < v.size(); ++i)
-          if (mask[i] != 0)
-            m = std::max(m, std::abs(v[i]));
-        return m;
-      }
-
-      double
       weighted_max_norm(BifurcationProblem &problem, const Vector<double> &R)
       {
         Vector<double> w;
@@ -36,6 +26,16 @@ namespace cosmo
         return m;
       }
     } // namespace
+
+    double
+    masked_max(const Vector<double> &v, const Vector<double> &mask)
+    {
+      double m = 0;
+      for (unsigned int i = 0; i < v.size(); ++i)
+        if (mask[i] != 0)
+          m = std::max(m, std::abs(v[i]));
+      return m;
+    }
 
     double
     masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask)
@@ -63,7 +63,6 @@ namespace cosmo
     {
       const unsigned int n = problem.n_unknowns();
       CriticalPoint      cp;
-      cp.is_fold = fold;
       cp.U       = U0;
       cp.lambda  = lambda0;
 
@@ -88,7 +87,8 @@ namespace cosmo
       Vector<double> &U      = cp.U;
       double &        lambda = cp.lambda;
       double &        mu     = cp.unfolding;
-      Vector<double>  R(n), Rl(n), y(n), a(n), z(n), v(n), gU(n), Rp(n), Rm(n), Upv(n), Umv(n);
+      Vector<double>  R(n), R0(n), Rl(n), y(n), a(n), z(n), v(n), gU(n), Rp(n), Rm(n), Upv(n),
+        Umv(n);
       double          previous_update = INFINITY;
       Vector<double>  last_dU(n);
       double          last_d_lambda = 0;
@@ -101,8 +101,13 @@ namespace cosmo
         return cp;
       };
 
+      double previous_g = INFINITY;
       for (unsigned int it = 0;; ++it)
         {
+          // (before the factorization the iterate would cost)
+          if (it == settings.max_iterations)
+            return fail("no convergence in " + std::to_string(settings.max_iterations) +
+                        " Newton iterations");
           problem.set_load_parameter(lambda);
           if (it > 0 || !factorized)
             {
@@ -123,9 +128,11 @@ namespace cosmo
                     return fail("the Jacobian cannot be set up at a Newton iterate");
                 }
             }
-          if (problem.residual(U, R) != 0)
+          // R0 = R(U, lambda); R = R0 + mu b, the first equation of the
+          // branch-point system (R = R0 for a fold).
+          if (problem.residual(U, R0) != 0)
             return fail("the residual cannot be evaluated at a Newton iterate");
-          const Vector<double> R0 = R; // without the unfolding term
+          R = R0;
           if (!fold)
             R.add(mu, b);
           cp.residual_norm = weighted_max_norm(problem, R);
@@ -148,10 +155,6 @@ namespace cosmo
           cp.mode.scale(mask);
           cp.mode /= std::sqrt(vv);
           cp.iterations = it;
-
-          if (it >= settings.max_iterations)
-            return fail("no convergence in " + std::to_string(settings.max_iterations) +
-                        " Newton iterations");
 
           // Derivatives of g by central differences of R along v.
           const double vmax = masked_max(v, mask);
@@ -178,7 +181,7 @@ namespace cosmo
           // directional difference of -v.J v along (-z, 1): exact also where
           // lambda acts through prescribed unknowns (rows of R that are
           // constraints, not the energy's gradient), which g_U above misses.
-          const double z_max = std::max(masked_max(z, mask), z.linfty_norm());
+          const double z_max = z.linfty_norm();
           const double delta =
             std::min(1e-5 * (std::abs(lambda) + lambda_scale),
                      z_max > 0 ? 1e-4 * U_scale / z_max : INFINITY);
@@ -225,10 +228,9 @@ namespace cosmo
           // -v.dJ v; componentwise |dJ| <~ eps |J|, so |delta g| <~ eps
           // |v|.|J||v|, and lambda moves by that over dg/dlambda along the
           // branch (A11 = g_lambda - g_U.z).
-          cp.dg_dlambda          = A11;
           const double abs_form = problem.jacobian_abs_form(v);
           cp.resolution = abs_form > 0 ? std::numeric_limits<double>::epsilon() * abs_form /
-                                           std::abs(cp.dg_dlambda) :
+                                           std::abs(A11) :
                                          -1.;
           if (!std::isfinite(d_lambda) || !std::isfinite(d_mu))
             return fail("the Newton update is not finite");
@@ -243,43 +245,43 @@ namespace cosmo
           last_d_lambda = d_lambda;
           lambda += d_lambda;
           mu += d_mu;
-          cp.lambda_update = std::abs(d_lambda);
           if (std::getenv("COSMO_DEBUG_CRITICAL_POINT"))
             std::cerr << std::setprecision(15) << "    [critical point] it " << it << " lambda "
                       << lambda << " d_lambda " << d_lambda << " g " << g << " dg/dlambda "
                       << A11 << " gU.a " << gU * a << " gU.y "
                       << gU * y << " |R| " << cp.residual_norm << " mu " << mu << " eps " << eps
                       << "\n";
-          cp.lambda_history.push_back(lambda);
 
-          // Converged: a tiny update, or the round-off floor -- after a small
-          // update (quadratic convergence has done its work) one that no
-          // longer shrinks: the scatter of lambda is then round-off in g,
-          // |delta g| / |dg/dlambda| with |delta g| ~ eps |J|, and the
-          // precision reported is the larger of the two last updates.
-          const double scale = std::abs(lambda) + lambda_scale;
-          const bool   tiny  = cp.lambda_update <= settings.lambda_tolerance * scale;
-          // (the floor is at least the a-priori resolution: in a badly
-          // conditioned problem the updates wander at that level)
+          // Accepted when one of three holds (doc/theory-continuation.md 3):
+          // - tiny: the update is below the tolerance;
+          // - floor: after an update below the round-off level (at least the
+          //   a-priori resolution: in a badly conditioned problem the updates
+          //   wander there), another below it that no longer shrinks by 4:
+          //   quadratic convergence has done its work, the scatter is
+          //   round-off in g; precision: the larger of the two;
+          // - contracted: the update is small and at most a tenth of the last
+          //   one, and so is g against the last iterate's (both measure the
+          //   error: a lambda update that is small only because its sign
+          //   turned is not taken); the error left after it is about
+          //   |d_k|^2 / |d_k-1| (the last contraction applied once more), and
+          //   when that is below the tolerance the factorization that would
+          //   only confirm it is saved; precision: that estimate.
+          const double scale       = std::abs(lambda) + lambda_scale;
+          const double tolerance   = settings.lambda_tolerance * scale;
+          const double update      = std::abs(d_lambda);
           const double floor_level = std::max(1e-6 * scale, 4 * cp.resolution);
-          const bool   floor       = previous_update <= floor_level &&
-                             cp.lambda_update > 0.25 * previous_update;
-          // Or contracted: once the updates shrink superlinearly (this one
-          // at most a tenth of the last and small), the error left after it
-          // is about |d_k|^2 / |d_k-1| (the last contraction applied once
-          // more; for quadratic convergence it is smaller still). Accepting
-          // then saves the factorization that would only confirm it.
           const double left_after =
-            previous_update > 0 && std::isfinite(previous_update) ?
-              cp.lambda_update * cp.lambda_update / previous_update :
-              INFINITY;
-          const bool contracted = !tiny && !floor && cp.lambda_update <= 1e-3 * scale &&
-                                  cp.lambda_update <= 0.1 * previous_update &&
-                                  left_after <= settings.lambda_tolerance * scale;
-          if (floor)
-            cp.lambda_update = std::max(cp.lambda_update, previous_update);
-          else if (contracted)
-            cp.lambda_update = left_after; // the estimated error, reported as the precision
+            std::isfinite(previous_update) ? update * update / previous_update : INFINITY;
+          const bool tiny  = update <= tolerance;
+          const bool floor = !tiny && previous_update <= floor_level && update <= floor_level &&
+                             update > 0.25 * previous_update;
+          const bool contracted = !tiny && !floor && update <= 1e-3 * scale &&
+                                  update <= 0.1 * previous_update &&
+                                  std::abs(g) <= 0.1 * std::abs(previous_g) &&
+                                  left_after <= tolerance;
+          cp.lambda_update = tiny ? update : floor ? std::max(update, previous_update) :
+                             contracted ? left_after : update;
+          previous_g = g;
           previous_update = std::abs(d_lambda);
           if (tiny || floor || contracted)
             {

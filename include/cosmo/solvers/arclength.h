@@ -28,13 +28,15 @@
  * iteration). After every converged step the problem reports the number of
  * negative eigenvalues of its Hessian on the constrained space (for an
  * LDL^T factorization this is the inertia, which comes free). A change of
- * that count between two steps is an event: it is located by bisection in
- * the arclength to a tolerance and classified as a fold (lambda turns: the
- * lambda-component of the tangent changes sign) or a branch point. At a
- * simple branch point the null vector phi of J is found by inverse
- * iteration; the new branch starts at U* + a phi with the corrector
- * condition phi.(U - U*) = a (orthogonal to the old branch) and is followed
- * like the first.
+ * that count between two steps is an event, classified as a fold (lambda
+ * turns: the lambda-component of the tangent changes sign) or a branch point:
+ * the count is bisected until each bracket holds one crossing, which is then
+ * located by Newton on a minimally augmented system (critical_point.h, with
+ * the null vector phi of J), or, where that fails, by bisection to a
+ * tolerance (doc/theory-continuation.md). At a simple branch point the new
+ * branch starts at U* + a phi with the corrector condition phi.(U - U*) = a
+ * (orthogonal to the old branch) and is followed like the first, to the
+ * depth the settings allow.
  */
 namespace cosmo
 {
@@ -133,7 +135,7 @@ namespace cosmo
         double       residual_norm     = 0; ///< weighted max-norm of R at the located point
         double       test_function     = 0; ///< g of the bordered system there
         double       unfolding         = 0; ///< mu of the branch-point system (0: exact)
-        double       precision         = 0; ///< |d lambda| of the last update / half the bracket
+        double       precision         = 0; ///< Newton: CriticalPoint::lambda_update; bisection: half the bracket
         double       resolution        = -1; ///< eps |v|.|J||v| / |dg/dlambda| (-1: unknown)
         double       lambda_lo = 0, lambda_hi = 0; ///< the detection bracket
         unsigned int multiplicity      = 1; ///< |change of the count| at this point
@@ -167,8 +169,10 @@ namespace cosmo
 
     /**
      * How an event was located, for summary.json: "location": {"method",
-     * "newton_iterations", "factorizations", "residual", "test_function",
-     * "unfolding", "precision", "bracket", "message"}.
+     * "factorizations", "last_update" (Event::precision), "resolution"
+     * (event_resolution), "bracket", "multiplicity", and for Newton
+     * "newton_iterations", "residual", "test_function", "unfolding", for
+     * bisection "arclength_interval"; "message" where Newton failed}.
      */
     void
     add_location_to_json(const BifurcationProblem::Event &e, io::JSON &event);
@@ -176,12 +180,23 @@ namespace cosmo
     /**
      * How far the located lambda can move under round-off (threads, CPU,
      * inputs perturbed at 1e-14): the larger of the a-priori resolution and
-     * the last Newton update, or half the bisection bracket. Regression
+     * the precision of the Newton iteration (CriticalPoint::lambda_update),
+     * or half the bisection bracket. Regression
      * tolerances on event loads stand above this ("resolution" in
      * summary.json's event location, "t_resolution" in sweep.csv).
      */
     double
     event_resolution(const BifurcationProblem::Event &e);
+
+    /**
+     * The negative eigenvalues at a located point other than the critical
+     * one: the count of the last factorization less the critical eigenvalue
+     * where that factorization put it on the negative side (its sign is
+     * round-off at the critical point; the Rayleigh quotient eigenvalue is
+     * of the same factorization). A count alone cannot tell the two apart.
+     */
+    int
+    other_negative_modes(const BifurcationProblem::Event &e);
 
     struct ArclengthSettings
     {

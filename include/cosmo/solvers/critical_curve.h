@@ -50,15 +50,9 @@ namespace cosmo
         points.clear();
       }
 
-      std::size_t
-      size() const
-      {
-        return points.size();
-      }
-
       /**
        * Extrapolate (U, lambda, mode) to p from the last points of the same
-       * size; false if there is none. The modes are aligned in sign with the
+       * sizes (U and mode); false if there is none. The modes are aligned in sign with the
        * last one before they are combined. order, if given, is set to the
        * number of points used (1: the last point itself).
        */

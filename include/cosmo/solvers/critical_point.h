@@ -57,18 +57,33 @@ namespace cosmo
 
     class BifurcationProblem;
 
+    /// sum_i mask_i a_i b_i: the dot product on the mode unknowns.
+    double
+    masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask);
+
+    /// max |v_i| over the mode unknowns (mask_i != 0).
+    double
+    masked_max(const Vector<double> &v, const Vector<double> &mask);
+
     struct CriticalPointSettings
     {
       unsigned int max_iterations = 10;
-      /// Converged when |d lambda| <= tolerance (|lambda| + lambda_scale), or
-      /// when the error estimated after a superlinearly contracted update,
-      /// |d_k|^2 / |d_k-1|, is below it.
+      /// Converged when |d lambda| <= tolerance (|lambda| + lambda_scale), at
+      /// the round-off floor, or when the error estimated after a
+      /// superlinearly contracted update, |d_k|^2 / |d_k-1|, is below it.
       double lambda_tolerance = 1e-13;
     };
 
+    /**
+     * The located point (U, lambda, unfolding, residual_norm: after the last
+     * update) and what the last factorization gave, at the iterate before
+     * it (mode, test_function, eigenvalue, resolution, and the problem's
+     * inertia): the two differ by the last update, which is below the
+     * tolerance or the round-off floor, or (a contracted update) at most a
+     * tenth of the one before and below 1e-3 of the scale of lambda.
+     */
     struct CriticalPoint
     {
-      bool           is_fold = false;
       bool           converged = false;
       Vector<double> U;
       double         lambda = 0;
@@ -77,13 +92,13 @@ namespace cosmo
       double         test_function = 0;    ///< g at the located point
       double         eigenvalue = 0;       ///< Rayleigh quotient v.Jv / v.v = -g / v.v
       double         residual_norm = 0;    ///< weighted max-norm of R at the located point
-      double         lambda_update = 0;    ///< |d lambda| of the last Newton update (or the error estimated after it)
-      double         dg_dlambda = 0;       ///< dg/dlambda along the branch (fold: with U on R = 0)
+      /// The precision of lambda: the last update, the larger of the last two
+      /// at the round-off floor, or the error estimated after a contracted one
+      double         lambda_update = 0;
       /// eps |v|.|J||v| / |dg/dlambda|: the round-off resolution of lambda (-1 if unknown)
       double         resolution = -1;
       unsigned int   iterations = 0;
       unsigned int   factorizations = 0;
-      std::vector<double> lambda_history; ///< lambda after each iteration
       std::string    message;              ///< why it did not converge
     };
 
@@ -97,10 +112,6 @@ namespace cosmo
      * a double eigenvalue is simple (it projects every Newton update). Never throws
      * for a failed iteration: returns converged = false with the message.
      */
-    /// sum_i mask_i a_i b_i: the dot product on the mode unknowns.
-    double
-    masked_dot(const Vector<double> &a, const Vector<double> &b, const Vector<double> &mask);
-
     CriticalPoint
     locate_critical_point(BifurcationProblem &          problem,
                           bool                          fold,
