@@ -13,6 +13,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cosmo/config.h>
+#include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/solvers/critical_curve.h>
 #include <cosmo/materials/energy_derivatives.h>
@@ -620,27 +621,11 @@ namespace cosmo
       reflection.clear();
       if (domain == "sector")
         return;
-      std::vector<Point<2>> points(dof_handler.n_dofs());
-      DoFTools::map_dofs_to_support_points(*mapping, dof_handler, points);
-      const double scale = 1e-7 * radius;
-      std::map<std::tuple<long long, long long, unsigned int>, types::global_dof_index> at;
-      auto key = [&](const Point<2> &p, const unsigned int c) {
-        return std::make_tuple(std::llround(p[0] / scale), std::llround(p[1] / scale), c);
-      };
-      for (types::global_dof_index i = 0; i < points.size(); ++i)
-        at[key(points[i], dof_component[i])] = i;
+      // (empty where the mesh is not mirror-symmetric: no reflection)
+      const auto   mirror = geometry::mirror_dofs(*mapping, dof_handler, 1, radius);
       const double sign[6] = {1, -1, 1, -1, 1, -1};
-      reflection.resize(points.size());
-      for (types::global_dof_index i = 0; i < points.size(); ++i)
-        {
-          const auto it = at.find(key(Point<2>(points[i][0], -points[i][1]), dof_component[i]));
-          if (it == at.end())
-            {
-              reflection.clear(); // the mesh is not mirror-symmetric: no reflection
-              return;
-            }
-          reflection[i] = {it->second, sign[dof_component[i]]};
-        }
+      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
+        reflection.emplace_back(mirror[i], sign[dof_component[i]]);
     }
 
     bool
@@ -1072,37 +1057,41 @@ namespace cosmo
                              " DoFs, this mesh " + std::to_string(dof_handler.n_dofs()));
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
-      const bool stop = stop_at_first_event;
-      stop_at_first_event = false; // located_event must not end the run here
+      // located_event must not end the run here (restored however this ends)
+      const struct Restore
+      {
+        bool &flag;
+        bool  value;
+        ~Restore()
+        {
+          flag = value;
+        }
+      } restore{stop_at_first_event, stop_at_first_event};
+      stop_at_first_event = false;
       // 1e-10 relative: a thousandth of the agreement a curve owes the
       // independent study (1e-7) and below the plate's round-off resolution
       // (up to 7e-8 relative, doc/theory-continuation.md 4).
       const auto record = driver.locate_from(*this, g.U, g.t, false, g.mode, 1e-10);
-      stop_at_first_event = stop;
       if (!record.event.located_by_newton)
         throw io::RunFailure(record.event.message);
-      // The count at the last factorization, less the critical eigenvalue
-      // itself where that factorization put it on the negative side (its
-      // sign is round-off at the critical point; the Rayleigh quotient
-      // eigenvalue is of the same factorization): any other negative
-      // eigenvalue is a mode that became critical below this one. (A count
-      // of 1 alone does not tell the two apart: it once let a 16-lobed
-      // point pass where the 14-lobed mode was already critical.)
-      const int others =
-        record.event.n_negative_after - (record.event.eigenvalue < 0 ? 1 : 0);
-      if (others > 0)
-        throw io::RunFailure("another mode is critical below the continued critical point (" +
-                             std::to_string(record.event.n_negative_after) +
-                             " negative eigenvalues there, the critical one's eigenvalue " +
-                             std::to_string(record.event.eigenvalue) +
-                             "): the critical mode changed");
+      // Another negative eigenvalue than the critical one: a mode that
+      // became critical below this one.
+      if (solvers::other_negative_modes(record.event) > 0)
+        {
+          std::ostringstream m;
+          m << "another mode is critical below the continued critical point ("
+            << record.event.n_negative_after
+            << " negative eigenvalues there, the critical one's eigenvalue " << std::setprecision(3)
+            << record.event.eigenvalue << "): the critical mode changed";
+          throw io::RunFailure(m.str());
+        }
       solution = Vector<double>(record.state.begin(), record.state.end());
-      // The last factorization is at the last Newton iterate, which the last
-      // update moved by less than the located precision: its inertia and
-      // smallest eigenvalue are the critical point's to that precision, so
-      // the report below does not factorize again.
-      factorized_at   = solution;
-      factorized_load = record.event.lambda;
+      // The report below takes the inertia and smallest eigenvalue from the
+      // last factorization, of the last Newton iterate: it differs from the
+      // located state by the last update (critical_point.h), on which neither
+      // depends beyond the located precision; not factorizing again is what
+      // the continued point saves.
+      report_with_last_factorization = true;
       solvers::StepReport report;
       report.t          = record.event.lambda;
       report.n_negative = record.event.n_negative_after;
@@ -1123,8 +1112,9 @@ namespace cosmo
                std::equal(U.begin(), U.end(), V.begin());
       };
       // The driver has just factorized at this state, unless it located an event since.
-      if (!same_state(factorized_at, factorized_load))
+      if (!report_with_last_factorization && !same_state(factorized_at, factorized_load))
         setup_jacobian(U);
+      report_with_last_factorization = false;
       if (!same_state(assembled_at, assembled_load))
         {
           Vector<double> R;
@@ -1634,7 +1624,14 @@ namespace cosmo
        * Newton fails. There the mode is not the first critical one, so the
        * count check of a continued point fails by design and is not an error.
        */
-      double
+      struct ContinuedBack
+      {
+        double      t = NAN;            ///< NaN if Newton failed
+        double      factorizations = 0;
+        std::string message;            ///< why there is no t
+      };
+
+      ContinuedBack
       continue_back(ParameterHandler &           prm,
                     const io::ParameterSweep &   sweep,
                     const unsigned int           k,
@@ -1654,16 +1651,20 @@ namespace cosmo
         g.mode = mode;
         g.t    = t;
         problem.start_from_critical_point(g);
+        ContinuedBack back;
         try
           {
             problem.run(options, prm);
           }
-        catch (io::RunFailure &)
-          {}
+        catch (io::RunFailure &e)
+          {
+            back.message = e.what(); // (expected: the other mode is critical first there)
+          }
+        back.factorizations = problem.timings().calls("factorization");
         for (const auto &x : problem.events())
           if (x.event.located_by_newton)
-            return x.event.lambda;
-        return NAN;
+            back.t = x.event.lambda;
+        return back;
       }
 
       /**
@@ -1691,17 +1692,17 @@ namespace cosmo
         table.add_column("value", sweep.axis_label());
         for (const auto &c : {"converged", "t_critical", "t_resolution", "mismatch_critical",
                               "closed_form_mismatch", "mode_number", "mode_out_of_plane", "dofs",
-                              "seconds", "factorizations", "continued"})
-          table.add_column(c);
-        for (const auto &c : {"mode_change", "codim2_value", "codim2_t"})
+                              "seconds", "factorizations", "continued", "mode_change",
+                              "codim2_value", "codim2_t"})
           table.add_column(c);
         // The critical points continued so far (critical curve), and the
-        // previous value's critical point (mode changes).
+        // last value's with a located critical point (mode changes).
         solvers::CriticalCurvePredictor predictor;
         struct Previous
         {
-          double         value = NAN, t = NAN, n = NAN, out = NAN;
-          Vector<double> U, mode;
+          unsigned int k     = 0;
+          double       value = NAN, t = NAN, n = NAN, out = NAN;
+          std::size_t  n_dofs = 0;
         } previous;
         std::string refused;
         for (unsigned int k = 0; k < sweep.size(); ++k)
@@ -1714,6 +1715,8 @@ namespace cosmo
             // The previous mode's critical point continued to this value
             // where another mode has become critical first (t there).
             double previous_mode_t = NAN;
+            // of the attempts that did not give this row's point
+            double other_factorizations = 0;
             try
               {
                 sweep.apply(prm, k);
@@ -1724,8 +1727,7 @@ namespace cosmo
                 auto problem_ptr     = std::make_unique<PlateRodProblem>();
                 problem_ptr->parse_parameters(prm);
                 PlateRodProblem::CriticalGuess g;
-                unsigned int                   order = 0;
-                if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode, &order))
+                if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode))
                   {
                     problem_ptr->start_from_critical_point(g);
                     try
@@ -1740,9 +1742,9 @@ namespace cosmo
                             ": continuing the critical point failed (" + e.what() +
                             "); an independent run instead");
                         for (const auto &x : problem_ptr->events())
-                          if (x.event.located_by_newton &&
-                              x.event.n_negative_after - (x.event.eigenvalue < 0 ? 1 : 0) > 0)
+                          if (x.event.located_by_newton && solvers::other_negative_modes(x.event) > 0)
                             previous_mode_t = x.event.lambda;
+                        other_factorizations += problem_ptr->timings().calls("factorization");
                         problem_ptr = std::make_unique<PlateRodProblem>();
                         problem_ptr->parse_parameters(prm);
                       }
@@ -1786,40 +1788,44 @@ namespace cosmo
                         predictor.add(sweep.value(k), t,
                                       Vector<double>(e.state.begin(), e.state.end()),
                                       Vector<double>(e.mode.begin(), e.mode.end()));
-                      if (mode_change == 1 && curve && std::isfinite(previous_mode_t) &&
-                          previous.U.size() == e.state.size())
+                      if (mode_change == 1)
                         {
-                          // Where the two critical curves cross: the new mode
-                          // continued back to the previous value (a few
-                          // factorizations), then the secants intersected.
-                          const double t_back = continue_back(
-                            prm, sweep, k - 1, directory + "/point-" +
-                                                 Utilities::int_to_string(k, 2) + "/back",
-                            Vector<double>(e.state.begin(), e.state.end()),
-                            Vector<double>(e.mode.begin(), e.mode.end()), t, quiet);
-                          sweep.apply(prm, k);
-                          if (solvers::codimension_two_estimate(previous.value, previous.t,
-                                                                t_back, sweep.value(k),
-                                                                previous_mode_t, t, codim2_value,
-                                                                codim2_t))
+                          std::ostringstream m;
+                          m << std::setprecision(6) << "  the critical mode changes from n = "
+                            << previous.n << " to n = " << n << " between " << sweep.label()
+                            << " = " << previous.value << " and " << sweep.value(k);
+                          std::string why = "the old mode was not continued to this value";
+                          if (curve && std::isfinite(previous_mode_t) &&
+                              previous.n_dofs == e.state.size())
                             {
-                              std::ostringstream m;
-                              m << std::setprecision(6) << "  the critical mode changes from n = "
-                                << previous.n << " to n = " << n << " between "
-                                << sweep.label() << " = " << previous.value << " and "
-                                << sweep.value(k) << ": codimension-2 point near "
-                                << sweep.label() << " = " << codim2_value << ", t = " << codim2_t
-                                << " (the two critical curves' secants crossed)";
-                              log(m.str());
+                              // Where the two critical curves cross: the new
+                              // mode continued back to the previous value (a
+                              // few factorizations), the secants intersected.
+                              const auto back = continue_back(
+                                prm, sweep, previous.k, point + "/back",
+                                Vector<double>(e.state.begin(), e.state.end()),
+                                Vector<double>(e.mode.begin(), e.mode.end()), t, quiet);
+                              sweep.apply(prm, k);
+                              other_factorizations += back.factorizations;
+                              why = std::isfinite(back.t) ?
+                                      "the secants do not cross between the values" :
+                                      "continuing the new mode back failed: " + back.message;
+                              if (std::isfinite(back.t) &&
+                                  solvers::codimension_two_estimate(previous.value, previous.t,
+                                                                    back.t, sweep.value(k),
+                                                                    previous_mode_t, t,
+                                                                    codim2_value, codim2_t))
+                                why.clear();
                             }
+                          if (why.empty())
+                            m << ": codimension-2 point near " << sweep.label() << " = "
+                              << codim2_value << ", t = " << codim2_t
+                              << " (the two critical curves' secants crossed)";
+                          else
+                            m << "; no codimension-2 estimate (" << why << ")";
+                          log(m.str());
                         }
-                      else if (mode_change == 1)
-                        log("  the critical mode changes from n = " +
-                            std::to_string(int(previous.n)) + " to n = " + std::to_string(int(n)) +
-                            " between the previous value and this one");
-                      previous = {sweep.value(k), t, n, out,
-                                  Vector<double>(e.state.begin(), e.state.end()),
-                                  Vector<double>(e.mode.begin(), e.mode.end())};
+                      previous = {k, sweep.value(k), t, n, out, e.state.size()};
                       break;
                     }
                 std::string text;
@@ -1833,7 +1839,8 @@ namespace cosmo
             const double seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             table.add_row({sweep.value(k), converged, t, resolution, D, closed, n, out, dofs, seconds,
-                           factorizations, continued, mode_change, codim2_value, codim2_t});
+                           factorizations + other_factorizations, continued, mode_change,
+                           codim2_value, codim2_t});
             table.write(directory + "/sweep.csv");
             if (curve)
               table.write(directory + "/critical_curve.csv");

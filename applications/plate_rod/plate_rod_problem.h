@@ -266,6 +266,8 @@ namespace cosmo
       std::vector<unsigned char>   dof_component; ///< field component of each DoF
       Vector<double>               factorized_at;  ///< the state of the last factorization
       double                       factorized_load = 0;
+      /// converged_step reports with the last factorization (a continued critical point)
+      bool                         report_with_last_factorization = false;
       Vector<double>               assembled_at;   ///< the state of the last assembly
       double                       assembled_load = 0;
       std::array<double, 2>        assembled_energy{}; ///< its plate and rim energies

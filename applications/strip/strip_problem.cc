@@ -7,10 +7,12 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cosmo/config.h>
+#include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/rotation.h>
 #include <cosmo/kinematics/strip.h>
@@ -20,7 +22,6 @@
 
 #include <cmath>
 #include <iomanip>
-#include <map>
 #include <sstream>
 
 namespace cosmo
@@ -496,33 +497,32 @@ namespace cosmo
     double
     StripProblem::mode_parity(const Vector<double> &mode) const
     {
-      // u2 at each node, keyed by its eta (rounded to 1e-9 of the width:
-      // the graded mesh's vertices are mirror images to round-off).
-      std::map<long long, double> u2;
-      const auto &               unit = fe->base_element(0).get_unit_support_points();
+      const auto mirror = geometry::mirror_dofs(MappingQ1<1>(), dof_handler, 0, strip_width);
+      if (mirror.empty())
+        return NAN; // (a mesh not symmetric about eta = 0 has no parity)
+      // The out-of-plane displacement u2 (component 1), its DoFs by cell.
+      std::vector<bool>                    u2(dof_handler.n_dofs(), false);
       std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           cell->get_dof_indices(idx);
-          const double x0 = cell->vertex(0)[0], x1 = cell->vertex(1)[0];
           for (unsigned int i = 0; i < idx.size(); ++i)
-            {
-              const auto ci = fe->system_to_component_index(i);
-              if (ci.first != 1)
-                continue;
-              const double eta = x0 + (x1 - x0) * unit[ci.second][0];
-              u2[std::llround(eta / strip_width * 1e9)] = mode[idx[i]];
-            }
+            u2[idx[i]] = fe->system_to_component_index(i).first == 1;
         }
       double cross = 0, square = 0;
-      for (const auto &[key, value] : u2)
-        {
-          const auto mirror = u2.find(-key);
-          AssertThrow(mirror != u2.end(), ExcMessage("the width mesh is not symmetric"));
-          cross += value * mirror->second;
-          square += value * value;
-        }
-      return square > 0 ? cross / square : 0.;
+      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
+        if (u2[i])
+          {
+            cross += mode[i] * mode[mirror[i]];
+            square += mode[i] * mode[i];
+          }
+      return square > 0 ? cross / square : NAN;
+    }
+
+    std::string
+    StripProblem::symmetry_name(const double parity)
+    {
+      return parity > 0.5 ? "symmetric" : parity < -0.5 ? "antisymmetric" : "mixed";
     }
 
     void
@@ -533,7 +533,7 @@ namespace cosmo
       if (mode)
         {
           std::ostringstream m;
-          m << "  mode " << (event_parities.back() > 0 ? "symmetric" : "antisymmetric")
+          m << "  mode " << symmetry_name(event_parities.back())
             << " about the centre line (parity " << std::setprecision(3) << event_parities.back()
             << ")";
           say(m.str());
@@ -688,7 +688,7 @@ namespace cosmo
         if (k < event_parities.size() && std::isfinite(event_parities[k]))
           {
             x["mode_parity"]   = event_parities[k];
-            x["mode_symmetry"] = event_parities[k] > 0 ? "symmetric" : "antisymmetric";
+            x["mode_symmetry"] = symmetry_name(event_parities[k]);
           }
       });
       j["timings"]     = timer.to_json();

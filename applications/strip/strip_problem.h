@@ -92,10 +92,13 @@ namespace cosmo
        * The width-wise parity of a mode: sum u2(eta) u2(-eta) / sum u2(eta)^2
        * over the out-of-plane displacement u2 (the plate normal is E2), +1
        * for a mode symmetric about the centre line, -1 antisymmetric. The
-       * mesh is symmetric about eta = 0, so every node has its mirror node.
+       * mesh is symmetric about eta = 0 (NaN if not, or for a mode without u2).
        */
       double
       mode_parity(const Vector<double> &mode) const;
+      /// "symmetric" (parity > 1/2), "antisymmetric" (< -1/2) or "mixed".
+      static std::string
+      symmetry_name(double parity);
 
     protected:
       int

@@ -1,0 +1,34 @@
+#ifndef cosmo_geometry_mirror_dofs_h
+#define cosmo_geometry_mirror_dofs_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <vector>
+
+/**
+ * The DoFs of a mirror-symmetric mesh paired by the reflection x_axis -> -x_axis:
+ * for every DoF the DoF of the same vector component at the mirrored support
+ * point. Used where a problem's symmetry acts on its unknowns: the full disc's
+ * reflection y -> -y (plate_rod's fixed-point space at double eigenvalues) and
+ * the width-wise parity of the strip's modes. Support points are matched to
+ * 1e-7 of length_scale (the mesh's vertices are mirror images to round-off).
+ */
+namespace cosmo
+{
+  namespace geometry
+  {
+    using namespace dealii;
+
+    /// mirror[i]: the DoF DoF i maps to; empty if some DoF has no mirror image
+    /// (the mesh is not symmetric). The element must be primitive.
+    template <int dim>
+    std::vector<types::global_dof_index>
+    mirror_dofs(const Mapping<dim> &    mapping,
+                const DoFHandler<dim> &dof_handler,
+                unsigned int           axis,
+                double                 length_scale);
+  } // namespace geometry
+} // namespace cosmo
+
+#endif
