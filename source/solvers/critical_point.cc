@@ -203,8 +203,9 @@ namespace cosmo
           if (status != 0)
             return fail("the residual cannot be evaluated near a Newton iterate");
           const double A11 = -(vJv_plus - vJv_minus) / (2 * delta);
-          // Block elimination with the factorization of J.
-          double d_lambda = 0, d_mu = 0;
+          // Block elimination with the factorization of J. dg_dlambda: dg/dlambda
+          // along the branch, for the resolution (below).
+          double d_lambda = 0, d_mu = 0, dg_dlambda = A11;
           if (fold)
             {
               const double denominator = A11;
@@ -223,14 +224,24 @@ namespace cosmo
                 return fail("the branch-point system is singular");
               d_lambda = (r1 * A22 - A12 * r2) / det;
               d_mu     = (A11 * r2 - A21 * r1) / det;
+              // Near the branch point z = J^-1 R_lambda has a component along
+              // the null vector of size (phi.R_lambda)/eigenvalue: zero in exact
+              // arithmetic on a symmetric branch, round-off amplified by
+              // 1/eigenvalue in practice, and so is A11 = g_lambda - g_U.z. The
+              // Schur complement A11 - A12 A21 / A22 (mu eliminated, the border
+              // row kept) removes that component with y = J^-1 b, which carries
+              // the same 1/eigenvalue: g's derivative along the branch. (A11
+              // alone gave resolutions scattered over 3 decades at converged
+              // points.)
+              dg_dlambda = det / A22;
             }
           // The resolution: a perturbation dJ of the factorization moves g by
           // -v.dJ v; componentwise |dJ| <~ eps |J|, so |delta g| <~ eps
           // |v|.|J||v|, and lambda moves by that over dg/dlambda along the
-          // branch (A11 = g_lambda - g_U.z).
+          // branch.
           const double abs_form = problem.jacobian_abs_form(v);
           cp.resolution = abs_form > 0 ? std::numeric_limits<double>::epsilon() * abs_form /
-                                           std::abs(A11) :
+                                           std::abs(dg_dlambda) :
                                          -1.;
           if (!std::isfinite(d_lambda) || !std::isfinite(d_mu))
             return fail("the Newton update is not finite");
@@ -248,7 +259,7 @@ namespace cosmo
           if (std::getenv("COSMO_DEBUG_CRITICAL_POINT"))
             std::cerr << std::setprecision(15) << "    [critical point] it " << it << " lambda "
                       << lambda << " d_lambda " << d_lambda << " g " << g << " dg/dlambda "
-                      << A11 << " gU.a " << gU * a << " gU.y "
+                      << dg_dlambda << " A11 " << A11 << " gU.a " << gU * a << " gU.y "
                       << gU * y << " |R| " << cp.residual_norm << " mu " << mu << " eps " << eps
                       << "\n";
 
