@@ -3,9 +3,11 @@
 
 Each line is a list of words. A word 'x~r' is a located critical load x with
 its round-off resolution r (summary.json: events.*.location.resolution;
-sweep.csv: t_resolution): it must agree within 2 max(r_ref, r_new), the
-scatter two machines may show (threads, CPU, inputs perturbed at 1e-14;
-doc/theory-continuation.md 4). Other numbers: relative 1e-6 or absolute 1e-9
+sweep.csv: t_resolution): it must agree within 2 r_ref, the scatter two
+machines may show (threads, CPU, inputs perturbed at 1e-14;
+doc/theory-continuation.md 4), and r_new must not exceed 4 r_ref (the
+tolerance is the reference's: a run that resolves its load worse -- another
+location method, a worse-conditioned point -- is a change, not a licence). Other numbers: relative 1e-6 or absolute 1e-9
 (states converge to a weighted residual of 1e-10: far below); words that are
 not numbers must be equal.
 usage: compare_key_numbers.py <reference> <new>
@@ -40,7 +42,11 @@ def main(ref_file, new_file):
                     bad.append("line %d word %d: %r against %r" % (k + 1, j + 1, wa, wb))
                 continue
             if ra is not None or rb is not None:
-                tol = 2 * max(ra or 0, rb or 0) + 1e-14 * abs(xa)
+                if ra is None or rb is None or rb > 4 * ra:
+                    bad.append("line %d word %d: resolution %s against %s of the reference"
+                               % (k + 1, j + 1, rb, ra))
+                    continue
+                tol = 2 * ra + 1e-14 * abs(xa)
                 why = "2 x resolution"
             else:
                 tol = max(1e-6 * abs(xa), 1e-9)

@@ -7,10 +7,10 @@
 # instability there, the lower of the two true curves, is within the larger
 # of the two secants' interpolation errors of it: at most h^2/8 max|t''|
 # with h the step in x = log(value) (the secants are in log of the value),
-# and t'' estimated by the second divided difference of t_critical in x over
-# three consecutive values of one mode; a factor 2 covers the change of t''
-# between the interval it is estimated on and the one it is used on (on
-# this study the error measured 1.56e-4 against h^2/8 |t''| = 1.6e-4).
+# and t'' estimated for each of the two modes by the second divided
+# difference of t_critical in x over three consecutive values of that mode
+# (the larger); a factor 2 covers the change of t'' between the intervals it
+# is estimated on and the one it is used on.
 # The mode found there must be one of the two.
 # usage: critical_curve_mode_change.sh <plate_rod> <curve.prm> <scratch dir>
 set -euo pipefail
@@ -28,16 +28,19 @@ k = changes[0]
 assert math.isfinite(float(rows[k]["codim2_value"])), "no codimension-2 estimate"
 x = [math.log(float(r[key])) for r in rows]
 t = [float(r["t_critical"]) for r in rows]
-curvature = 0.0  # max |t''| in x over triples of one mode
+curvature = {}  # max |t''| in x of each mode, over its triples of consecutive values
 for i in range(1, len(rows) - 1):
-    if rows[i - 1]["mode_number"] == rows[i]["mode_number"] == rows[i + 1]["mode_number"]:
+    n = rows[i]["mode_number"]
+    if rows[i - 1]["mode_number"] == n == rows[i + 1]["mode_number"]:
         s1 = (t[i] - t[i - 1]) / (x[i] - x[i - 1])
         s2 = (t[i + 1] - t[i]) / (x[i + 1] - x[i])
-        curvature = max(curvature, abs(2 * (s2 - s1) / (x[i + 1] - x[i - 1])))
-assert curvature > 0, "no three consecutive values of one mode to estimate t'' from"
+        curvature[n] = max(curvature.get(n, 0.0), abs(2 * (s2 - s1) / (x[i + 1] - x[i - 1])))
+modes = (rows[k - 1]["mode_number"], rows[k]["mode_number"])
+assert all(n in curvature for n in modes), \
+    "each of the two modes needs three consecutive values to estimate its t'' (have %s)" % curvature
 h = x[k] - x[k - 1]
-print(rows[k]["codim2_value"], rows[k]["codim2_t"], rows[k - 1]["mode_number"],
-      rows[k]["mode_number"], 2 * h * h / 8 * curvature)
+print(rows[k]["codim2_value"], rows[k]["codim2_t"], modes[0], modes[1],
+      2 * h * h / 8 * max(curvature[n] for n in modes))
 PY
 )
 echo "codimension-2 estimate: value $value, t $t_star (modes $n_before -> $n_after), secant error bound $bound"
