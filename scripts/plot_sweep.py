@@ -35,6 +35,29 @@ def find_sweeps(arg):
     return found
 
 
+def plot_critical_points(plt, sweep_dir, x, keep, units, failed):
+    """A study of critical points: (a) the critical load, (b) the strains there."""
+    strains = [s + "_critical" for s in plot_steps.STRAINS]
+    varying = [s for s in strains
+               if s in keep and keep[s] and max(keep[s]) - min(keep[s]) > 1e-12]
+    fig, axes = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    plot_steps.plot_panel(axes[0], x, keep, units, ["t_critical"], "(a) critical load t")
+    plot_steps.plot_panel(axes[1], x, keep, units, varying or strains,
+                          "(b) strains at the critical point")
+    axes[1].set_xlabel(units.get("value") or "swept value")
+    title = os.path.basename(os.path.normpath(os.path.abspath(sweep_dir)))
+    if os.path.exists(os.path.join(sweep_dir, "critical_curve.csv")):
+        title += " (critical curve)"
+    if failed:
+        title += "  (%d point(s) did not converge)" % failed
+    fig.suptitle(title, fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    out = os.path.join(sweep_dir, "sweep.png")
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out, []
+
+
 def plot_sweep(plt, sweep_dir):
     columns, units = plot_steps.read_steps(os.path.join(sweep_dir, "sweep.csv"))
     if not columns.get("value"):
@@ -42,6 +65,8 @@ def plot_sweep(plt, sweep_dir):
     ok = [c == 1 for c in columns.get("converged", [])]
     keep = {n: [v for v, good in zip(vals, ok) if good] for n, vals in columns.items()}
     x = keep["value"]
+    if "t_critical" in keep:
+        return plot_critical_points(plt, sweep_dir, x, keep, units, len(ok) - sum(ok))
     # Only the strains that change: a natural-shape study of bending has
     # five flat lines that would hide the one that matters.
     varying = [s for s in plot_steps.STRAINS

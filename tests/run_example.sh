@@ -37,17 +37,24 @@ for r in rows:
 for c in table_checks:
     # Columns as globals: a generator expression sees only globals.
     assert eval(c, {"abs": abs, "all": all, "zip": zip, "math": math, "len": len, **columns}), "'%s' fails" % c
-for r in rows:
+for k, r in enumerate(rows):
     env = {k.split(" [")[0]: float(v) for k, v in r.items()}
-    assert env["converged"] == 1, "point %d did not converge" % env["point"]
+    assert env["converged"] == 1, "point %d did not converge" % k
     env.update(abs=abs, math=math)
     for c in checks:
-        assert eval(c, {}, env), "point %d (value %g): '%s' fails" % (env["point"], env["value"], c)
+        assert eval(c, {}, env), "point %d (value %g): '%s' fails" % (k, env["value"], c)
 print("%d points, %d sweep checks hold at each, %d over the table" % (len(rows), len(checks), len(table_checks)), file=sys.stderr)
+strains = ("nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3")
 for r in rows:
     env = {k.split(" [")[0]: v for k, v in r.items()}
-    print("value", env["value"], *[env[s] for s in ("nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3")])
-    print("K", *[env["K_%s_%s" % (s, s)] for s in ("nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3")])
+    if "t_critical" in env:
+        # A study of critical points: the critical load and the strains
+        # there (resolved to t_resolution ~ 1e-11, far below numdiff's 1e-6).
+        print("value", env["value"], "t_critical", env["t_critical"])
+        print("strains", *[env[s + "_critical"] for s in strains])
+        continue
+    print("value", env["value"], *[env[s] for s in strains])
+    print("K", *[env["K_%s_%s" % (s, s)] for s in strains])
 PY
 else
 python3 - "$dir/out/summary.json" "$prm" > "$dir/key_numbers.output" <<'PY'

@@ -15,7 +15,7 @@
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/parameter_sweep.h>
-#include <cosmo/solvers/critical_curve.h>
+#include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
 
 #include "plate_rod_problem.h"
@@ -268,17 +268,6 @@ namespace cosmo
       prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
                         "Stop where the first change of stability is located (critical "
                         "growth only: studies, quick checks).");
-      prm.declare_entry("Critical curve", "false", Patterns::Bool(),
-                        "In a study (section Parameter sweep): from the second value on, "
-                        "continue the critical point of the previous values (extrapolated "
-                        "through up to three of them in the swept value, then Newton on the "
-                        "augmented system; no path from t = 0) instead of an independent run. "
-                        "A point where that fails, or where another mode has become critical "
-                        "first, is run independently (said in the log; column 'continued' = "
-                        "0); where the mode changes, the new mode is continued back to the "
-                        "previous value and the codimension-2 point estimated (columns "
-                        "codim2_value, codim2_t). Writes critical_curve.csv (the columns of "
-                        "sweep.csv, which is written too).");
       prm.leave_subsection();
       io::ParameterSweep::declare_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
@@ -1051,10 +1040,6 @@ namespace cosmo
     void
     PlateRodProblem::locate_from_guess()
     {
-      const CriticalGuess &g = *critical_guess;
-      if (g.U.size() != dof_handler.n_dofs())
-        throw io::RunFailure("the critical point to start from has " + std::to_string(g.U.size()) +
-                             " DoFs, this mesh " + std::to_string(dof_handler.n_dofs()));
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
       // located_event must not end the run here (restored however this ends)
@@ -1068,23 +1053,8 @@ namespace cosmo
         }
       } restore{stop_at_first_event, stop_at_first_event};
       stop_at_first_event = false;
-      // 1e-10 relative: a thousandth of the agreement a curve owes the
-      // independent study (1e-7) and below the plate's round-off resolution
-      // (up to 7e-8 relative, doc/theory-continuation.md 4).
-      const auto record = driver.locate_from(*this, g.U, g.t, false, g.mode, 1e-10);
-      if (!record.event.located_by_newton)
-        throw io::RunFailure(record.event.message);
-      // Another negative eigenvalue than the critical one: a mode that
-      // became critical below this one.
-      if (solvers::other_negative_modes(record.event) > 0)
-        {
-          std::ostringstream m;
-          m << "another mode is critical below the continued critical point ("
-            << record.event.n_negative_after
-            << " negative eigenvalues there, the critical one's eigenvalue " << std::setprecision(3)
-            << record.event.eigenvalue << "): the critical mode changed";
-          throw io::RunFailure(m.str());
-        }
+      const auto record = solvers::locate_continued_critical_point(driver, *this, *critical_guess,
+                                                                  newton_settings);
       solution = Vector<double>(record.state.begin(), record.state.end());
       // The report below takes the inertia and smallest eigenvalue from the
       // last factorization, of the last Newton iterate: it differs from the
@@ -1616,246 +1586,21 @@ namespace cosmo
       say("output in " + output_directory + "/");
     }
 
-    namespace
+    std::vector<double>
+    PlateRodProblem::classify_critical_mode(const Vector<double> &mode) const
     {
-      /**
-       * The critical point of a mode found at one value of a study continued
-       * back to value k (quietly, into directory): its t there, NaN if
-       * Newton fails. There the mode is not the first critical one, so the
-       * count check of a continued point fails by design and is not an error.
-       */
-      struct ContinuedBack
-      {
-        double      t = NAN;            ///< NaN if Newton failed
-        double      factorizations = 0;
-        std::string message;            ///< why there is no t
-      };
+      const auto c = classify_mode(mode);
+      return {double(c.first), double(c.second)};
+    }
 
-      ContinuedBack
-      continue_back(ParameterHandler &           prm,
-                    const io::ParameterSweep &   sweep,
-                    const unsigned int           k,
-                    const std::string &          directory,
-                    const Vector<double> &       U,
-                    const Vector<double> &       mode,
-                    const double                 t,
-                    const io::RunOptions &       options)
-      {
-        sweep.apply(prm, k);
-        io::ParameterSweep::set_entry(prm, "Output/Output directory", directory, "Output",
-                                      "Output directory");
-        PlateRodProblem problem;
-        problem.parse_parameters(prm);
-        PlateRodProblem::CriticalGuess g;
-        g.U    = U;
-        g.mode = mode;
-        g.t    = t;
-        problem.start_from_critical_point(g);
-        ContinuedBack back;
-        try
-          {
-            problem.run(options, prm);
-          }
-        catch (io::RunFailure &e)
-          {
-            back.message = e.what(); // (expected: the other mode is critical first there)
-          }
-        back.factorizations = problem.timings().calls("factorization");
-        for (const auto &x : problem.events())
-          if (x.event.located_by_newton)
-            back.t = x.event.lambda;
-        return back;
-      }
-
-      /**
-       * A study (section "Parameter sweep"): the run repeated for each value
-       * of one entry, each point in its own directory point-NN/, and
-       * sweep.csv with the critical growth (the first located event on the
-       * flat branch), its mode and the closed form beside it, rewritten
-       * after every point. A point that fails or is refused is recorded and
-       * the study goes on; a refused value makes the study end with status 1.
-       */
-      void
-      run_study(ParameterHandler &prm, const io::RunOptions &options, const io::ParameterSweep &sweep)
-      {
-        prm.enter_subsection("Output");
-        const std::string directory = prm.get("Output directory");
-        prm.leave_subsection();
-        const auto log_file = io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt");
-        auto &     log      = *log_file;
-        log("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
-            ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
-        prm.enter_subsection("Growth path");
-        const bool curve = prm.get_bool("Critical curve");
-        prm.leave_subsection();
-        io::CSVTable table;
-        table.add_column("value", sweep.axis_label());
-        for (const auto &c : {"converged", "t_critical", "t_resolution", "mismatch_critical",
-                              "closed_form_mismatch", "mode_number", "mode_out_of_plane", "dofs",
-                              "seconds", "factorizations", "continued", "mode_change",
-                              "codim2_value", "codim2_t"})
-          table.add_column(c);
-        // The critical points continued so far (critical curve), and the
-        // last value's with a located critical point (mode changes).
-        solvers::CriticalCurvePredictor predictor;
-        struct Previous
-        {
-          unsigned int k     = 0;
-          double       value = NAN, t = NAN, n = NAN, out = NAN;
-          std::size_t  n_dofs = 0;
-        } previous;
-        std::string refused;
-        for (unsigned int k = 0; k < sweep.size(); ++k)
-          {
-            const auto        start = std::chrono::steady_clock::now();
-            const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
-            double            converged = 0, t = NAN, D = NAN, closed = NAN, n = NAN, out = NAN,
-                   dofs = NAN, resolution = NAN, factorizations = NAN, continued = 0,
-                   mode_change = 0, codim2_value = NAN, codim2_t = NAN;
-            // The previous mode's critical point continued to this value
-            // where another mode has become critical first (t there).
-            double previous_mode_t = NAN;
-            // of the attempts that did not give this row's point
-            double other_factorizations = 0;
-            try
-              {
-                sweep.apply(prm, k);
-                io::ParameterSweep::set_entry(prm, "Output/Output directory", point, "Output",
-                                              "Output directory");
-                io::RunOptions quiet = options;
-                quiet.quiet          = true;
-                auto problem_ptr     = std::make_unique<PlateRodProblem>();
-                problem_ptr->parse_parameters(prm);
-                PlateRodProblem::CriticalGuess g;
-                if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode))
-                  {
-                    problem_ptr->start_from_critical_point(g);
-                    try
-                      {
-                        problem_ptr->run(quiet, prm);
-                        converged = 1;
-                        continued = 1;
-                      }
-                    catch (io::RunFailure &e)
-                      {
-                        log("  point " + std::to_string(k) +
-                            ": continuing the critical point failed (" + e.what() +
-                            "); an independent run instead");
-                        for (const auto &x : problem_ptr->events())
-                          if (x.event.located_by_newton && solvers::other_negative_modes(x.event) > 0)
-                            previous_mode_t = x.event.lambda;
-                        other_factorizations += problem_ptr->timings().calls("factorization");
-                        problem_ptr = std::make_unique<PlateRodProblem>();
-                        problem_ptr->parse_parameters(prm);
-                      }
-                  }
-                PlateRodProblem &problem = *problem_ptr;
-                if (continued == 0)
-                  try
-                    {
-                      problem.run(quiet, prm);
-                      converged = 1;
-                    }
-                  catch (io::RunFailure &e)
-                    {
-                      log("  point " + std::to_string(k) + ": " + e.what());
-                    }
-                dofs           = problem.n_dofs();
-                factorizations = problem.timings().calls("factorization");
-                for (const auto &e : problem.events())
-                  if (e.event.branch == 0 &&
-                      e.event.kind == solvers::BifurcationProblem::Event::Kind::branch_point)
-                    {
-                      t          = e.event.lambda;
-                      D          = problem.mismatch(t);
-                      resolution = solvers::event_resolution(e.event);
-                      if (!e.mode.empty())
-                        {
-                          const auto c =
-                            problem.classify_mode(Vector<double>(e.mode.begin(), e.mode.end()));
-                          n   = c.first;
-                          out = c.second;
-                        }
-                      // A new critical mode: the previous curve ends (a
-                      // codimension-2 point lies between the two values).
-                      if (std::isfinite(previous.n) && std::isfinite(n) &&
-                          (n != previous.n || out != previous.out))
-                        {
-                          mode_change = 1;
-                          predictor.clear();
-                        }
-                      if (curve && converged == 1 && e.event.located_by_newton)
-                        predictor.add(sweep.value(k), t,
-                                      Vector<double>(e.state.begin(), e.state.end()),
-                                      Vector<double>(e.mode.begin(), e.mode.end()));
-                      if (mode_change == 1)
-                        {
-                          std::ostringstream m;
-                          m << std::setprecision(6) << "  the critical mode changes from n = "
-                            << previous.n << " to n = " << n << " between " << sweep.label()
-                            << " = " << previous.value << " and " << sweep.value(k);
-                          std::string why = "the old mode was not continued to this value";
-                          if (curve && std::isfinite(previous_mode_t) &&
-                              previous.n_dofs == e.state.size())
-                            {
-                              // Where the two critical curves cross: the new
-                              // mode continued back to the previous value (a
-                              // few factorizations), the secants intersected.
-                              const auto back = continue_back(
-                                prm, sweep, previous.k, point + "/back",
-                                Vector<double>(e.state.begin(), e.state.end()),
-                                Vector<double>(e.mode.begin(), e.mode.end()), t, quiet);
-                              sweep.apply(prm, k);
-                              other_factorizations += back.factorizations;
-                              why = std::isfinite(back.t) ?
-                                      "the secants do not cross between the values" :
-                                      "continuing the new mode back failed: " + back.message;
-                              if (std::isfinite(back.t) &&
-                                  solvers::codimension_two_estimate(previous.value, previous.t,
-                                                                    back.t, sweep.value(k),
-                                                                    previous_mode_t, t,
-                                                                    codim2_value, codim2_t))
-                                why.clear();
-                            }
-                          if (why.empty())
-                            m << ": codimension-2 point near " << sweep.label() << " = "
-                              << codim2_value << ", t = " << codim2_t
-                              << " (the two critical curves' secants crossed)";
-                          else
-                            m << "; no codimension-2 estimate (" << why << ")";
-                          log(m.str());
-                        }
-                      previous = {k, sweep.value(k), t, n, out, e.state.size()};
-                      break;
-                    }
-                std::string text;
-                problem.closed_forms(closed, text);
-              }
-            catch (io::InputError &e)
-              {
-                refused += std::string(refused.empty() ? "" : "; ") + e.what();
-                log("  point " + std::to_string(k) + " refused: " + e.what());
-              }
-            const double seconds =
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            table.add_row({sweep.value(k), converged, t, resolution, D, closed, n, out, dofs, seconds,
-                           factorizations + other_factorizations, continued, mode_change,
-                           codim2_value, codim2_t});
-            table.write(directory + "/sweep.csv");
-            if (curve)
-              table.write(directory + "/critical_curve.csv");
-            std::ostringstream line;
-            line << std::setprecision(6) << "  " << sweep.label() << " = " << sweep.value(k)
-                 << ": critical t = " << t << ", mismatch " << D << " (closed form " << closed
-                 << "), mode " << n << (out == 1 ? " out of plane" : out == 0 ? " planar" : "")
-                 << ", " << std::setprecision(3) << seconds << " s";
-            log(line.str());
-          }
-        log("output in " + directory + "/");
-        if (!refused.empty())
-          throw io::InputError("Parameter sweep", "Values", sweep.entry(), refused);
-      }
-    } // namespace
+    std::vector<double>
+    PlateRodProblem::critical_point_columns(const solvers::EventRecord &e) const
+    {
+      double      closed = NAN;
+      std::string text;
+      closed_forms(closed, text);
+      return {mismatch(e.event.lambda), closed};
+    }
 
     void
     run_plate_rod(ParameterHandler &prm, const io::RunOptions &options)
@@ -1863,7 +1608,21 @@ namespace cosmo
       io::ParameterSweep sweep;
       sweep.parse_parameters(prm);
       if (sweep.enabled())
-        return run_study(prm, options, sweep);
+        {
+          solvers::CriticalPointStudy study;
+          study.application     = "plate_rod";
+          study.mode_columns    = {"mode_number", "mode_out_of_plane"};
+          study.further_columns = {"mismatch_critical", "closed_form_mismatch"};
+          study.describe_mode   = [](const std::vector<double> &c) {
+            std::ostringstream m;
+            m << "n = " << c[0] << (c[1] == 1 ? " out of plane" : c[1] == 0 ? " planar" : "");
+            return m.str();
+          };
+          study.make_run = [](ParameterHandler &p) {
+            return std::make_unique<solvers::CriticalPointRunOf<PlateRodProblem>>(p);
+          };
+          return solvers::run_critical_point_study(prm, options, sweep, study);
+        }
       PlateRodProblem problem;
       problem.parse_parameters(prm);
       problem.run(options, prm);

@@ -19,6 +19,7 @@
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/materials/rod_law.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/solvers/sparse_direct.h>
 
 #include <memory>
@@ -196,6 +197,18 @@ namespace cosmo
       /// out-of-plane part dominates.
       std::pair<unsigned int, bool>
       classify_mode(const Vector<double> &mode) const;
+      /// The study's mode columns (critical_point_study.h): mode_number, mode_out_of_plane.
+      std::vector<double>
+      classify_critical_mode(const Vector<double> &mode) const;
+      /// The study's further columns: mismatch_critical, closed_form_mismatch.
+      std::vector<double>
+      critical_point_columns(const solvers::EventRecord &e) const;
+      /// The located events with state and mode (a study's critical points).
+      const std::vector<solvers::EventRecord> &
+      event_records() const
+      {
+        return located_events;
+      }
 
     private:
       // Parameters
@@ -223,15 +236,10 @@ namespace cosmo
        * this guess (the next point of a critical curve) and reports it as
        * the first event. The guess must have this problem's DoFs.
        */
-      struct CriticalGuess
-      {
-        Vector<double> U, mode;
-        double         t = 0;
-      };
       void
-      start_from_critical_point(const CriticalGuess &g)
+      start_from_critical_point(const solvers::CriticalGuess &g)
       {
-        critical_guess = std::make_unique<CriticalGuess>(g);
+        critical_guess = std::make_unique<solvers::CriticalGuess>(g);
       }
 
       /// Full disc: (v + S v)/2 with S the reflection y -> -y (sector: false).
@@ -239,7 +247,7 @@ namespace cosmo
       project_to_fixed_point_space(Vector<double> &v) const override;
 
     private:
-      std::unique_ptr<CriticalGuess> critical_guess;
+      std::unique_ptr<solvers::CriticalGuess> critical_guess;
       /// Full disc: the DoF each DoF maps to under y -> -y, and the sign.
       std::vector<std::pair<types::global_dof_index, double>> reflection;
       void

@@ -225,23 +225,33 @@ namespace cosmo
       // input, rather than as a nonlinear failure somewhere on the path.
       const double t_saved = load_parameter;
       load_parameter       = 1.;
-      growth_cached_for    = -1;
-      update_growth_cache();
+      growth_cached_for    = std::numeric_limits<double>::quiet_NaN();
+      update_growth_cache(true);
       load_parameter    = t_saved;
-      growth_cached_for = -1;
+      growth_cached_for = std::numeric_limits<double>::quiet_NaN();
 
       solution.reinit(n_unknowns());
       const auto ref = kinematics::RodStrains::reference().as_array();
       for (unsigned int k = 0; k < n_strains; ++k)
         solution[n_u() + n_gauge + k] = ref[k];
-      growth_cached_for = -1;
+      growth_cached_for = std::numeric_limits<double>::quiet_NaN();
     }
 
-    void
-    CrossSectionProblem::update_growth_cache()
+    bool
+    CrossSectionProblem::update_growth_cache(const bool throw_if_inadmissible)
     {
       if (growth_cached_for == load_parameter)
-        return;
+        return true;
+      // Outside [0, 1] (a trial load of Newton on an augmented system) the
+      // ramp may leave det Fg > 0: an inadmissible state there, bad input
+      // only if it happens at t = 1 (checked at setup).
+      const auto refuse = [&](const std::string &section, const std::string &entry,
+                              const std::string &value, const std::string &why) {
+        growth_cached_for = std::numeric_limits<double>::quiet_NaN();
+        if (throw_if_inadmissible)
+          throw io::InputError(section, entry, value, why);
+        return false;
+      };
       const QGauss<2> quadrature(degree + 1);
       FEValues<2>     fev(*mapping, *fe, quadrature, update_quadrature_points);
       growth_at_qp.resize(triangulation.n_active_cells() * quadrature.size());
@@ -254,7 +264,7 @@ namespace cosmo
               const Tensor<2, 3> Fg =
                 material.growth.value(fev.quadrature_point(q), load_parameter);
               if (!(determinant(Fg) > 0))
-                throw io::InputError(
+                return refuse(
                   material.section, "Growth factor", material.growth.factor_expression(),
                   "det Fg = " + std::to_string(determinant(Fg)) + " <= 0 at (" +
                     std::to_string(fev.quadrature_point(q)[0]) + ", " +
@@ -278,7 +288,7 @@ namespace cosmo
               const Point<2> &X = ffv.quadrature_point(q);
               const auto      g = layer.growth(X, load_parameter);
               if (!(g[0] > 0 && g[1] > 0))
-                throw io::InputError(
+                return refuse(
                   layer.section, "Growth factor", layer.growth_text,
                   "surface growth (gT, g3) = (" + std::to_string(g[0]) + ", " +
                     std::to_string(g[1]) + ") at boundary point (" + std::to_string(X[0]) +
@@ -287,6 +297,7 @@ namespace cosmo
             }
         }
       growth_cached_for = load_parameter;
+      return true;
     }
 
     void
@@ -407,7 +418,8 @@ namespace cosmo
                                         FullMatrix<double> &         E,
                                         FieldIntegrals &             results)
     {
-      update_growth_cache();
+      if (!update_growth_cache())
+        return 1; // growth inadmissible at this trial load
       const Tensor<1, 3> nu({e[0], e[1], e[2]});
       const Tensor<1, 3> kappa({e[3], e[4], e[5]});
       const Tensor<2, 3> Kx = kinematics::skew(kappa);
@@ -721,9 +733,8 @@ namespace cosmo
     {
       if (arclength_settings.enabled)
         {
-          solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-          driver.progress = [this](const std::string &s) { say(s); };
-          driver.run(*this, solution, 0.);
+          follow_path(arclength_settings, newton_settings, solution,
+                      [this](const std::string &s) { say(s); });
           return last_state;
         }
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
@@ -1266,6 +1277,31 @@ namespace cosmo
           problem.parse_parameters(prm);
           problem.run(options, prm);
           return;
+        }
+      // A study of the first critical point of each value's path (arclength
+      // continuation stopping at its first event), or a critical curve.
+      prm.enter_subsection("Arclength continuation");
+      const bool first_event = prm.get_bool("Stop at first event");
+      prm.leave_subsection();
+      prm.enter_subsection("Path following");
+      const std::string method = prm.get("Method");
+      prm.leave_subsection();
+      if (first_event || sweep.critical_curve())
+        {
+          if (method != "arclength")
+            throw io::InputError("Path following", "Method", method,
+                                 "arclength in a study of critical points (Parameter sweep / "
+                                 "Critical curve, or Arclength continuation / Stop at first "
+                                 "event)");
+          io::ParameterSweep::set_entry(prm, "Arclength continuation/Stop at first event", "true",
+                                        "Arclength continuation", "Stop at first event");
+          solvers::CriticalPointStudy study;
+          study.application     = "rod_cross_section";
+          study.further_columns = assembly::ReducedRodProblem::critical_point_column_names();
+          study.make_run        = [](ParameterHandler &p) {
+            return std::make_unique<solvers::CriticalPointRunOf<CrossSectionProblem>>(p);
+          };
+          return solvers::run_critical_point_study(prm, options, sweep, study);
         }
 
       prm.enter_subsection("Output");

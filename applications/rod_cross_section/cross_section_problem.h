@@ -19,6 +19,7 @@
 #include <cosmo/solvers/continuation.h>
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -123,7 +124,7 @@ namespace cosmo
       geometry::SectionProperties             section_properties;
       Vector<double>                          solution;
       std::vector<Tensor<2, 3>>               growth_at_qp; // per cell and quadrature point
-      double                                  growth_cached_for = -1;
+      double                                  growth_cached_for = std::numeric_limits<double>::quiet_NaN();
 
       /// A boundary face carrying a surface layer.
       struct SurfaceFace
@@ -149,8 +150,10 @@ namespace cosmo
       {
         return dof_handler.n_dofs();
       }
-      void
-      update_growth_cache();
+      /// Growth at the quadrature points at the current load; false (or, if
+      /// asked, io::InputError) where det Fg or a surface factor is not positive.
+      bool
+      update_growth_cache(bool throw_if_inadmissible = false);
       /// The faces of every surface layer (after the mesh and DoFs exist).
       void
       setup_surface_faces();

@@ -13,6 +13,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
+#include <cosmo/io/parameter_sweep.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/rotation.h>
 #include <cosmo/kinematics/strip.h>
@@ -73,6 +74,7 @@ namespace cosmo
       solvers::ContinuationSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
       assembly::ConstitutiveTable::declare_parameters(prm);
+      io::ParameterSweep::declare_parameters(prm);
       prm.enter_subsection("Output");
       prm.declare_entry("Output directory", "output/strip", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, "
@@ -519,6 +521,14 @@ namespace cosmo
       return square > 0 ? cross / square : NAN;
     }
 
+    std::vector<double>
+    StripProblem::classify_critical_mode(const Vector<double> &mode) const
+    {
+      // +1 symmetric, -1 antisymmetric about the centre line, 0 mixed
+      const double p = mode_parity(mode);
+      return {p > 0.5 ? 1. : p < -0.5 ? -1. : std::isfinite(p) ? 0. : NAN};
+    }
+
     std::string
     StripProblem::symmetry_name(const double parity)
     {
@@ -663,7 +673,8 @@ namespace cosmo
               write_output = true;
             }
           else if (arclength_settings.enabled)
-            follow_branches();
+            follow_path(arclength_settings, newton_settings, solution,
+                        [this](const std::string &s) { say(s); });
           else
             solve();
         }
@@ -703,9 +714,37 @@ namespace cosmo
     void
     run_strip(ParameterHandler &prm, const io::RunOptions &options)
     {
-      StripProblem problem;
-      problem.parse_parameters(prm);
-      problem.run(options, prm);
+      io::ParameterSweep sweep;
+      sweep.parse_parameters(prm);
+      if (!sweep.enabled())
+        {
+          StripProblem problem;
+          problem.parse_parameters(prm);
+          problem.run(options, prm);
+          return;
+        }
+      // A study of the critical point: each run ends at its first event.
+      prm.enter_subsection("Path following");
+      const std::string method = prm.get("Method");
+      prm.leave_subsection();
+      if (method != "arclength")
+        throw io::InputError("Path following", "Method", method,
+                             "arclength in a study (section Parameter sweep): a study of the strip "
+                             "locates the first critical point of each value's path");
+      io::ParameterSweep::set_entry(prm, "Arclength continuation/Stop at first event", "true",
+                                    "Arclength continuation", "Stop at first event");
+      solvers::CriticalPointStudy study;
+      study.application     = "strip";
+      study.mode_columns    = {"mode_symmetry"};
+      study.further_columns = assembly::ReducedRodProblem::critical_point_column_names();
+      study.describe_mode   = [](const std::vector<double> &c) {
+        return c[0] > 0 ? std::string("symmetric") :
+               c[0] < 0 ? std::string("antisymmetric") : std::string("mixed");
+      };
+      study.make_run = [](ParameterHandler &p) {
+        return std::make_unique<solvers::CriticalPointRunOf<StripProblem>>(p);
+      };
+      solvers::run_critical_point_study(prm, options, sweep, study);
     }
   } // namespace strip
 } // namespace cosmo

@@ -96,6 +96,9 @@ namespace cosmo
        */
       double
       mode_parity(const Vector<double> &mode) const;
+      /// The study's mode column mode_symmetry: +1 symmetric, -1 antisymmetric, 0 mixed.
+      std::vector<double>
+      classify_critical_mode(const Vector<double> &mode) const override;
       /// "symmetric" (parity > 1/2), "antisymmetric" (< -1/2) or "mixed".
       static std::string
       symmetry_name(double parity);

@@ -280,10 +280,55 @@ namespace cosmo
     }
 
     void
-    ReducedRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *)
+    ReducedRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
     {
       located_events.push_back(e);
       strains_at_events.push_back(strains_of(U));
+      solvers::EventRecord r;
+      r.event = e;
+      r.state.assign(U.begin(), U.end());
+      if (mode)
+        r.mode.assign(mode->begin(), mode->end());
+      records.push_back(std::move(r));
+    }
+
+    std::vector<double>
+    ReducedRodProblem::critical_point_columns(const solvers::EventRecord &e) const
+    {
+      const auto strains = strains_of(Vector<double>(e.state.begin(), e.state.end()));
+      return std::vector<double>(strains.begin(), strains.end());
+    }
+
+    std::vector<std::string>
+    ReducedRodProblem::critical_point_column_names()
+    {
+      std::vector<std::string> names;
+      for (const auto &s : kinematics::strain_names)
+        names.push_back(s + "_critical");
+      return names;
+    }
+
+    void
+    ReducedRodProblem::follow_path(const solvers::ArclengthSettings &               arclength,
+                                   const solvers::NewtonSettings &                  newton,
+                                   Vector<double> &                                 U,
+                                   const std::function<void(const std::string &)> &progress)
+    {
+      solvers::ArclengthContinuation driver(arclength, newton);
+      driver.progress = progress;
+      if (!critical_guess)
+        {
+          driver.run(*this, U, 0.);
+          return;
+        }
+      const auto record = solvers::locate_continued_critical_point(driver, *this, *critical_guess, newton);
+      U = Vector<double>(record.state.begin(), record.state.end());
+      solvers::StepReport report;
+      report.t          = record.event.lambda;
+      report.n_negative = record.event.n_negative_after;
+      report.final      = true;
+      set_load_parameter(report.t);
+      converged_step(U, report);
     }
 
     int

@@ -30,6 +30,18 @@ namespace cosmo
                         "The text the entry is set to, with '{}' standing for the "
                         "value, e.g. '1 + {}*x' to sweep the magnitude of a growth law. "
                         "Empty: the value itself.");
+      prm.declare_entry("Critical curve", "false", Patterns::Bool(),
+                        "In a study of critical points (plate_rod, strip, and rod_cross_section "
+                        "with 'Arclength continuation / Stop at first event'): from the second "
+                        "value on, continue the critical point of the previous values "
+                        "(extrapolated through up to three of them in the swept value, then "
+                        "Newton on the augmented system; no path from the start) instead of an "
+                        "independent run. A point where that fails, or where another mode has "
+                        "become critical first, is run independently (said in the log; column "
+                        "'continued' = 0); where the critical mode changes, the new mode is "
+                        "continued back to the previous value and the codimension-2 point "
+                        "estimated (columns codim2_value, codim2_t). Writes critical_curve.csv "
+                        "(the columns of sweep.csv, which is written too).");
       prm.leave_subsection();
     }
 
@@ -71,6 +83,7 @@ namespace cosmo
       prm.enter_subsection("Parameter sweep");
       entry_path    = Utilities::trim(prm.get("Entry"));
       template_text = prm.get("Template");
+      curve         = prm.get_bool("Critical curve");
       const std::string values_text = prm.get("Values");
       values = Utilities::string_to_double(Utilities::split_string_list(values_text, ','));
       if (values.empty())

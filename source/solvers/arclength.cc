@@ -151,6 +151,10 @@ namespace cosmo
                         "same lambda (to 1e-6 of their distance from the branch point: the "
                         "two halves of a symmetric pitchfork, images of each other under the "
                         "problem's symmetry), follow only +phi and say so; true follows both.");
+      prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
+                        "End the run at the first located fold or branch point (the "
+                        "critical point of the first branch): what a study of critical "
+                        "points (section Parameter sweep) needs of each run.");
       prm.leave_subsection();
     }
 
@@ -180,6 +184,7 @@ namespace cosmo
       maximum_branches = prm.get_integer("Maximum number of branches");
       maximum_depth    = prm.get_integer("Maximum branch depth");
       follow_mirror_images = prm.get_bool("Follow mirror images");
+      stop_at_first_event  = prm.get_bool("Stop at first event");
       if (!(lambda_min < lambda_max))
         throw io::InputError("Arclength continuation", "Parameter range",
                              prm.get("Parameter range"), "min < max");
@@ -191,6 +196,10 @@ namespace cosmo
 
     namespace
     {
+      /// Thrown after the first located event when the run is to stop there.
+      struct FirstEventLocated
+      {};
+
       /**
        * The augmented system [R(U, lambda); theta (m o dU).(U - Up) +
        * dl (lambda - lp)] in the unknowns [U; lambda], solved by bordering
@@ -748,6 +757,8 @@ namespace cosmo
                 switches.push_back(start);
               }
           events.push_back(record);
+          if (settings.stop_at_first_event)
+            throw FirstEventLocated();
           if (sigma_hi >= ds || hi.n_negative == next.n_negative || bisection_failed)
             break; // the last crossing of this step (or the bracket did not shrink)
           sigma_from = sigma_hi;
@@ -902,8 +913,16 @@ namespace cosmo
 
       std::vector<EventRecord> events;
       std::vector<State>       switches; // grows while branches are followed
-      follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
-             switches, step);
+      try
+        {
+          follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
+                 switches, step);
+        }
+      catch (FirstEventLocated &)
+        {
+          say("  stopped at the first event ('Stop at first event')");
+          return events;
+        }
 
       unsigned int branch = 1;
       // The first point of the +phi branch of each branch point switched at

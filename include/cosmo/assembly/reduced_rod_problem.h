@@ -9,6 +9,7 @@
 #include <cosmo/assembly/bordered_system.h>
 #include <cosmo/io/output.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/critical_point_study.h>
 
 #include <array>
 #include <memory>
@@ -123,6 +124,37 @@ namespace cosmo
       {
         return located_events;
       }
+      /// The events with the state and mode at each (a study's critical points).
+      const std::vector<solvers::EventRecord> &
+      event_records() const
+      {
+        return records;
+      }
+      /**
+       * A critical point to start from: follow_path() then locates it by
+       * Newton on the augmented system from this guess (the next point of a
+       * critical curve) instead of following the path from t = 0.
+       */
+      void
+      start_from_critical_point(const solvers::CriticalGuess &g)
+      {
+        critical_guess = std::make_unique<solvers::CriticalGuess>(g);
+      }
+      /**
+       * A study's classification of a critical mode (the values of its mode
+       * columns, critical_point_study.h); none by default.
+       */
+      virtual std::vector<double>
+      classify_critical_mode(const Vector<double> &) const
+      {
+        return {};
+      }
+      /// A study's further columns at a critical point: the six strains there.
+      std::vector<double>
+      critical_point_columns(const solvers::EventRecord &e) const;
+      /// Their names: nu1_critical, ..., kappa3_critical.
+      static std::vector<std::string>
+      critical_point_column_names();
       /// Records the event (derived classes may add output and call this).
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
@@ -235,6 +267,18 @@ namespace cosmo
                            const ReducedRodState &                           s,
                            const std::function<void(unsigned int, io::JSON &)> &event_extra = {}) const;
 
+      /**
+       * Arclength continuation from U at t = 0 (every converged state and
+       * event reported through converged_step() and located_event()), or,
+       * after start_from_critical_point(), the critical point located from
+       * the guess and reported as the path's only state and event
+       * (io::RunFailure if that fails). U ends at the last state.
+       */
+      void
+      follow_path(const solvers::ArclengthSettings &arclength,
+                  const solvers::NewtonSettings &   newton,
+                  Vector<double> &                  U,
+                  const std::function<void(const std::string &)> &progress);
       /// Append a converged state to path().
       void
       record_state(const solvers::StepReport &report, const ReducedRodState &s)
@@ -262,6 +306,8 @@ namespace cosmo
       std::vector<PathPoint>             visited;
       std::vector<Event>                 located_events;
       std::vector<std::array<double, 6>> strains_at_events;
+      std::vector<solvers::EventRecord>  records;
+      std::unique_ptr<solvers::CriticalGuess> critical_guess;
       /// The state at which the system was last assembled and factorized
       /// (condensed_state() reuses that factorization when asked at it).
       Vector<double> factorized_at;

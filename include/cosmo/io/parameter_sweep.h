@@ -77,7 +77,15 @@ namespace cosmo
       set_entry(ParameterHandler &prm, const std::string &path, const std::string &value,
                 const std::string &section, const std::string &entry);
 
+      /// 'Critical curve': continue the critical point from value to value.
+      bool
+      critical_curve() const
+      {
+        return curve;
+      }
+
     private:
+      bool                curve = false;
       std::string         entry_path;
       std::string         template_text;
       std::vector<double> values;

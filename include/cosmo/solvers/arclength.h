@@ -219,6 +219,9 @@ namespace cosmo
       unsigned int maximum_branches   = 4;
       unsigned int maximum_depth      = 1;     ///< switch on branches of depth < this
       bool         follow_mirror_images = false; ///< follow -phi when it mirrors +phi
+      /// End the run at the first located event ("Stop at first event"):
+      /// what a study of critical points needs of each run.
+      bool         stop_at_first_event = false;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,323 @@
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/config.h>
+#include <cosmo/io/output.h>
+#include <cosmo/solvers/critical_curve.h>
+#include <cosmo/solvers/critical_point_study.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    EventRecord
+    locate_continued_critical_point(ArclengthContinuation &driver,
+                                    BifurcationProblem &   problem,
+                                    const CriticalGuess &  g,
+                                    const NewtonSettings & newton)
+    {
+      if (g.U.size() != problem.n_unknowns())
+        throw io::RunFailure("the critical point to start from has " + std::to_string(g.U.size()) +
+                             " unknowns, this problem " + std::to_string(problem.n_unknowns()));
+      Vector<double> U = g.U;
+      if (g.equilibrate)
+        try
+          {
+            problem.set_load_parameter(g.t);
+            newton_solve(problem, U, newton);
+          }
+        catch (NewtonFailure &e)
+          {
+            throw io::RunFailure(std::string("the guess does not converge at its load: ") +
+                                 e.what());
+          }
+      const auto record = driver.locate_from(problem, U, g.t, g.fold, g.mode, 1e-10);
+      if (!record.event.located_by_newton)
+        throw io::RunFailure(record.event.message);
+      // Another negative eigenvalue than the critical one: a mode that
+      // became critical below this one.
+      if (other_negative_modes(record.event) > 0)
+        {
+          std::ostringstream m;
+          m << "another mode is critical below the continued critical point ("
+            << record.event.n_negative_after
+            << " negative eigenvalues there, the critical one's eigenvalue " << std::setprecision(3)
+            << record.event.eigenvalue << "): the critical mode changed";
+          throw io::RunFailure(m.str());
+        }
+      return record;
+    }
+
+    namespace
+    {
+      /// The study's critical point of a run: its first event on branch 0.
+      const EventRecord *
+      first_critical_point(const std::vector<EventRecord> &events)
+      {
+        for (const auto &e : events)
+          if (e.event.branch == 0)
+            return &e;
+        return nullptr;
+      }
+
+      Vector<double>
+      as_vector(const std::vector<double> &v)
+      {
+        return Vector<double>(v.begin(), v.end());
+      }
+
+      /// A point's run writes into `directory`; its parameters.prm reproduces it alone.
+      void
+      prepare_point(ParameterHandler &        prm,
+                    const io::ParameterSweep &sweep,
+                    const unsigned int        k,
+                    const std::string &       directory)
+      {
+        sweep.apply(prm, k);
+        io::ParameterSweep::set_entry(prm, "Output/Output directory", directory, "Output",
+                                      "Output directory");
+        io::ParameterSweep::set_entry(prm, "Parameter sweep/Entry", "", "Parameter sweep", "Entry");
+      }
+
+      /// The critical load of the new mode continued back to an earlier value.
+      struct ContinuedBack
+      {
+        double       t              = NAN;
+        unsigned int factorizations = 0;
+        std::string  message;
+      };
+
+      ContinuedBack
+      continue_back(ParameterHandler &        prm,
+                    const io::ParameterSweep &sweep,
+                    const unsigned int        k,
+                    const std::string &       directory,
+                    const CriticalGuess &     g,
+                    const io::RunOptions &    options,
+                    const CriticalPointStudy &study)
+      {
+        prepare_point(prm, sweep, k, directory);
+        auto run = study.make_run(prm);
+        run->start_from_critical_point(g);
+        ContinuedBack back;
+        try
+          {
+            run->run(options, prm);
+          }
+        catch (io::RunFailure &e)
+          {
+            back.message = e.what(); // (expected: the other mode is critical first there)
+          }
+        back.factorizations = run->factorizations();
+        for (const auto &x : run->located_events())
+          if (x.event.located_by_newton)
+            back.t = x.event.lambda;
+        return back;
+      }
+    } // namespace
+
+    void
+    run_critical_point_study(ParameterHandler &        prm,
+                             const io::RunOptions &    options,
+                             const io::ParameterSweep &sweep,
+                             const CriticalPointStudy &study)
+    {
+      prm.enter_subsection("Output");
+      const std::string directory = prm.get("Output directory");
+      prm.leave_subsection();
+      const auto log_file = io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt");
+      auto &     log      = *log_file;
+      const bool curve    = sweep.critical_curve();
+      log(study.application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
+          ", " + (curve ? "critical curve" : "study") + " of '" + sweep.entry() + "' over " +
+          std::to_string(sweep.size()) + " values");
+      io::CSVTable table;
+      table.add_column("value", sweep.axis_label());
+      for (const auto &c : {"converged", "t_critical", "t_resolution"})
+        table.add_column(c);
+      for (const auto &c : study.further_columns)
+        table.add_column(c);
+      for (const auto &c : study.mode_columns)
+        table.add_column(c);
+      for (const auto &c : {"dofs", "seconds", "factorizations", "continued", "mode_change",
+                            "codim2_value", "codim2_t"})
+        table.add_column(c);
+      const std::size_t n_mode = study.mode_columns.size();
+      const std::size_t n_more = study.further_columns.size();
+
+      // The critical points continued so far (critical curve), and the last
+      // value's with a located critical point (mode changes).
+      CriticalCurvePredictor predictor;
+      struct Previous
+      {
+        unsigned int        k     = 0;
+        double              value = NAN, t = NAN;
+        std::vector<double> mode_class;
+        std::size_t         n_unknowns = 0;
+      } previous;
+      io::RunOptions quiet = options;
+      quiet.quiet          = true; // each point's log.txt has the details
+      std::string  refused;
+      unsigned int n_without = 0; // points without a located critical point
+      for (unsigned int k = 0; k < sweep.size(); ++k)
+        {
+          const auto        start = std::chrono::steady_clock::now();
+          const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
+          double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,
+                 continued = 0, mode_change = 0, codim2_value = NAN, codim2_t = NAN;
+          std::vector<double> mode_class(n_mode, NAN), further(n_more, NAN);
+          // The previous mode's critical point continued to this value where
+          // another mode has become critical first (t there).
+          double      previous_mode_t = NAN;
+          std::string failure;
+          try
+            {
+              prepare_point(prm, sweep, k, point);
+              auto         run = study.make_run(prm);
+              CriticalGuess g;
+              unsigned int  order = 0;
+              if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode, &order))
+                {
+                  g.equilibrate = order == 1;
+                  run->start_from_critical_point(g);
+                  try
+                    {
+                      run->run(quiet, prm);
+                      converged = 1;
+                      continued = 1;
+                    }
+                  catch (io::RunFailure &e)
+                    {
+                      log("  point " + std::to_string(k) +
+                          ": continuing the critical point failed (" + e.what() +
+                          "); an independent run instead");
+                      for (const auto &x : run->located_events())
+                        if (x.event.located_by_newton && other_negative_modes(x.event) > 0)
+                          previous_mode_t = x.event.lambda;
+                      factorizations += run->factorizations();
+                      run = study.make_run(prm);
+                    }
+                }
+              if (continued == 0)
+                try
+                  {
+                    run->run(quiet, prm);
+                    converged = 1;
+                  }
+                catch (io::RunFailure &e)
+                  {
+                    failure = e.what();
+                  }
+              dofs = run->n_dofs();
+              factorizations += run->factorizations();
+              const auto events = run->located_events();
+              if (const EventRecord *e = first_critical_point(events))
+                {
+                  t          = e->event.lambda;
+                  resolution = event_resolution(e->event);
+                  further    = run->further_columns(*e);
+                  if (!e->mode.empty())
+                    mode_class = run->classify_mode(as_vector(e->mode));
+                  AssertThrow(further.size() == n_more && mode_class.size() == n_mode,
+                              ExcMessage("the run's study columns differ from the study's"));
+                  // A new critical mode: the previous curve ends (a
+                  // codimension-2 point lies between the two values).
+                  const bool classified =
+                    n_mode > 0 && std::isfinite(mode_class[0]) && !previous.mode_class.empty() &&
+                    std::isfinite(previous.mode_class[0]);
+                  if (classified && mode_class != previous.mode_class)
+                    {
+                      mode_change = 1;
+                      predictor.clear();
+                    }
+                  if (curve && converged == 1 && e->event.located_by_newton)
+                    predictor.add(sweep.value(k), t, as_vector(e->state), as_vector(e->mode));
+                  if (mode_change == 1)
+                    {
+                      std::ostringstream m;
+                      m << std::setprecision(6) << "  the critical mode changes from "
+                        << study.describe_mode(previous.mode_class) << " to "
+                        << study.describe_mode(mode_class) << " between " << sweep.label()
+                        << " = " << previous.value << " and " << sweep.value(k);
+                      std::string why = "the old mode was not continued to this value";
+                      if (curve && std::isfinite(previous_mode_t) &&
+                          previous.n_unknowns == e->state.size())
+                        {
+                          // Where the two critical curves cross: the new mode
+                          // continued back to the previous value (a few
+                          // factorizations), the secants intersected.
+                          CriticalGuess back_guess;
+                          back_guess.U    = as_vector(e->state);
+                          back_guess.mode = as_vector(e->mode);
+                          back_guess.t    = t;
+                          back_guess.fold = e->event.kind == BifurcationProblem::Event::Kind::fold;
+                          const auto back = continue_back(prm, sweep, previous.k, point + "/back",
+                                                          back_guess, quiet, study);
+                          factorizations += back.factorizations;
+                          why = std::isfinite(back.t) ?
+                                  "the secants do not cross between the values" :
+                                  "continuing the new mode back failed: " + back.message;
+                          if (std::isfinite(back.t) &&
+                              codimension_two_estimate(previous.value, previous.t, back.t,
+                                                       sweep.value(k), previous_mode_t, t,
+                                                       codim2_value, codim2_t))
+                            why.clear();
+                        }
+                      if (why.empty())
+                        m << ": codimension-2 point near " << sweep.label() << " = "
+                          << codim2_value << ", t = " << codim2_t
+                          << " (the two critical curves' secants crossed)";
+                      else
+                        m << "; no codimension-2 estimate (" << why << ")";
+                      log(m.str());
+                    }
+                  previous = {k, sweep.value(k), t, mode_class, e->state.size()};
+                }
+              else if (converged == 1)
+                failure = "no critical point on the first branch";
+            }
+          catch (io::InputError &e)
+            {
+              refused += std::string(refused.empty() ? "" : "; ") + e.what();
+              failure = std::string("refused: ") + e.what();
+            }
+          if (!std::isfinite(t))
+            ++n_without;
+          const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          std::vector<double> row = {sweep.value(k), converged, t, resolution};
+          row.insert(row.end(), further.begin(), further.end());
+          row.insert(row.end(), mode_class.begin(), mode_class.end());
+          row.insert(row.end(), {dofs, seconds, factorizations, continued, mode_change,
+                                 codim2_value, codim2_t});
+          table.add_row(row);
+          // Rewritten after every point: a killed study leaves a complete table.
+          table.write(directory + "/sweep.csv");
+          if (curve)
+            table.write(directory + "/critical_curve.csv");
+          std::ostringstream line;
+          line << std::setprecision(10) << "  " << sweep.label() << " = " << sweep.value(k)
+               << ": critical t = " << t << std::setprecision(3);
+          if (std::isfinite(t))
+            line << " (resolution " << resolution << "), mode "
+                 << (n_mode > 0 ? study.describe_mode(mode_class) : std::string("-"));
+          line << ", " << factorizations << " factorizations"
+               << (continued == 1 ? " (continued)" : "") << ", " << seconds << " s";
+          if (!failure.empty())
+            line << "; " << failure;
+          log(line.str());
+        }
+      log("output in " + directory + "/");
+      if (!refused.empty())
+        throw io::InputError("Parameter sweep", "Values", sweep.entry(), refused);
+      if (n_without > 0)
+        throw io::RunFailure(std::to_string(n_without) + " of " + std::to_string(sweep.size()) +
+                             " values have no located critical point (see " + directory +
+                             "/sweep-log.txt)");
+    }
+  } // namespace solvers
+} // namespace cosmo
