@@ -9,22 +9,35 @@
 # as a critical curve. Prints DoFs, factorizations and seconds of each and
 # their ratios, and the largest relative difference of t_critical.
 #
-# usage: benchmarks/critical_curve.sh [build dir = build] [refinements = 3] [values = 16] [scratch = /tmp/cosmo_critical_curve]
+# With APP=strip: parameter_files/strip/studies/critical_twist_vs_thickness.prm
+# (critical twist of the strip against h/w, log-spaced over 0.005 .. 0.04),
+# "refinements" then being the number of cells across the width.
+#
+# usage: [APP=strip] benchmarks/critical_curve.sh [build dir = build] [refinements = 3 | 40] [values = 16] [scratch = /tmp/cosmo_critical_curve]
 set -euo pipefail
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build=$(realpath "${1:-$REPO/build}") refinements=${2:-3} n=${3:-16}
+app=${APP:-plate_rod}
+case $app in
+  plate_rod)
+    prm=parameter_files/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat.prm
+    mesh_entry="Global refinements" from=-9 to=-4 default_refinements=3 ;;
+  strip)
+    prm=parameter_files/strip/studies/critical_twist_vs_thickness.prm
+    mesh_entry="Number of cells" from=-2.30103 to=-1.39794 default_refinements=40 ;;
+  *) echo "APP must be plate_rod or strip" >&2; exit 1 ;;
+esac
+build=$(realpath "${1:-$REPO/build}") refinements=${2:-$default_refinements} n=${3:-16}
 dir=$(realpath -m "${4:-/tmp/cosmo_critical_curve}")
 rm -rf "$dir" && mkdir -p "$dir"
-values=$(python3 -c "n=$n; print(', '.join('%.6g' % (10 ** (-9 + 5 * k / (n - 1))) for k in range(n)))")
+values=$(python3 -c "n=$n; print(', '.join('%.6g' % (10 ** ($from + ($to - $from) * k / (n - 1))) for k in range(n)))")
 for name in independent curve; do
   curve=$([[ $name = curve ]] && echo true || echo false)
   sed -e "s|^\( *set Output directory *=\).*|\1 $dir/$name|" \
-      -e "s|^\( *set Global refinements *=\).*|\1 $refinements|" \
+      -e "s|^\( *set $mesh_entry *=\).*|\1 $refinements|" \
       -e "s|^\( *set Values *=\).*|\1 $values|" \
       -e "s|^\( *set Critical curve *=\).*|\1 $curve|" \
-      "$REPO/parameter_files/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat.prm" \
-      > "$dir/$name.prm"
-  python3 - "$build/plate_rod" "$dir/$name" <<'PY'
+      "$REPO/$prm" > "$dir/$name.prm"
+  python3 - "$build/$app" "$dir/$name" <<'PY'
 import subprocess, sys, time
 start = time.time()
 with open(sys.argv[2] + ".log", "w") as log:

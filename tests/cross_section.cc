@@ -722,6 +722,26 @@ namespace
     check_close(".geo: max off-diagonal / EA", off_diagonal_max(Kg) / Kg(2, 2), 0, 0, 1e-5);
     check_symmetric_positive(Kg, ".geo rectangle");
   }
+  // resolve() after a run along 'Path' waypoints goes to the strains it is
+  // (prescribed strain rows are linear: Newton meets them to round-off, ~eps,
+  // so 1e-14 absolute on strains of order 1 is 50x the resolution)
+  // given, not to the path's end (the waypoints must be cleared: a latent
+  // bug in which the requested strains were silently ignored).
+  void
+  resolve_after_path()
+  {
+    std::string strains = strains_block("prescribed strains", reference_strains);
+    strains.insert(strains.rfind("end\n"), " set Path = 0,0,1,0.05,0,0; 0,0,1,0.05,0,0.05\n");
+    auto p = make_problem(section(" set Shape = rectangle\n set Width = 1\n set Height = 0.5", 2) +
+                          material(1, "1", 1., 0.3) + strains);
+    const auto end = p->solve();
+    check_close("the path ends at its last waypoint: kappa3", end.strains[5], 0.05, 0, 1e-14);
+    const Strains requested = {0, 0, 1.01, 0.02, -0.01, 0.03};
+    const auto    s         = p->resolve(requested);
+    for (unsigned int k = 0; k < 6; ++k)
+      check_close("resolve goes to the requested " + kinematics::strain_names[k], s.strains[k],
+                  requested[k], 0, 1e-14);
+  }
 } // namespace
 
 int
@@ -746,7 +766,8 @@ main(int argc, char **argv)
     {"bilayer_natural_curvature", bilayer_natural_curvature},
     {"gmsh_section", gmsh_section},
     {"gmsh_geo_section", gmsh_geo_section},
-    {"arclength_linear_growth", arclength_linear_growth}};
+    {"arclength_linear_growth", arclength_linear_growth},
+    {"resolve_after_path", resolve_after_path}};
   if (argc == 3)
     data_directory = argv[2];
   return cosmo_test::run_case("test_cross_section", "[tests/data directory]", cases, argc, argv, 2, 3);

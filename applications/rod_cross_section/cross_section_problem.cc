@@ -721,7 +721,7 @@ namespace cosmo
     CrossSectionState
     CrossSectionProblem::resolve(const std::array<double, 6> &strains)
     {
-      target_strains = strains;
+      set_target_strains(strains); // (also clears 'Path' waypoints, which would win at t = 1)
       set_load_parameter(1.);
       solvers::newton_solve(*this, solution, newton_settings);
       last_state = current_state();
