@@ -723,10 +723,10 @@ namespace
     check_symmetric_positive(Kg, ".geo rectangle");
   }
   // resolve() after a run along 'Path' waypoints goes to the strains it is
-  // (prescribed strain rows are linear: Newton meets them to round-off, ~eps,
-  // so 1e-14 absolute on strains of order 1 is 50x the resolution)
   // given, not to the path's end (the waypoints must be cleared: a latent
-  // bug in which the requested strains were silently ignored).
+  // bug in which the requested strains were silently ignored). Prescribed
+  // strain rows are linear: Newton meets them to round-off, ~eps, so 1e-14
+  // absolute on strains of order 1 is 50x the resolution.
   void
   resolve_after_path()
   {
