@@ -44,10 +44,14 @@ def plot_critical_points(plt, sweep_dir, x, keep, units, failed):
     plot_steps.plot_panel(axes[0], x, keep, units, ["t_critical"], "(a) critical load t")
     plot_steps.plot_panel(axes[1], x, keep, units, varying or strains,
                           "(b) strains at the critical point")
+    suffix = " (critical curve)" if os.path.exists(os.path.join(sweep_dir, "critical_curve.csv")) else ""
+    return save(plt, fig, axes, units, sweep_dir, suffix, failed)
+
+
+def save(plt, fig, axes, units, sweep_dir, suffix, failed):
+    """Label, title (the directory, suffix, failed points) and write sweep.png."""
     axes[1].set_xlabel(units.get("value") or "swept value")
-    title = os.path.basename(os.path.normpath(os.path.abspath(sweep_dir)))
-    if os.path.exists(os.path.join(sweep_dir, "critical_curve.csv")):
-        title += " (critical curve)"
+    title = os.path.basename(os.path.normpath(os.path.abspath(sweep_dir))) + suffix
     if failed:
         title += "  (%d point(s) did not converge)" % failed
     fig.suptitle(title, fontsize=11)
@@ -76,17 +80,7 @@ def plot_sweep(plt, sweep_dir):
                           "(a) strains at the final state")
     plot_steps.plot_panel(axes[1], x, keep, units, plot_steps.STIFFNESS,
                           "(b) diagonal stiffness", log_if_positive=True)
-    axes[1].set_xlabel(units.get("value") or "swept value")
-    title = os.path.basename(os.path.normpath(os.path.abspath(sweep_dir)))
-    failed = len(ok) - sum(ok)
-    if failed:
-        title += "  (%d point(s) did not converge)" % failed
-    fig.suptitle(title, fontsize=11)
-    fig.tight_layout(rect=(0, 0, 1, 0.97))
-    out = os.path.join(sweep_dir, "sweep.png")
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
-    return out, []
+    return save(plt, fig, axes, units, sweep_dir, "", len(ok) - sum(ok))
 
 
 def main(argv):

@@ -1610,7 +1610,8 @@ namespace cosmo
       if (sweep.enabled())
         {
           solvers::CriticalPointStudy study;
-          study.application     = "plate_rod";
+          study.application        = "plate_rod";
+          study.arclength_sections = false; // its own 'Growth path / Stop at first event'
           study.mode_columns    = {"mode_number", "mode_out_of_plane"};
           study.further_columns = {"mismatch_critical", "closed_form_mismatch"};
           study.describe_mode   = [](const std::vector<double> &c) {

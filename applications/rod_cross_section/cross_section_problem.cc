@@ -1283,18 +1283,8 @@ namespace cosmo
       prm.enter_subsection("Arclength continuation");
       const bool first_event = prm.get_bool("Stop at first event");
       prm.leave_subsection();
-      prm.enter_subsection("Path following");
-      const std::string method = prm.get("Method");
-      prm.leave_subsection();
       if (first_event || sweep.critical_curve())
         {
-          if (method != "arclength")
-            throw io::InputError("Path following", "Method", method,
-                                 "arclength in a study of critical points (Parameter sweep / "
-                                 "Critical curve, or Arclength continuation / Stop at first "
-                                 "event)");
-          io::ParameterSweep::set_entry(prm, "Arclength continuation/Stop at first event", "true",
-                                        "Arclength continuation", "Stop at first event");
           solvers::CriticalPointStudy study;
           study.application     = "rod_cross_section";
           study.further_columns = assembly::ReducedRodProblem::critical_point_column_names();

@@ -723,16 +723,7 @@ namespace cosmo
           problem.run(options, prm);
           return;
         }
-      // A study of the critical point: each run ends at its first event.
-      prm.enter_subsection("Path following");
-      const std::string method = prm.get("Method");
-      prm.leave_subsection();
-      if (method != "arclength")
-        throw io::InputError("Path following", "Method", method,
-                             "arclength in a study (section Parameter sweep): a study of the strip "
-                             "locates the first critical point of each value's path");
-      io::ParameterSweep::set_entry(prm, "Arclength continuation/Stop at first event", "true",
-                                    "Arclength continuation", "Stop at first event");
+      // A study of the strip is one of its first critical point.
       solvers::CriticalPointStudy study;
       study.application     = "strip";
       study.mode_columns    = {"mode_symmetry"};

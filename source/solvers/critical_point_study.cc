@@ -126,6 +126,20 @@ namespace cosmo
                              const io::ParameterSweep &sweep,
                              const CriticalPointStudy &study)
     {
+      if (study.arclength_sections)
+        {
+          // Each run ends at the first critical point of its path.
+          prm.enter_subsection("Path following");
+          const std::string method = prm.get("Method");
+          prm.leave_subsection();
+          if (method != "arclength")
+            throw io::InputError("Path following", "Method", method,
+                                 "arclength in a study of critical points (section Parameter "
+                                 "sweep): each value's path is followed to its first critical "
+                                 "point");
+          io::ParameterSweep::set_entry(prm, "Arclength continuation/Stop at first event", "true",
+                                        "Arclength continuation", "Stop at first event");
+        }
       prm.enter_subsection("Output");
       const std::string directory = prm.get("Output directory");
       prm.leave_subsection();

@@ -161,6 +161,13 @@ namespace cosmo
       std::vector<std::string> further_columns;
       /// The mode's classification in words, for the log.
       std::function<std::string(const std::vector<double> &)> describe_mode;
+      /**
+       * The runs follow their paths by the library's sections 'Path
+       * following' and 'Arclength continuation': the study requires Method =
+       * arclength and sets 'Stop at first event' (plate_rod, which has its
+       * own 'Growth path', does not).
+       */
+      bool arclength_sections = true;
       /// A run of the problem that prm describes (parsed; InputError if refused).
       std::function<std::unique_ptr<CriticalPointRun>(ParameterHandler &)> make_run;
     };
