@@ -267,7 +267,8 @@ namespace cosmo
                         "must be stable.");
       prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
                         "Stop where the first change of stability is located (critical "
-                        "growth only: studies, quick checks).");
+                        "growth only: studies, quick checks); the same as 'Arclength "
+                        "continuation / Stop at first event'.");
       prm.leave_subsection();
       io::ParameterSweep::declare_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
@@ -413,6 +414,10 @@ namespace cosmo
       newton_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
       arclength_settings.enabled = true; // the plate is always followed by arclength
+      // 'Growth path / Stop at first event' is the library's entry under the
+      // plate's name: either stops the first branch at its first event.
+      arclength_settings.stop_at_first_event =
+        arclength_settings.stop_at_first_event || stop_at_first_event;
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       prm.leave_subsection();
@@ -1020,18 +1025,6 @@ namespace cosmo
     std::vector<solvers::EventRecord>
     PlateRodProblem::follow_branches()
     {
-      if (stop_at_first_event)
-        try
-          {
-            solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-            driver.progress = [this](const std::string &s) { say(s); };
-            return driver.run(*this, solution, load_parameter);
-          }
-        catch (FirstEventLocated &)
-          {
-            say("  stopped at the first event ('Growth path / Stop at first event')");
-            return located_events;
-          }
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
       return driver.run(*this, solution, load_parameter);
@@ -1042,17 +1035,6 @@ namespace cosmo
     {
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
-      // located_event must not end the run here (restored however this ends)
-      const struct Restore
-      {
-        bool &flag;
-        bool  value;
-        ~Restore()
-        {
-          flag = value;
-        }
-      } restore{stop_at_first_event, stop_at_first_event};
-      stop_at_first_event = false;
       const auto record = solvers::locate_continued_critical_point(driver, *this, *critical_guess,
                                                                   newton_settings);
       solution = Vector<double>(record.state.begin(), record.state.end());
@@ -1136,18 +1118,8 @@ namespace cosmo
       if (mode)
         r.mode.assign(mode->begin(), mode->end());
       located_events.push_back(r);
-      if (stop_at_first_event)
-        {
-          std::ostringstream m;
-          m << std::setprecision(10) << "  " << e.name() << " at t = " << e.lambda
-            << " (negative eigenvalues " << e.n_negative_before << " -> " << e.n_negative_after
-            << ")";
-          say(m.str());
-        }
       if (write_output)
         write_event(e, U, mode);
-      if (stop_at_first_event)
-        throw FirstEventLocated();
     }
 
     void

@@ -306,9 +306,6 @@ namespace cosmo
       rod_law() const;
       void
       say(const std::string &line);
-      /// Thrown by located_event when the run stops at the first event.
-      struct FirstEventLocated
-      {};
       void
       write_event(const Event &e, const Vector<double> &U, const Vector<double> *mode);
       void

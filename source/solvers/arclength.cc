@@ -196,10 +196,6 @@ namespace cosmo
 
     namespace
     {
-      /// Thrown after the first located event when the run is to stop there.
-      struct FirstEventLocated
-      {};
-
       /**
        * The augmented system [R(U, lambda); theta (m o dU).(U - Up) +
        * dl (lambda - lp)] in the unknowns [U; lambda], solved by bordering
@@ -533,7 +529,7 @@ namespace cosmo
       return false;
     }
 
-    void
+    bool
     ArclengthContinuation::locate_events(BifurcationProblem &      problem,
                                          const State &             s,
                                          const double              ds,
@@ -758,7 +754,7 @@ namespace cosmo
               }
           events.push_back(record);
           if (settings.stop_at_first_event)
-            throw FirstEventLocated();
+            return true;
           if (sigma_hi >= ds || hi.n_negative == next.n_negative || bisection_failed)
             break; // the last crossing of this step (or the bracket did not shrink)
           sigma_from = sigma_hi;
@@ -767,6 +763,7 @@ namespace cosmo
           // ended, not of the next bracket's ends)
           factorized = Factorized::none;
         }
+      return false;
     }
 
     void
@@ -818,7 +815,11 @@ namespace cosmo
               continue;
             }
 
-          locate_events(problem, s, ds, next, branch, may_switch, events, switches);
+          if (locate_events(problem, s, ds, next, branch, may_switch, events, switches))
+            {
+              stopped = true; // the first event, and the run is to stop there
+              return;
+            }
 
           s = next;
           ++step;
@@ -913,12 +914,10 @@ namespace cosmo
 
       std::vector<EventRecord> events;
       std::vector<State>       switches; // grows while branches are followed
-      try
-        {
-          follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
-                 switches, step);
-        }
-      catch (FirstEventLocated &)
+      stopped = false;
+      follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
+             switches, step);
+      if (stopped)
         {
           say("  stopped at the first event ('Stop at first event')");
           return events;

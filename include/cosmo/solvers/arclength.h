@@ -293,6 +293,7 @@ namespace cosmo
       double            theta = 1;
       Vector<double>    mask;
       unsigned int      factorizations = 0; ///< setup_jacobian calls made by the driver
+      bool              stopped = false;    ///< the first branch stopped at its first event
 
       void
       say(const std::string &s) const;
@@ -320,9 +321,11 @@ namespace cosmo
        * The crossings of the stability count between s and next (a step of
        * length ds along s's tangent): each isolated by bisection of the count
        * until it changes by one, then located by Newton on the augmented
-       * system (or, failing that, by bisection to the tolerance).
+       * system (or, failing that, by bisection to the tolerance). Returns
+       * true if the run is to stop here (the first event located and
+       * stop_at_first_event).
        */
-      void
+      bool
       locate_events(BifurcationProblem &      problem,
                     const State &             s,
                     double                    ds,
