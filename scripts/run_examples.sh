@@ -26,7 +26,7 @@ studies=(parameter_files/rod_cross_section/studies/*.prm)
 
 mkdir -p output/logs
 failed=0
-strips=(parameter_files/strip/*.prm)
+strips=(parameter_files/strip/*.prm parameter_files/strip/studies/*.prm)
 plates=(parameter_files/plate_rod/*.prm parameter_files/plate_rod/studies/*.prm)
 for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}" "${plates[@]}"; do
   name="$(basename "$prm" .prm)"
@@ -59,6 +59,9 @@ if ((${#strips[@]})); then
       python3 scripts/plot_branches.py "$d" || { log "plotting $d FAILED" >&2; failed=1; }
     fi
   done
+  if [[ -d output/strip_studies ]]; then
+    python3 scripts/plot_sweep.py output/strip_studies || { log "plotting strip studies FAILED" >&2; failed=1; }
+  fi
   if [[ -f output/strip_ribbon_comparison/table.csv ]]; then
     # numpy and matplotlib: Debian's interpreter
     py=python3; [[ -x /usr/bin/python3 ]] && py=/usr/bin/python3
