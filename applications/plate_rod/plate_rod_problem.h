@@ -15,6 +15,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/kinematics/plate_rod.h>
+#include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/materials/rod_law.h>
@@ -300,7 +301,7 @@ namespace cosmo
       double
       rod_growth_at(double t) const
       {
-        return 1 + t * (rod_growth - 1);
+        return materials::growth_ramp(t, rod_growth);
       }
       materials::QuadraticRodLaw
       rod_law() const;

@@ -120,7 +120,7 @@ namespace cosmo
       Tensor<2, 3> Fg = unit_symmetric_tensor<3>();
       if (growth_kind == Kind::none)
         return Fg;
-      auto ramp = [t](const double g) { return 1. + t * (g - 1.); };
+      auto ramp = [t](const double g) { return growth_ramp(t, g); };
       if (growth_kind == Kind::orthotropic)
         {
           for (unsigned int i = 0; i < 3; ++i)

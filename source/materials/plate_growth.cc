@@ -1,4 +1,5 @@
 #include <cosmo/io/parameters.h>
+#include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
 
 #include <cmath>
@@ -63,7 +64,7 @@ namespace cosmo
     std::array<double, 2>
     PlateGrowth::factors(const double r, const double t) const
     {
-      auto ramp = [t](const double g) { return 1. + t * (g - 1.); };
+      auto ramp = [t](const double g) { return growth_ramp(t, g); };
       if (kind == "none")
         return {{1., 1.}};
       const double gr = ramp(radial->value(Point<1>(r)));

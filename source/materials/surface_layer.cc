@@ -52,7 +52,7 @@ namespace cosmo
     std::array<double, 2>
     SurfaceLayer::growth(const Point<2> &X, const double t) const
     {
-      auto ramp = [t](const double g) { return 1. + t * (g - 1.); };
+      auto ramp = [t](const double g) { return growth_ramp(t, g); };
       switch (growth_kind)
         {
           case GrowthKind::none:

@@ -29,6 +29,18 @@ namespace cosmo
     using namespace dealii;
 
     /**
+     * The growth ramp: a factor g given for t = 1 applies as 1 + t (g - 1)
+     * at load t (no growth at t = 0). A convex combination of 1 and g for t
+     * in [0, 1], so a factor positive at t = 1 is positive along the path.
+     * Every growth law (bulk, surface, plate, rim) ramps through this.
+     */
+    inline double
+    growth_ramp(const double t, const double g)
+    {
+      return 1. + t * (g - 1.);
+    }
+
+    /**
      * `n_components` muparser expressions of x, y (and the constant pi)
      * separated by ';', as given in entry `entry` of section `where`; an
      * io::InputError names both if the text does not parse.
