@@ -29,4 +29,7 @@ expect "a stiffness file that does not exist" "cannot open it" file.prm
 printf '{"stiffness": [[1, 0], [0, 1]]}\n' > small.json
 { base; printf 'subsection Rim rod\n set Stiffness file = small.json\nend\n'; } > small.prm
 expect "a stiffness file without a 6x6 stiffness" "found 4 numbers" small.prm
+printf '{"stiffness": [[1, 0], [0, 1]\n' > broken.json
+{ base; printf 'subsection Rim rod\n set Stiffness file = broken.json\nend\n'; } > broken.prm
+expect "a stiffness file that is not JSON (names where)" "not JSON at character" broken.prm
 exit $fail

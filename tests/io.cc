@@ -1,13 +1,17 @@
 // Unit tests of the parameter sweep (io/parameter_sweep.h): values from a
 // list or a range, the template substitution (a negative value is
 // parenthesized inside an expression, not in a list or alone), and the
-// checks that the swept entry exists and accepts every value.
+// checks that the swept entry exists and accepts every value; the JSON
+// reader against the writer (io/output.h).
 #include <deal.II/base/parameter_handler.h>
 
+#include <cosmo/io/output.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
 
 #include "test_tools.h"
+
+#include <cmath>
 
 using namespace dealii;
 using cosmo_test::check;
@@ -105,5 +109,42 @@ main()
         rejected("subsection Parameter sweep\n set Entry = Material 1/Poisson's ratio\n"
                  " set Range = 0, 0.4, 2.5\nend\n",
                  "whole number"));
+  {
+    // The reader reads what the writer writes: a tree with every kind of
+    // value, numbers at full precision (the writer's format), escapes.
+    using cosmo::io::JSON;
+    JSON j           = JSON::object();
+    j["name"]        = "a \"quoted\"\tname\n";
+    j["flag"]        = true;
+    j["nothing"]     = JSON();
+    j["pi"]          = 3.141592653589793;
+    j["tiny"]        = -1.2345678901234567e-300;
+    j["stiffness"]   = JSON::array();
+    for (int a = 0; a < 3; ++a)
+      j["stiffness"].push_back(JSON::array({a + 0.1, 1. / 3, -2e10}));
+    j["nested"]["deeper"]["n"] = 7;
+    const JSON r               = JSON::parse(j.str());
+    check("JSON round trip: the text of the read tree is the written text", r.str() == j.str());
+    check("JSON round trip: numbers bit for bit",
+          r.find("pi")->as_number() == 3.141592653589793 &&
+            r.find("tiny")->as_number() == -1.2345678901234567e-300 &&
+            r.find("stiffness")->at(2).at(1).as_number() == 1. / 3);
+    check("JSON: a missing key is nullptr, null reads as NaN",
+          r.find("absent") == nullptr && std::isnan(r.find("nothing")->as_number()));
+    for (const std::string bad : {"{\"a\": [1, 2}", "{\"a\" 1}", "[1, 2] x", "", "{\"a\": tru}"})
+      {
+        bool thrown = false;
+        try
+          {
+            JSON::parse(bad);
+          }
+        catch (std::runtime_error &e)
+          {
+            thrown = std::string(e.what()).find("not JSON at character") != std::string::npos;
+            std::cout << "        ('" << bad << "': " << e.what() << ")\n";
+          }
+        check("JSON: '" + bad + "' is refused with the position", thrown);
+      }
+  }
   return cosmo_test::report();
 }

@@ -310,33 +310,32 @@ namespace cosmo
                                  "a readable rod_cross_section summary.json (cannot open it)");
           std::stringstream buffer;
           buffer << in.rdbuf();
-          const std::string text = buffer.str();
-          const auto        at   = text.find("\"stiffness\"");
-          std::vector<double> K;
-          if (at != std::string::npos)
+          std::vector<double> K; // the finite numbers of "stiffness", row by row
+          std::size_t         rows = 0, non_square = 0;
+          try
             {
-              // The array from its '[' to the matching ']'.
-              std::size_t i = text.find('[', at), end = i;
-              for (int depth = 0; end != std::string::npos && end < text.size(); ++end)
-                {
-                  depth += text[end] == '[' ? 1 : text[end] == ']' ? -1 : 0;
-                  if (depth == 0)
-                    break;
-                }
-              std::string body =
-                i == std::string::npos || end >= text.size() ? "" : text.substr(i, end - i + 1);
-              for (char &c : body)
-                if (c == '[' || c == ']' || c == ',')
-                  c = ' ';
-              std::istringstream numbers(body);
-              double             v;
-              while (numbers >> v)
-                K.push_back(v);
+              const io::JSON  summary = io::JSON::parse(buffer.str());
+              const io::JSON *k       = summary.find("stiffness");
+              if (k && k->is_array())
+                for (rows = 0; rows < k->size(); ++rows)
+                  {
+                    non_square += k->at(rows).size() != 6;
+                    for (std::size_t b = 0; b < k->at(rows).size(); ++b)
+                      if (std::isfinite(k->at(rows).at(b).as_number()))
+                        K.push_back(k->at(rows).at(b).as_number());
+                  }
             }
-          if (K.size() != 36)
+          catch (std::runtime_error &e)
+            {
+              throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                   "a rod_cross_section summary.json (" + std::string(e.what()) +
+                                     ")");
+            }
+          if (K.size() != 36 || rows != 6 || non_square > 0)
             throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" "
-                                 "(found " + std::to_string(K.size()) + " numbers)");
+                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
+                                 "finite numbers (found " + std::to_string(K.size()) +
+                                 " numbers in " + std::to_string(rows) + " rows)");
           double coupling = 0;
           for (unsigned int a = 0; a < 6; ++a)
             {

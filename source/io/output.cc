@@ -1,6 +1,8 @@
 #include <cosmo/io/output.h>
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -265,6 +267,211 @@ namespace cosmo
       std::ostringstream s;
       print(s);
       return s.str();
+    }
+
+    namespace
+    {
+      /// Recursive descent over a JSON text (RFC 8259; \u escapes of the
+      /// basic plane are read as one byte if below 0x80, else as '?').
+      class JSONParser
+      {
+      public:
+        explicit JSONParser(const std::string &t)
+          : text(t)
+        {}
+
+        JSON
+        document()
+        {
+          JSON v = value();
+          skip_space();
+          if (pos != text.size())
+            fail("the end of the text");
+          return v;
+        }
+
+      private:
+        const std::string &text;
+        std::size_t        pos = 0;
+
+        [[noreturn]] void
+        fail(const std::string &expected) const
+        {
+          throw std::runtime_error("not JSON at character " + std::to_string(pos + 1) +
+                                   ": expected " + expected);
+        }
+        void
+        skip_space()
+        {
+          while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos])))
+            ++pos;
+        }
+        bool
+        take(const char c)
+        {
+          skip_space();
+          if (pos < text.size() && text[pos] == c)
+            {
+              ++pos;
+              return true;
+            }
+          return false;
+        }
+        bool
+        take_word(const std::string &w)
+        {
+          if (text.compare(pos, w.size(), w) != 0)
+            return false;
+          pos += w.size();
+          return true;
+        }
+        std::string
+        string()
+        {
+          if (!take('"'))
+            fail("'\"'");
+          std::string out;
+          while (pos < text.size() && text[pos] != '"')
+            {
+              char c = text[pos++];
+              if (c == '\\')
+                {
+                  if (pos >= text.size())
+                    break;
+                  const char e = text[pos++];
+                  switch (e)
+                    {
+                      case 'n':
+                        c = '\n';
+                        break;
+                      case 't':
+                        c = '\t';
+                        break;
+                      case 'r':
+                        c = '\r';
+                        break;
+                      case 'b':
+                        c = '\b';
+                        break;
+                      case 'f':
+                        c = '\f';
+                        break;
+                      case 'u':
+                        {
+                          if (pos + 4 > text.size())
+                            fail("four hex digits");
+                          const unsigned long code = std::stoul(text.substr(pos, 4), nullptr, 16);
+                          pos += 4;
+                          c = code < 0x80 ? static_cast<char>(code) : '?';
+                          break;
+                        }
+                      default:
+                        c = e; // \" \\ \/
+                    }
+                }
+              out += c;
+            }
+          if (pos >= text.size())
+            fail("the closing '\"' of a string");
+          ++pos;
+          return out;
+        }
+        JSON
+        value()
+        {
+          skip_space();
+          if (pos >= text.size())
+            fail("a value");
+          const char c = text[pos];
+          if (c == '{')
+            {
+              ++pos;
+              JSON o = JSON::object();
+              if (take('}'))
+                return o;
+              do
+                {
+                  const std::string key = (skip_space(), string());
+                  if (!take(':'))
+                    fail("':'");
+                  o[key] = value();
+                }
+              while (take(','));
+              if (!take('}'))
+                fail("',' or '}'");
+              return o;
+            }
+          if (c == '[')
+            {
+              ++pos;
+              JSON a = JSON::array();
+              if (take(']'))
+                return a;
+              do
+                a.push_back(value());
+              while (take(','));
+              if (!take(']'))
+                fail("',' or ']'");
+              return a;
+            }
+          if (c == '"')
+            return JSON(string());
+          if (take_word("true"))
+            return JSON(true);
+          if (take_word("false"))
+            return JSON(false);
+          if (take_word("null"))
+            return JSON();
+          const char *begin = text.c_str() + pos;
+          char *      end   = nullptr;
+          const double v    = std::strtod(begin, &end);
+          if (end == begin)
+            fail("a value (object, array, string, number, true, false or null)");
+          pos += end - begin;
+          return JSON(v);
+        }
+      };
+    } // namespace
+
+    JSON
+    JSON::parse(const std::string &text)
+    {
+      return JSONParser(text).document();
+    }
+
+    double
+    JSON::as_number() const
+    {
+      if (type == Type::null)
+        return std::numeric_limits<double>::quiet_NaN();
+      if (type != Type::number)
+        throw std::runtime_error("JSON: a number was expected");
+      return number;
+    }
+
+    std::size_t
+    JSON::size() const
+    {
+      return type == Type::array_t ? items.size() : type == Type::object_t ? members.size() : 0;
+    }
+
+    const JSON &
+    JSON::at(const std::size_t k) const
+    {
+      if (type != Type::array_t || k >= items.size())
+        throw std::runtime_error("JSON: no item " + std::to_string(k) + " in this value");
+      return items[k];
+    }
+
+    const JSON *
+    JSON::find(const std::string &key) const
+    {
+      if (type != Type::object_t)
+        return nullptr;
+      for (const auto &m : members)
+        if (m.first == key)
+          return m.second.get();
+      return nullptr;
     }
 
     RunLog::RunLog(const std::string &path, const bool quiet)

@@ -77,6 +77,38 @@ namespace cosmo
       std::string
       str() const;
 
+      /**
+       * Read a JSON text (what print() writes, and any standard JSON):
+       * std::runtime_error naming the position and what was expected if it
+       * is not JSON. Numbers are doubles; null reads as null (print()
+       * writes NaN as null).
+       */
+      static JSON
+      parse(const std::string &text);
+
+      bool
+      is_number() const
+      {
+        return type == Type::number;
+      }
+      bool
+      is_array() const
+      {
+        return type == Type::array_t;
+      }
+      /// The number (NaN for null; std::runtime_error for anything else).
+      double
+      as_number() const;
+      /// Items of an array, members of an object (0 otherwise).
+      std::size_t
+      size() const;
+      /// Item k of an array (std::runtime_error if not an array or out of range).
+      const JSON &
+      at(std::size_t k) const;
+      /// The member `key` of an object, or nullptr.
+      const JSON *
+      find(const std::string &key) const;
+
     private:
       enum class Type
       {
