@@ -56,15 +56,26 @@ namespace cosmo
       return x * x;
     }
 
+    namespace
+    {
+      /// Lame relation: the mismatch that produces the hoop force T
+      /// (T = EA k Delta / (EA + k), prebuckled_state).
+      double
+      mismatch_from_hoop_force(const PlateRod &p, const double T)
+      {
+        const double k = p.edge_stiffness();
+        return T * (p.rod_EA + k) / (p.rod_EA * k);
+      }
+    } // namespace
+
     double
     axisymmetric_critical_mismatch(const PlateRod &p)
     {
       const double D   = p.plate_D();
       const double rho = p.rod_EI1 / (p.radius * D);
       const double P   = axisymmetric_load_factor(p.poisson, rho) * D / (p.radius * p.radius);
-      // -N = P with N = -(k EA / (R (EA + k))) Delta.
-      const double k = p.edge_stiffness();
-      return P * p.radius * (p.rod_EA + k) / (k * p.rod_EA);
+      // -N = P with N = -T / R, T the hoop force of the rim.
+      return mismatch_from_hoop_force(p, P * p.radius);
     }
 
     double
@@ -73,20 +84,10 @@ namespace cosmo
       if (n < 2)
         throw std::invalid_argument("lobe number n >= 2");
       const double T = -(double(n) * n - 1) * p.rod_EI2 / (p.radius * p.radius);
-      // T = EA (a - er) with a from prebuckled_state: T = EA k Delta / (EA + k).
-      const double k = p.edge_stiffness();
-      return T * (p.rod_EA + k) / (p.rod_EA * k);
+      return mismatch_from_hoop_force(p, T);
     }
     namespace
     {
-      /// Lame relation: the mismatch that produces the hoop force T.
-      double
-      mismatch_from_hoop_force(const PlateRod &p, const double T)
-      {
-        const double k = p.edge_stiffness();
-        return T * (p.rod_EA + k) / (p.rod_EA * k);
-      }
-
       /**
        * The first sign change of f on the geometric grid x0, x0 q, x0 q^2, ...
        * (f(x0) > 0), up to x_max, refined by bisection to round-off. Throws

@@ -842,6 +842,14 @@ namespace cosmo
         }
     }
 
+    void
+    ArclengthContinuation::set_mask_and_weight(BifurcationProblem &problem)
+    {
+      problem.mode_mask(mask);
+      // 'Field weight' 0: 1/(number of mode unknowns), the mean square of the field.
+      theta = settings.theta > 0 ? settings.theta : 1. / std::max(1., mask.l1_norm());
+    }
+
     EventRecord
     ArclengthContinuation::locate_from(BifurcationProblem &  problem,
                                        const Vector<double> &U,
@@ -850,8 +858,7 @@ namespace cosmo
                                        const Vector<double> &mode,
                                        const double          relative_tolerance)
     {
-      problem.mode_mask(mask);
-      theta = settings.theta > 0 ? settings.theta : 1. / std::max(1., mask.l1_norm());
+      set_mask_and_weight(problem);
       EventRecord record;
       auto &      e = record.event;
       e.kind = fold ? BifurcationProblem::Event::Kind::fold : BifurcationProblem::Event::Kind::branch_point;
@@ -891,8 +898,7 @@ namespace cosmo
     std::vector<EventRecord>
     ArclengthContinuation::run(BifurcationProblem &problem, Vector<double> &U, const double lambda)
     {
-      problem.mode_mask(mask);
-      theta = settings.theta > 0 ? settings.theta : 1. / std::max(1., mask.l1_norm());
+      set_mask_and_weight(problem);
 
       // The starting point: converge it at fixed lambda, analyse, report.
       State s;

@@ -297,6 +297,9 @@ namespace cosmo
 
       void
       say(const std::string &s) const;
+      /// The mode mask and the arclength weight theta of this problem.
+      void
+      set_mask_and_weight(BifurcationProblem &problem);
       /// Converge the augmented system from the predictor; throws NewtonFailure.
       NewtonResult
       correct(BifurcationProblem &problem,
