@@ -569,9 +569,9 @@ namespace cosmo
     std::vector<solvers::EventRecord>
     StripProblem::follow_branches()
     {
-      solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-      driver.progress = [this](const std::string &s) { say(s); };
-      return driver.run(*this, solution, 0.);
+      follow_path(arclength_settings, newton_settings, solution,
+                  [this](const std::string &s) { say(s); });
+      return event_records();
     }
 
     void
@@ -673,8 +673,7 @@ namespace cosmo
               write_output = true;
             }
           else if (arclength_settings.enabled)
-            follow_path(arclength_settings, newton_settings, solution,
-                        [this](const std::string &s) { say(s); });
+            follow_branches();
           else
             solve();
         }

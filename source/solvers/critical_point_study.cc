@@ -228,7 +228,7 @@ namespace cosmo
                   }
               dofs = run->n_dofs();
               factorizations += run->factorizations();
-              const auto events = run->located_events();
+              const auto &events = run->located_events();
               if (const EventRecord *e = first_critical_point(events))
                 {
                   t          = e->event.lambda;

@@ -49,8 +49,8 @@ namespace cosmo
       /// The guess is the previous value's critical point itself (no
       /// extrapolation yet): converge R = 0 at fixed t first, since its
       /// residual is that of the change of the swept entry, and Newton on
-      /// the augmented system from it can wander off (measured: a 5% change
-      /// of growth sent the load to -11).
+      /// the augmented system from it can wander off (measured: a 10% change
+      /// of axial growth sent the load to -11).
       bool           equilibrate = false;
     };
 
@@ -81,7 +81,7 @@ namespace cosmo
       virtual void
       run(const io::RunOptions &options, const ParameterHandler &prm) = 0;
       /// The events the run located, in order.
-      virtual std::vector<EventRecord>
+      virtual const std::vector<EventRecord> &
       located_events() const = 0;
       virtual std::size_t
       n_dofs() const = 0;
@@ -120,7 +120,7 @@ namespace cosmo
       {
         problem.run(options, prm);
       }
-      std::vector<EventRecord>
+      const std::vector<EventRecord> &
       located_events() const override
       {
         return problem.event_records();
