@@ -328,7 +328,12 @@ namespace cosmo
       report.n_negative = record.event.n_negative_after;
       report.final      = true;
       set_load_parameter(report.t);
+      // The inertia and the condensed stiffness from the last factorization,
+      // as plate_rod's continued points do: not factorizing again is what a
+      // continued point saves.
+      report_with_last_factorization = true;
       converged_step(U, report);
+      report_with_last_factorization = false;
     }
 
     int
@@ -453,8 +458,11 @@ namespace cosmo
       // The arclength driver has just factorized at this very state (for the
       // tangent and the stability count): then only the integrals are
       // needed, from the cheap residual assembly.
-      const bool reuse = factorized_at.size() == U.size() && factorized_load == load_parameter &&
-                         std::equal(U.begin(), U.end(), factorized_at.begin());
+      const bool reuse =
+        factorized_at.size() == U.size() &&
+        (report_with_last_factorization ||
+         (factorized_load == load_parameter && std::equal(U.begin(), U.end(), factorized_at.begin())));
+      report_with_last_factorization = false;
       if (reuse)
         {
           io::PhaseTimer::Scope scope(timer, "assembly (residual)");

@@ -856,7 +856,8 @@ namespace cosmo
                                        const double          lambda,
                                        const bool            fold,
                                        const Vector<double> &mode,
-                                       const double          relative_tolerance)
+                                       const double          relative_tolerance,
+                                       const double          resolution_fraction)
     {
       set_mask_and_weight(problem);
       EventRecord record;
@@ -864,7 +865,8 @@ namespace cosmo
       e.kind = fold ? BifurcationProblem::Event::Kind::fold : BifurcationProblem::Event::Kind::branch_point;
       const Vector<double>  no_tangent(U.size());
       CriticalPointSettings cps;
-      cps.lambda_tolerance = relative_tolerance;
+      cps.lambda_tolerance    = relative_tolerance;
+      cps.resolution_fraction = resolution_fraction;
       const CriticalPoint   cp =
         locate_critical_point(problem, fold, U, lambda, mode, mask, no_tangent, 0., false,
                               1e-2 * std::abs(lambda) + 1e-12, newton.relative_tolerance, cps);

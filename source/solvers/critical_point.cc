@@ -278,7 +278,9 @@ namespace cosmo
           //   when that is below the tolerance the factorization that would
           //   only confirm it is saved; precision: that estimate.
           const double scale       = std::abs(lambda) + lambda_scale;
-          const double tolerance   = settings.lambda_tolerance * scale;
+          const double tolerance =
+            std::max(settings.lambda_tolerance * scale,
+                     cp.resolution > 0 ? settings.resolution_fraction * cp.resolution : 0.);
           const double update      = std::abs(d_lambda);
           const double floor_level = std::max(1e-6 * scale, 4 * cp.resolution);
           const double left_after =

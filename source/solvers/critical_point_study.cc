@@ -35,7 +35,7 @@ namespace cosmo
             throw io::RunFailure(std::string("the guess does not converge at its load: ") +
                                  e.what());
           }
-      const auto record = driver.locate_from(problem, U, g.t, g.fold, g.mode, 1e-10);
+      const auto record = driver.locate_from(problem, U, g.t, g.fold, g.mode, 1e-10, 0.1);
       if (!record.event.located_by_newton)
         throw io::RunFailure(record.event.message);
       // Another negative eigenvalue than the critical one: a mode that

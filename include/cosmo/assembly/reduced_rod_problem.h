@@ -312,6 +312,11 @@ namespace cosmo
       /// (condensed_state() reuses that factorization when asked at it).
       Vector<double> factorized_at;
       double         factorized_load = 0;
+      /// The next condensed_state() takes the last factorization as that of
+      /// its state: a continued critical point, whose last Newton iterate
+      /// differs from the located point by an update below the located
+      /// precision (solvers/critical_point.h), set by follow_path().
+      bool report_with_last_factorization = false;
       /// Where to report a failed factorization (may be empty).
       std::function<void(const std::string &)> report;
     };

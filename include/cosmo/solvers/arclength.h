@@ -265,7 +265,8 @@ namespace cosmo
        * factorization: on a stable branch it is 0 or 1 (the critical
        * eigenvalue's sign is round-off there); more means another mode
        * became critical first. relative_tolerance: of the located lambda
-       * (critical_point.h; a curve needs far less than the 1e-13 of events).
+       * (critical_point.h; a curve needs far less than the 1e-13 of events);
+       * resolution_fraction: CriticalPointSettings::resolution_fraction.
        */
       EventRecord
       locate_from(BifurcationProblem &  problem,
@@ -273,7 +274,8 @@ namespace cosmo
                   double                lambda,
                   bool                  fold,
                   const Vector<double> &mode,
-                  double                relative_tolerance = 1e-13);
+                  double                relative_tolerance  = 1e-13,
+                  double                resolution_fraction = 0);
 
     private:
       struct State

@@ -72,6 +72,12 @@ namespace cosmo
       /// the round-off floor, or when the error estimated after a
       /// superlinearly contracted update, |d_k|^2 / |d_k-1|, is below it.
       double lambda_tolerance = 1e-13;
+      /// ... or below this fraction of the point's round-off resolution R
+      /// (section 4 of doc/theory-continuation.md): the located lambda
+      /// scatters by R/12 to R/26 between BLAS thread counts and inputs
+      /// perturbed at 1e-14, so iterating below R/10 chases round-off. 0: off
+      /// (events keep the absolute tolerance alone).
+      double resolution_fraction = 0;
     };
 
     /**

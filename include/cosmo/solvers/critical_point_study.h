@@ -56,9 +56,11 @@ namespace cosmo
 
     /**
      * Locate the critical point of `problem` from the guess by Newton on the
-     * augmented system (driver.locate_from at 1e-10 relative: a thousandth
-     * of the 1e-7 a curve owes the independent study, and below the plate's
-     * round-off resolution, doc/theory-continuation.md 4). Throws
+     * augmented system (driver.locate_from at 1e-10 relative, a thousandth
+     * of the 1e-7 a curve owes the independent study, or a tenth of the
+     * point's round-off resolution R, whichever is larger: the located load
+     * scatters by R/12 to R/26 in floating point, doc/theory-continuation.md
+     * 4, so iterating further chases round-off). Throws
      * io::RunFailure if Newton fails or if another mode is critical below
      * the located point (the critical mode changed). The located point has
      * been reported through problem.located_event().
