@@ -35,10 +35,13 @@ for x, y in zip(a, b):
     ok = abs(ta - tb) <= tol and rb <= max(4 * ra, 1.01e-10 * abs(tb)) and (y["continued"] == "0" or float(y["factorizations"]) < float(x["factorizations"]))
     # the same critical mode (a continued point must not be another mode's):
     # every mode classification column (mode_number, mode_symmetry, ...)
-    # (none for rod_cross_section: there the count check of a continued
-    # point, no other negative eigenvalue, is what guards the mode)
     modes = [c for c in x if c.startswith("mode_") and c != "mode_change"]
     ok = ok and all(x[c] == y[c] for c in modes)
+    # and a classified one: the mesh of each study is symmetric, and the
+    # eigenvector of a simple critical eigenvalue of a symmetric problem is
+    # symmetric or antisymmetric under each symmetry (+1 or -1; 0 = mixed or
+    # nan = not classifiable would be a wrong mode or a broken classifier)
+    ok = ok and all(x[c] in ("1", "-1") for c in modes if "symmetry" in c)
     bad += not ok
     print("value %s: t %.12g (independent, %s factorizations) vs %.12g (%s, %s factorizations): "
           "|diff| %.2e relative, tolerance %.2e%s" % (

@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
 #include <cosmo/io/parameter_sweep.h>
 
@@ -712,6 +713,34 @@ namespace cosmo
       force  = materials.max_young() * length * length;
     }
 
+    double
+    CrossSectionProblem::mode_parity(const Vector<double> &mode, const unsigned int axis) const
+    {
+      // The half-turn about X_axis maps the section point X to its mirror
+      // image about that axis (the other coordinate changes sign) and the
+      // placement w by diag(+1 on X_axis, -1 on the others): a proper
+      // rotation, a symmetry also of a twisted or stretched rod (a
+      // reflection would reverse the twist).
+      std::vector<double> signs = {-1., -1., -1.};
+      signs[axis]               = 1.;
+      return geometry::reflection_parity(
+        dof_handler,
+        geometry::mirror_dofs(*mapping, dof_handler, 1 - axis, section_properties.diameter), mode,
+        signs);
+    }
+
+    std::vector<double>
+    CrossSectionProblem::classify_critical_mode(const Vector<double> &mode) const
+    {
+      std::vector<double> c;
+      for (unsigned int axis = 0; axis < 2; ++axis)
+        {
+          const double p = mode_parity(mode, axis);
+          c.push_back(p > 0.5 ? 1. : p < -0.5 ? -1. : std::isfinite(p) ? 0. : NAN);
+        }
+      return c;
+    }
+
     CrossSectionState
     CrossSectionProblem::current_state()
     {
@@ -1287,6 +1316,16 @@ namespace cosmo
         {
           solvers::CriticalPointStudy study;
           study.application     = "rod_cross_section";
+          study.mode_columns    = {"mode_symmetry_X1", "mode_symmetry_X2"};
+          study.describe_mode   = [](const std::vector<double> &c) {
+            auto word = [](const double p) {
+              return p > 0 ? std::string("symmetric") :
+                     p < 0 ? std::string("antisymmetric") :
+                     p == 0 ? std::string("mixed") : std::string("unclassified (mesh not symmetric)");
+            };
+            return word(c[0]) + " under the half-turn about X1, " + word(c[1]) +
+                   " under the half-turn about X2";
+          };
           study.further_columns = assembly::ReducedRodProblem::critical_point_column_names();
           study.make_run        = [](ParameterHandler &p) {
             return std::make_unique<solvers::CriticalPointRunOf<CrossSectionProblem>>(p);

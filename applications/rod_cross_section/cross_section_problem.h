@@ -98,6 +98,19 @@ namespace cosmo
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
 
+      /**
+       * The parity of a mode's field under the half-turn of the rod about the
+       * section's axis X_axis (axis 0 or 1; geometry::reflection_parity):
+       * +1 symmetric, -1 antisymmetric, NaN where the mesh is not its own
+       * mirror image about that axis.
+       */
+      double
+      mode_parity(const Vector<double> &mode, unsigned int axis) const;
+      /// A study's mode columns: mode_symmetry_X1, mode_symmetry_X2 (+1, -1,
+      /// 0 mixed, NaN: no such symmetry of the mesh).
+      std::vector<double>
+      classify_critical_mode(const Vector<double> &mode) const override;
+
     private:
       // Parameters
       geometry::CrossSectionGeometry geometry;

@@ -499,26 +499,11 @@ namespace cosmo
     double
     StripProblem::mode_parity(const Vector<double> &mode) const
     {
-      const auto mirror = geometry::mirror_dofs(MappingQ1<1>(), dof_handler, 0, strip_width);
-      if (mirror.empty())
-        return NAN; // (a mesh not symmetric about eta = 0 has no parity)
-      // The out-of-plane displacement u2 (component 1), its DoFs by cell.
-      std::vector<bool>                    u2(dof_handler.n_dofs(), false);
-      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          cell->get_dof_indices(idx);
-          for (unsigned int i = 0; i < idx.size(); ++i)
-            u2[idx[i]] = fe->system_to_component_index(i).first == 1;
-        }
-      double cross = 0, square = 0;
-      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
-        if (u2[i])
-          {
-            cross += mode[i] * mode[mirror[i]];
-            square += mode[i] * mode[i];
-          }
-      return square > 0 ? cross / square : NAN;
+      // The out-of-plane displacement u2 (component 1) alone: a mesh not
+      // symmetric about eta = 0 has no parity (NaN).
+      return geometry::reflection_parity(
+        dof_handler, geometry::mirror_dofs(MappingQ1<1>(), dof_handler, 0, strip_width), mode,
+        {0., 1.});
     }
 
     std::vector<double>

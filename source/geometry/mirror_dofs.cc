@@ -55,9 +55,46 @@ namespace cosmo
       return mirror;
     }
 
+    template <int dim>
+    double
+    reflection_parity(const DoFHandler<dim> &                     dof_handler,
+                      const std::vector<types::global_dof_index> &mirror,
+                      const Vector<double> &                      mode,
+                      const std::vector<double> &                 component_signs)
+    {
+      if (mirror.empty() || mirror.size() != dof_handler.n_dofs() || mode.size() < mirror.size())
+        return NAN;
+      std::vector<double>                  sign(dof_handler.n_dofs(), 0.);
+      std::vector<types::global_dof_index> idx;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          idx.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(idx);
+          for (unsigned int i = 0; i < idx.size(); ++i)
+            {
+              const unsigned int c = cell->get_fe().system_to_component_index(i).first;
+              sign[idx[i]]         = c < component_signs.size() ? component_signs[c] : 0.;
+            }
+        }
+      double cross = 0, square = 0;
+      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
+        if (sign[i] != 0)
+          {
+            cross += sign[i] * mode[i] * mode[mirror[i]];
+            square += mode[i] * mode[i];
+          }
+      return square > 0 ? cross / square : NAN;
+    }
+
     template std::vector<types::global_dof_index>
     mirror_dofs<1>(const Mapping<1> &, const DoFHandler<1> &, unsigned int, double);
     template std::vector<types::global_dof_index>
     mirror_dofs<2>(const Mapping<2> &, const DoFHandler<2> &, unsigned int, double);
+    template double
+    reflection_parity<1>(const DoFHandler<1> &, const std::vector<types::global_dof_index> &,
+                         const Vector<double> &, const std::vector<double> &);
+    template double
+    reflection_parity<2>(const DoFHandler<2> &, const std::vector<types::global_dof_index> &,
+                         const Vector<double> &, const std::vector<double> &);
   } // namespace geometry
 } // namespace cosmo

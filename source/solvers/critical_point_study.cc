@@ -5,6 +5,7 @@
 #include <cosmo/solvers/critical_curve.h>
 #include <cosmo/solvers/critical_point_study.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -240,10 +241,20 @@ namespace cosmo
                               ExcMessage("the run's study columns differ from the study's"));
                   // A new critical mode: the previous curve ends (a
                   // codimension-2 point lies between the two values).
-                  const bool classified =
-                    n_mode > 0 && std::isfinite(mode_class[0]) && !previous.mode_class.empty() &&
-                    std::isfinite(previous.mode_class[0]);
-                  if (classified && mode_class != previous.mode_class)
+                  // (A NaN column is one the mesh cannot classify, e.g. a
+                  // symmetry it lacks: equal to a NaN.)
+                  auto finite = [](const std::vector<double> &c) {
+                    return std::any_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
+                  };
+                  auto same = [](const std::vector<double> &a, const std::vector<double> &b) {
+                    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](double x, double y) {
+                      return x == y || (std::isnan(x) && std::isnan(y));
+                    });
+                  };
+                  const bool classified = n_mode > 0 && finite(mode_class) &&
+                                          !previous.mode_class.empty() &&
+                                          finite(previous.mode_class);
+                  if (classified && !same(mode_class, previous.mode_class))
                     {
                       mode_change = 1;
                       predictor.clear();
