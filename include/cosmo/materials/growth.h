@@ -6,16 +6,19 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <cosmo/base/plugins.h>
+
 #include <memory>
 #include <string>
 
 /**
  * Growth tensors Fg(X1, X2) of the multiplicative decomposition F = Fe Fg.
  *
- * Kinds (doc/specification/rod-cross-section.md): isotropic g I; axial I + (g-1) E3 (x) E3;
- * fibre I + (g-1) f (x) f with a unit field f given by expressions, or helical
- * fibres f = cos(a) E3 + sin(a) E_theta (active filaments); orthotropic
- * diag(g1, g2, g3). Factors are expressions of x, y (the cross-section
+ * Laws (doc/specification/rod-cross-section.md; each a registered
+ * BulkGrowthLaw in source/materials/growth_laws/): isotropic g I; axial
+ * I + (g-1) E3 (x) E3; fibre I + (g-1) f (x) f with a unit field f given by
+ * expressions, or helical fibres f = cos(a) E3 + sin(a) E_theta (active
+ * filaments); orthotropic diag(g1, g2, g3). Factors are expressions of x, y (the cross-section
  * coordinates X1, X2), so that differential growth is a formula in the .prm.
  *
  * Growth is ramped by the load parameter t in [0, 1] of the continuation
@@ -51,47 +54,83 @@ namespace cosmo
                       const std::string &where,
                       const std::string &entry);
 
+    /**
+     * A bulk growth law: Fg(X, t) on the cross-section. Implementations
+     * register themselves by name (COSMO_REGISTER_PLUGIN(BulkGrowthLaw, ...),
+     * base/plugins.h), one file each in source/materials/growth_laws/; the
+     * names are the values of the material's 'Growth kind' (doc/cookbook.md).
+     */
+    class BulkGrowthLaw
+    {
+    public:
+      virtual ~BulkGrowthLaw() = default;
+      /**
+       * Reads its entries in the material's section (entered). 'Growth
+       * factor' is common to every law (declared by GrowthTensor); `where`
+       * names the section for io::InputError.
+       */
+      virtual void
+      parse_parameters(ParameterHandler &prm, const std::string &where) = 0;
+      /// Fg at X and load t; every factor ramps as growth_ramp(t, g).
+      virtual Tensor<2, 3>
+      value(const Point<2> &X, double t) const = 0;
+      /// One line for the log, e.g. "axial, g = 1 + 0.3*x".
+      virtual std::string
+      description() const = 0;
+    };
+
+    /// Growth I + (g - 1) f (x) f along the unit vector f (fibre-type laws).
+    inline Tensor<2, 3>
+    fibre_growth(const double g, const Tensor<1, 3> &f)
+    {
+      return unit_symmetric_tensor<3>() + (g - 1.) * outer_product(f, f);
+    }
+
+    /**
+     * The growth of a material: the registered BulkGrowthLaw its 'Growth
+     * kind' names, with the common 'Growth factor'.
+     */
     class GrowthTensor
     {
     public:
-      enum class Kind
-      {
-        none,
-        isotropic,
-        axial,
-        fibre,
-        helical_fibre,
-        orthotropic
-      };
-
+      /// 'Growth kind' (the registered laws), 'Growth factor' and the laws' own entries.
       static void
       declare_parameters(ParameterHandler &prm);
-      /// `where` names the section for error messages.
       void
       parse_parameters(ParameterHandler &prm, const std::string &where);
 
-      /// Fg at X for load parameter t (t = 1: the full growth of the .prm).
       Tensor<2, 3>
-      value(const Point<2> &X, double t) const;
+      value(const Point<2> &X, const double t) const
+      {
+        return law->value(X, t);
+      }
 
-      /// The 'Growth factor' entry as given.
+      /// The 'Growth factor' text.
       const std::string &
       factor_expression() const
       {
         return factor_text;
       }
-      /// One line for logs and summary.json.
       std::string
-      description() const;
+      description() const
+      {
+        return law->description();
+      }
 
     private:
-      Kind                                 growth_kind = Kind::none;
-      std::unique_ptr<FunctionParser<2>>   factor;       // g (1 comp) or g1,g2,g3 (3)
-      std::unique_ptr<FunctionParser<2>>   fibre;        // f (3 comps), normalised
-      double                               fibre_angle = 0; // radians, helical fibres
-      std::string                          factor_text, fibre_text;
+      std::unique_ptr<BulkGrowthLaw> law;
+      std::string                    factor_text;
     };
   } // namespace materials
+} // namespace cosmo
+
+namespace cosmo
+{
+  namespace plugins
+  {
+    // One registry of bulk growth laws per process (instantiated in source/materials/growth.cc).
+    extern template class Registry<materials::BulkGrowthLaw>;
+  } // namespace plugins
 } // namespace cosmo
 
 #endif

@@ -1,0 +1,31 @@
+// No growth: Fg = I.
+#include <cosmo/materials/growth.h>
+
+namespace cosmo
+{
+  namespace materials
+  {
+    class NoGrowth : public BulkGrowthLaw
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+      void
+      parse_parameters(ParameterHandler &, const std::string &) override
+      {}
+      Tensor<2, 3>
+      value(const Point<2> &, double) const override
+      {
+        return unit_symmetric_tensor<3>();
+      }
+      std::string
+      description() const override
+      {
+        return "no growth";
+      }
+    };
+
+    COSMO_REGISTER_PLUGIN(BulkGrowthLaw, NoGrowth, "none", "Fg = I.")
+  } // namespace materials
+} // namespace cosmo
