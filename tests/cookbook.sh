@@ -2,7 +2,8 @@
 # A cookbook extension (doc/cookbook.md) appears and runs: the executable
 # built with the extension's one file lists its name among the values of the
 # entry it extends, the application without it does not, and the example
-# that uses it reproduces its closed form ('# check:' lines, run_example.sh)
+# that uses it reproduces its closed form ('# check:' lines, run_example.sh or
+# run_plate_rod_example.sh)
 # and its reference key numbers.
 # usage: cookbook.sh <executable with the extension> <application> <entry> <name> <file.prm> <reference.output> <scratch dir>
 set -euo pipefail
@@ -26,4 +27,6 @@ sys.exit(0 if any(found) else 1)' "$entry" "$name"
 listed "$with" || { echo "'$name' is not a value of '$entry' in $(basename "$with")"; exit 1; }
 if listed "$without"; then echo "'$name' is a value of '$entry' without the extension"; exit 1; fi
 echo "'$name' is a value of '$entry' with the extension's file only"
-exec "$(dirname "${BASH_SOURCE[0]}")/run_example.sh" "$with" "$prm" "$ref" "$dir"
+runner=run_example.sh
+[[ $(basename "$without") == plate_rod ]] && runner=run_plate_rod_example.sh
+exec "$(dirname "${BASH_SOURCE[0]}")/$runner" "$with" "$prm" "$ref" "$dir"

@@ -178,20 +178,6 @@ namespace cosmo
               }
           }
       }
-
-      std::string
-      model_name(const kinematics::PlateRodModel m)
-      {
-        switch (m)
-          {
-            case kinematics::PlateRodModel::cosserat:
-              return "cosserat";
-            case kinematics::PlateRodModel::kirchhoff:
-              return "kirchhoff";
-            default:
-              return "von karman";
-          }
-      }
     } // namespace
 
     PlateRodProblem::PlateRodProblem() = default;
@@ -227,13 +213,11 @@ namespace cosmo
                         "stress-free rim is a ring of radius g R.");
       prm.leave_subsection();
       prm.enter_subsection("Model");
-      prm.declare_entry("Model", "cosserat", Patterns::Selection("cosserat|kirchhoff|von karman"),
-                        "cosserat: Naghdi plate and special Cosserat rod; kirchhoff: the same "
-                        "with the transverse shear stiffnesses (plate ks G h, rod GA1, GA2) "
-                        "multiplied by the shear penalty (the shear-rigid limit); von karman: "
-                        "moderate rotations (doc/theory-plate-rod.md).");
-      prm.declare_entry("Shear penalty factor", "100", Patterns::Double(1),
-                        "Factor on the shear stiffnesses in the kirchhoff model.");
+      using Models = plugins::Registry<kinematics::PlateModel>;
+      prm.declare_entry("Model", "cosserat", Patterns::Selection(Models::names()),
+                        "The plate model (the registered models, "
+                        "source/kinematics/plate_models/). " + Models::documentation());
+      Models::declare_parameters(prm);
       prm.declare_entry("Shear integration", "automatic",
                         Patterns::Selection("automatic|stabilized|reduced"),
                         "Transverse shear of the plate. stabilized: full Gauss integration with "
@@ -378,12 +362,11 @@ namespace cosmo
 
       prm.enter_subsection("Model");
       const std::string m = prm.get("Model");
-      model = m == "cosserat" ? kinematics::PlateRodModel::cosserat :
-              m == "kirchhoff" ? kinematics::PlateRodModel::kirchhoff :
-                                 kinematics::PlateRodModel::von_karman;
-      shear_penalty       = prm.get_double("Shear penalty factor");
-      stabilized_shear    = prm.get("Shear integration") == "stabilized" ||
-                         (prm.get("Shear integration") == "automatic" && m != "kirchhoff");
+      model = plugins::Registry<kinematics::PlateModel>::create(m);
+      model->parse_parameters(prm);
+      stabilized_shear = prm.get("Shear integration") == "stabilized" ||
+                         (prm.get("Shear integration") == "automatic" &&
+                          !model->automatic_reduced_shear());
       shear_stabilization = prm.get_double("Shear stabilization");
       prm.leave_subsection();
 
@@ -648,9 +631,9 @@ namespace cosmo
     {
       materials::QuadraticRodLaw law;
       law.stiffness = rod_stiffness;
-      if (model == kinematics::PlateRodModel::kirchhoff)
-        for (const unsigned int k : {0u, 1u})
-          law.stiffness[k] *= shear_penalty;
+      // The model's factor on the shear stiffnesses GA1, GA2 (the Kirchhoff penalty).
+      for (const unsigned int k : {0u, 1u})
+        law.stiffness[k] *= model->shear_scale();
       return law;
     }
 
@@ -669,7 +652,7 @@ namespace cosmo
       const double    t            = load_parameter;
       const double    g_rod        = rod_growth_at(t);
       const auto      rod          = rod_law();
-      const double    shear_scale  = model == kinematics::PlateRodModel::kirchhoff ? shear_penalty : 1.;
+      const double    shear_scale  = model->shear_scale();
 
       auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
                         Scratch &                                           sc,
@@ -719,7 +702,7 @@ namespace cosmo
                   std::array<Number, n_plate> y;
                   for (unsigned int k = 0; k < n_plate; ++k)
                     y[k] = k >= 3 && k < 3 + x.size() ? x[k - 3] : Number(z[k]);
-                  return kinematics::plate_energy(y, gr, plate_law, model, membrane_bending,
+                  return kinematics::plate_energy(y, gr, plate_law, *model, membrane_bending,
                                                   cell_shear_scale);
                 };
                 if (membrane_bending)
@@ -768,7 +751,7 @@ namespace cosmo
                   double W                 = 0;
                   materials::internal::differentiate<n_rim>(
                     zr,
-                    [&](const auto &x) { return kinematics::rim_rod_energy(x, frame, law, g_rod, model); },
+                    [&](const auto &x) { return kinematics::rim_rod_energy(x, frame, law, g_rod, *model); },
                     jacobian, W, gr, Hr);
                   c.rod_energy += W * sc.fev_face.JxW(q);
                   add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian, c);
@@ -1188,11 +1171,8 @@ namespace cosmo
                   z[13 + c] = grads[k][3 + c][1];
                 }
               const auto gr = growth_at(X, load_parameter);
-              const auto st = kinematics::plate_rod_plate_strains(z, gr, model);
-              Tensor<1, 3, double> theta;
-              theta[0]     = z[9];
-              theta[1]     = z[10];
-              const auto Q = kinematics::rotation_exp(theta);
+              const auto st = model->plate_strains(z, gr);
+              const Tensor<1, 3> d = model->director(z);
               const double r = X.norm(), ca = r > 0 ? X[0] / r : 1, sa = r > 0 ? X[1] / r : 0;
               // Polar components of a symmetric (11, 22, 12) tensor.
               auto polar = [&](const std::array<double, 3> &a) {
@@ -1214,9 +1194,7 @@ namespace cosmo
               for (unsigned int c = 0; c < 3; ++c)
                 patch.data(col++, k) = values[k][c];
               for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = model == kinematics::PlateRodModel::von_karman ?
-                                         (c == 0 ? z[10] : c == 1 ? -z[9] : 1.) :
-                                         Q[c][2];
+                patch.data(col++, k) = d[c];
               patch.data(col++, k) = gf[0];
               patch.data(col++, k) = gf[1];
               for (unsigned int c = 0; c < 3; ++c)
@@ -1301,7 +1279,7 @@ namespace cosmo
                   const double r = X.norm();
                   std::array<double, 3> kappa0{
                     {0., (frame.tangent[0] * (-X[1]) + frame.tangent[1] * X[0]) / (r * r), 0.}};
-                  const auto e = kinematics::rim_rod_strains(z, frame, kappa0, model);
+                  const auto e = model->rim_strains(z, frame, kappa0);
                   // Frame: Lambda = exp(theta) exp(alpha E3) Lambda0.
                   Tensor<1, 3, double> th, al;
                   th[0] = z[6], th[1] = z[7], al[2] = z[10];
@@ -1426,7 +1404,7 @@ namespace cosmo
       say("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
       setup_system();
       std::ostringstream info;
-      info << "  " << model_name(model) << " model, R = " << radius << ", h = " << thickness
+      info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness
            << " (h/R = " << thickness / radius << "), "
            << (domain == "sector" ? "sector pi/" + std::to_string(sector_n) : std::string("full disc"))
            << ", " << triangulation.n_active_cells() << " cells, Q" << degree << ", "
@@ -1513,7 +1491,7 @@ namespace cosmo
       j["version"]     = COSMO_VERSION;
       j["status"]      = status;
       j["message"]     = message;
-      j["model"]       = model_name(model);
+      j["model"]       = model->name();
       j["domain"]      = domain == "sector" ? "sector" : "full disc";
       if (domain == "sector")
         j["sector_n"] = sector_n;

@@ -14,7 +14,7 @@
 #include <cosmo/analysis/plate_rod_thresholds.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
-#include <cosmo/kinematics/plate_rod.h>
+#include <cosmo/kinematics/plate_model.h>
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
 #include <cosmo/materials/plate_law.h>
@@ -217,8 +217,8 @@ namespace cosmo
       std::string                    domain = "full disc";
       unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
       unsigned int                   refinements = 3, degree = 2;
-      kinematics::PlateRodModel      model = kinematics::PlateRodModel::cosserat;
-      double                         shear_penalty = 100;
+      /// The registered plate model named by 'Model / Model' (kinematics/plate_model.h).
+      std::unique_ptr<kinematics::PlateModel> model;
       bool                           stabilized_shear    = true;
       double                         shear_stabilization = 0.03;
       materials::NaghdiPlateLaw      plate_law;

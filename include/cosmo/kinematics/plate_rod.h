@@ -32,7 +32,10 @@
  *
  * from Lambda^T Lambda' (T the right Jacobian of exp, rotation.h).
  *
- * Three models share the fields (doc/specification/plate-rod.md "Models"): the Cosserat plate
+ * The strain measures below are the building blocks of the plate models
+ * (plate_model.h: registered implementations of kinematics::PlateModel,
+ * one file each in source/kinematics/plate_models/). Three models share the
+ * fields (doc/specification/plate-rod.md "Models"): the Cosserat plate
  * and rod; the same with the transverse shear stiffnesses multiplied by a
  * penalty (the Kirchhoff limit; reduced integration keeps it locking-free);
  * von Karman: d = E3 + beta, beta = theta x E3, membrane strain
@@ -45,13 +48,6 @@ namespace cosmo
 {
   namespace kinematics
   {
-    enum class PlateRodModel
-    {
-      cosserat,
-      kirchhoff,
-      von_karman
-    };
-
     /// Plate local variables: u (0-2), du/dX1 (3-5), du/dX2 (6-8), theta1, theta2 (9, 10),
     /// dtheta/dX1 (11, 12), dtheta/dX2 (13, 14).
     constexpr int plate_local_variables = 15;
@@ -148,36 +144,6 @@ namespace cosmo
       }
     } // namespace internal
 
-    /// The plate's strain measures of the chosen model.
-    template <typename Number>
-    materials::PlateStrains<Number>
-    plate_rod_plate_strains(const std::array<Number, plate_local_variables> &z,
-                            const PlateGrowthAtPoint &                      g,
-                            const PlateRodModel                             model)
-    {
-      return model == PlateRodModel::von_karman ? internal::von_karman_plate_strains(z, g) :
-                                                  internal::exact_plate_strains(z, g);
-    }
-
-    /**
-     * Plate energy per reference area: det G times the plate law's membrane
-     * and bending part (membrane_bending) or its transverse shear part times
-     * shear_scale (the Kirchhoff penalty, 1 otherwise).
-     */
-    template <typename Number>
-    Number
-    plate_energy(const std::array<Number, plate_local_variables> &z,
-                 const PlateGrowthAtPoint &                      g,
-                 const materials::NaghdiPlateLaw &               law,
-                 const PlateRodModel                             model,
-                 const bool                                      membrane_bending,
-                 const double                                    shear_scale)
-    {
-      const auto s = plate_rod_plate_strains(z, g, model);
-      return g.det_G * (membrane_bending ? law.membrane_bending_energy(s) :
-                                           Number(shear_scale * law.shear_energy(s)));
-    }
-
     /// The rim's reference frame at one point: Lambda0 (columns d1, d2, d3) and the unit tangent
     /// dX/dS of the discrete rim there.
     struct RimFrame
@@ -186,19 +152,19 @@ namespace cosmo
       Tensor<1, 3> tangent;
     };
 
-    /// The rod's six strains (nu, kappa) from the local variables (kappa0 added).
-    template <typename Number>
-    std::array<Number, 6>
-    rim_rod_strains(const std::array<Number, rim_local_variables> &z,
-                    const RimFrame &                              f,
-                    const std::array<double, 3> &                 kappa0,
-                    const PlateRodModel                           model)
+    namespace internal
     {
-      std::array<Number, 6> e;
-      Tensor<1, 3, Number>  r1; // r' = t + du/dS
-      for (unsigned int i = 0; i < 3; ++i)
-        r1[i] = f.tangent[i] + z[3 + i];
-      if (model == PlateRodModel::von_karman)
+      /// The rod's six strains (nu, kappa) with moderate rotations (von Karman), kappa0 added.
+      template <typename Number>
+      std::array<Number, 6>
+      linearized_rim_strains(const std::array<Number, rim_local_variables> &z,
+                             const RimFrame &                              f,
+                             const std::array<double, 3> &                 kappa0)
+      {
+        std::array<Number, 6> e;
+        Tensor<1, 3, Number>  r1; // r' = t + du/dS
+        for (unsigned int i = 0; i < 3; ++i)
+          r1[i] = f.tangent[i] + z[3 + i];
         {
           // Linearized rotation psi = theta + alpha E3: nu = Lambda0^T (r' - psi x t),
           // kappa = kappa0 + Lambda0^T psi'; the axial strain keeps the squares of the
@@ -228,6 +194,19 @@ namespace cosmo
           e[2] += 0.5 * (q1 * q1 + q2 * q2);
           return e;
         }
+      }
+
+      /// The rod's six strains (nu, kappa) from the exact rotations, kappa0 added.
+      template <typename Number>
+      std::array<Number, 6>
+      exact_rim_strains(const std::array<Number, rim_local_variables> &z,
+                        const RimFrame &                              f,
+                        const std::array<double, 3> &                 kappa0)
+      {
+      std::array<Number, 6> e;
+      Tensor<1, 3, Number>  r1; // r' = t + du/dS
+      for (unsigned int i = 0; i < 3; ++i)
+        r1[i] = f.tangent[i] + z[3 + i];
       Tensor<1, 3, Number> theta;
       theta[0]                     = z[6];
       theta[1]                     = z[7];
@@ -261,20 +240,8 @@ namespace cosmo
         }
       return e;
     }
+    } // namespace internal
 
-    /// Rim rod energy per reference length: the quadratic law with axial growth.
-    template <typename Number>
-    Number
-    rim_rod_energy(const std::array<Number, rim_local_variables> &z,
-                   const RimFrame &                              f,
-                   const materials::QuadraticRodLaw &            law,
-                   const double                                  growth,
-                   const PlateRodModel                           model)
-    {
-      const std::array<double, 3> kappa0 = {
-        {law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}};
-      return law.energy(rim_rod_strains(z, f, kappa0, model), growth);
-    }
   } // namespace kinematics
 } // namespace cosmo
 

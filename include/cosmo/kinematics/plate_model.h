@@ -1,0 +1,171 @@
+#ifndef cosmo_kinematics_plate_model_h
+#define cosmo_kinematics_plate_model_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cosmo/base/plugins.h>
+#include <cosmo/kinematics/plate_rod.h>
+#include <cosmo/materials/plate_law.h>
+#include <cosmo/materials/rod_law.h>
+
+#include <Sacado.hpp>
+
+#include <array>
+#include <string>
+
+/**
+ * A model of the plate bounded by a rod (doc/specification/plate-rod.md
+ * "Models"): the strain measures of the plate and of the rim rod in terms of
+ * the shared local variables (plate_rod.h), the factor on the transverse
+ * shear stiffnesses, and what 'Shear integration = automatic' means for it.
+ * Implementations register themselves by name (COSMO_REGISTER_PLUGIN,
+ * base/plugins.h), one file each in source/kinematics/plate_models/
+ * (cosserat, kirchhoff, von karman); the names are the values of plate_rod's
+ * 'Model / Model' (doc/cookbook.md, "Add a plate model").
+ *
+ * The strains are differentiated by nested Sacado numbers in the assembly
+ * (materials/energy_derivatives.h): the interface has one virtual overload
+ * per number type the assembly uses (values, and first and second
+ * derivatives in the 12 and 8 variables the plate and rim energies depend
+ * on). An implementation writes its strains once, as templates, and
+ * derives from PlateModelOf<Implementation>, which provides every overload.
+ */
+namespace cosmo
+{
+  namespace kinematics
+  {
+    using namespace dealii;
+
+    /// The Sacado numbers of first and second derivatives in N variables.
+    template <int N>
+    using FirstOrderAD = Sacado::Fad::SFad<double, N>;
+    template <int N>
+    using SecondOrderAD = Sacado::Fad::SFad<FirstOrderAD<N>, N>;
+
+#define COSMO_PLATE_MODEL_OVERLOADS(Number, qualifier)                                          \
+  virtual materials::PlateStrains<Number> plate_strains(                                       \
+    const std::array<Number, plate_local_variables> &z, const PlateGrowthAtPoint &g)           \
+    const qualifier;                                                                           \
+  virtual std::array<Number, 6> rim_strains(const std::array<Number, rim_local_variables> &z, \
+                                            const RimFrame &                              f,   \
+                                            const std::array<double, 3> &kappa0) const qualifier;
+#define COSMO_PURE = 0
+#define COSMO_OVERRIDE override
+#define COSMO_PLATE_MODEL_FOR_EVERY_NUMBER(X, qualifier) \
+  X(double, qualifier)                                   \
+  X(FirstOrderAD<12>, qualifier)                         \
+  X(SecondOrderAD<12>, qualifier)                        \
+  X(FirstOrderAD<8>, qualifier)                          \
+  X(SecondOrderAD<8>, qualifier)
+
+    class PlateModel
+    {
+    public:
+      virtual ~PlateModel() = default;
+      /// Reads its own entries (declared in the section 'Model'; entered).
+      virtual void
+      parse_parameters(ParameterHandler &)
+      {}
+      /// The name it is registered under.
+      virtual std::string
+      name() const = 0;
+      /// Factor on the transverse shear stiffnesses of plate and rim (the
+      /// Kirchhoff penalty; 1 otherwise).
+      virtual double
+      shear_scale() const
+      {
+        return 1.;
+      }
+      /// Whether 'Shear integration = automatic' means reduced integration
+      /// (true) or the stabilized shear (false).
+      virtual bool
+      automatic_reduced_shear() const
+      {
+        return false;
+      }
+      /// The plate's director d at a point (for output).
+      virtual Tensor<1, 3>
+      director(const std::array<double, plate_local_variables> &z) const = 0;
+
+      /// plate_strains(z, g): membrane, bending and shear strains of the
+      /// plate (grown reference); rim_strains(z, f, kappa0): the rim rod's
+      /// six strains (nu, kappa) with its reference curvature kappa0 added.
+      COSMO_PLATE_MODEL_FOR_EVERY_NUMBER(COSMO_PLATE_MODEL_OVERLOADS, COSMO_PURE)
+    };
+
+#define COSMO_PLATE_MODEL_FORWARD(Number, qualifier)                                            \
+  materials::PlateStrains<Number> plate_strains(                                               \
+    const std::array<Number, plate_local_variables> &z, const PlateGrowthAtPoint &g)           \
+    const qualifier                                                                            \
+  {                                                                                            \
+    return static_cast<const Implementation &>(*this).template plate_strains_of<Number>(z, g); \
+  }                                                                                            \
+  std::array<Number, 6> rim_strains(const std::array<Number, rim_local_variables> &z,         \
+                                    const RimFrame &                              f,           \
+                                    const std::array<double, 3> &kappa0) const qualifier      \
+  {                                                                                            \
+    return static_cast<const Implementation &>(*this).template rim_strains_of<Number>(z,       \
+                                                                                      f,       \
+                                                                                      kappa0); \
+  }
+
+    /**
+     * The overloads of PlateModel from Implementation's templates
+     * plate_strains_of<Number>(z, g) and rim_strains_of<Number>(z, f, kappa0).
+     */
+    template <class Implementation>
+    class PlateModelOf : public PlateModel
+    {
+    public:
+      COSMO_PLATE_MODEL_FOR_EVERY_NUMBER(COSMO_PLATE_MODEL_FORWARD, COSMO_OVERRIDE)
+    };
+
+#undef COSMO_PLATE_MODEL_OVERLOADS
+#undef COSMO_PLATE_MODEL_FORWARD
+#undef COSMO_PLATE_MODEL_FOR_EVERY_NUMBER
+#undef COSMO_PURE
+#undef COSMO_OVERRIDE
+
+    /**
+     * Plate energy per reference area: det G times the plate law's membrane
+     * and bending part (membrane_bending) or its transverse shear part times
+     * shear_scale (the model's shear_scale(), possibly reduced further by the
+     * shear stabilization).
+     */
+    template <typename Number>
+    Number
+    plate_energy(const std::array<Number, plate_local_variables> &z,
+                 const PlateGrowthAtPoint &                      g,
+                 const materials::NaghdiPlateLaw &               law,
+                 const PlateModel &                              model,
+                 const bool                                      membrane_bending,
+                 const double                                    shear_scale)
+    {
+      const auto s = model.plate_strains(z, g);
+      return g.det_G * (membrane_bending ? law.membrane_bending_energy(s) :
+                                           Number(shear_scale * law.shear_energy(s)));
+    }
+
+    /// Rim rod energy per reference length: the quadratic law with axial growth.
+    template <typename Number>
+    Number
+    rim_rod_energy(const std::array<Number, rim_local_variables> &z,
+                   const RimFrame &                              f,
+                   const materials::QuadraticRodLaw &            law,
+                   const double                                  growth,
+                   const PlateModel &                            model)
+    {
+      const std::array<double, 3> kappa0 = {
+        {law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}};
+      return law.energy(model.rim_strains(z, f, kappa0), growth);
+    }
+  } // namespace kinematics
+
+  namespace plugins
+  {
+    // One registry of plate models per process (instantiated in source/kinematics/plate_model.cc).
+    extern template class Registry<kinematics::PlateModel>;
+  } // namespace plugins
+} // namespace cosmo
+
+#endif

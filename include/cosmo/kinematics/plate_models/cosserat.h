@@ -1,0 +1,49 @@
+#ifndef cosmo_kinematics_plate_models_cosserat_h
+#define cosmo_kinematics_plate_models_cosserat_h
+
+#include <cosmo/kinematics/plate_model.h>
+
+namespace cosmo
+{
+  namespace kinematics
+  {
+    /**
+     * The kinematics of the Cosserat (Naghdi) plate bounded by a special
+     * Cosserat rod: exact rotations of the director and of the rim's frame.
+     * A CRTP base: the models "cosserat" and "kirchhoff"
+     * (source/kinematics/plate_models/) derive from it.
+     */
+    template <class Implementation>
+    class CosseratKinematics : public PlateModelOf<Implementation>
+    {
+    public:
+      Tensor<1, 3>
+      director(const std::array<double, plate_local_variables> &z) const override
+      {
+        // d = exp([theta]x) E3
+        Tensor<1, 3> theta;
+        theta[0]     = z[9];
+        theta[1]     = z[10];
+        const auto Q = rotation_exp(theta);
+        return Tensor<1, 3>({Q[0][2], Q[1][2], Q[2][2]});
+      }
+      template <typename Number>
+      materials::PlateStrains<Number>
+      plate_strains_of(const std::array<Number, plate_local_variables> &z,
+                       const PlateGrowthAtPoint &                      g) const
+      {
+        return internal::exact_plate_strains(z, g);
+      }
+      template <typename Number>
+      std::array<Number, 6>
+      rim_strains_of(const std::array<Number, rim_local_variables> &z,
+                     const RimFrame &                              f,
+                     const std::array<double, 3> &                 kappa0) const
+      {
+        return internal::exact_rim_strains(z, f, kappa0);
+      }
+    };
+  } // namespace kinematics
+} // namespace cosmo
+
+#endif
