@@ -733,22 +733,9 @@ namespace cosmo
                       for (unsigned int p = 0; p < sc.drives[i].n; ++p)
                         zr[sc.drives[i].var[p]] += sc.U_local[i] * sc.drives[i].w[p];
                     }
-                  // The reference strains of the discrete rim (so that the reference is
-                  // stress-free): nu0 = Lambda0^T t, kappa0 = (0, t.e_theta / r, 0).
-                  auto         law = rod;
-                  const double r   = X.norm();
-                  for (unsigned int k = 0; k < 3; ++k)
-                    {
-                      double n0 = 0;
-                      for (unsigned int i = 0; i < 3; ++i)
-                        n0 += frame.Lambda0[i][k] * frame.tangent[i];
-                      law.reference_strains[k] = n0;
-                    }
-                  law.reference_strains[3] = 0;
-                  law.reference_strains[4] =
-                    (frame.tangent[0] * (-X[1]) + frame.tangent[1] * X[0]) / (r * r);
-                  law.reference_strains[5] = 0;
-                  double W                 = 0;
+                  auto law              = rod;
+                  law.reference_strains = kinematics::rim_reference_strains(X, frame);
+                  double W              = 0;
                   materials::internal::differentiate<n_rim>(
                     zr,
                     [&](const auto &x) { return kinematics::rim_rod_energy(x, frame, law, g_rod, *model); },
@@ -1141,9 +1128,6 @@ namespace cosmo
       std::vector<DataOutBase::Patch<2, 3>>    patches;
       const unsigned int                       np = degree + 1;
       const unsigned int                       n_data = 3 + 3 + 2 + 3 + 3;
-      const double Dm = plate_law.young * thickness / (1 - plate_law.poisson * plate_law.poisson);
-      const double Db = Dm * thickness * thickness / 12;
-      const double nu = plate_law.poisson;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fev.reinit(cell);
@@ -1181,14 +1165,8 @@ namespace cosmo
                 const double rt = -ca * sa * a[0] + ca * sa * a[1] + (ca * ca - sa * sa) * a[2];
                 return std::array<double, 3>{{rr, tt, rt}};
               };
-              auto law = [&](const std::array<double, 3> &e, const double D) {
-                const double tr = e[0] + e[1];
-                return std::array<double, 3>{{D * (nu * tr + (1 - nu) * e[0]),
-                                              D * (nu * tr + (1 - nu) * e[1]),
-                                              D * (1 - nu) * e[2]}};
-              };
-              const auto N  = polar(law(st.membrane, Dm));
-              const auto M  = polar(law(st.bending, Db));
+              const auto N  = polar(plate_law.membrane_force(st.membrane));
+              const auto M  = polar(plate_law.bending_moment(st.bending));
               const auto gf = plate_growth.factors(r, load_parameter);
               unsigned int col = 0;
               for (unsigned int c = 0; c < 3; ++c)
@@ -1244,7 +1222,7 @@ namespace cosmo
       std::vector<Vector<double>>            values(nodes.size(), Vector<double>(6));
       std::vector<std::vector<Tensor<1, 2>>> grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
       std::vector<DataOutBase::Patch<1, 3>>  patches;
-      const auto                             law   = rod_law();
+      const auto                             rod   = rod_law();
       const double                           g_rod = rod_growth_at(load_parameter);
       const unsigned int                     n_data = 9 + 6 + 6;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1276,10 +1254,10 @@ namespace cosmo
                   z[9]  = grads[k][4] * t2;
                   z[10] = values[k][5];
                   z[11] = grads[k][5] * t2;
-                  const double r = X.norm();
-                  std::array<double, 3> kappa0{
-                    {0., (frame.tangent[0] * (-X[1]) + frame.tangent[1] * X[0]) / (r * r), 0.}};
-                  const auto e = model->rim_strains(z, frame, kappa0);
+                  auto law              = rod;
+                  law.reference_strains = kinematics::rim_reference_strains(X, frame);
+                  const auto e          = model->rim_strains(
+                    z, frame, {{law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}});
                   // Frame: Lambda = exp(theta) exp(alpha E3) Lambda0.
                   Tensor<1, 3, double> th, al;
                   th[0] = z[6], th[1] = z[7], al[2] = z[10];
@@ -1289,16 +1267,11 @@ namespace cosmo
                   for (unsigned int j = 0; j < 3; ++j)
                     for (unsigned int i = 0; i < 3; ++i)
                       patch.data(col++, k) = L[i][j];
-                  double nu0[3] = {0, 0, 0};
-                  for (unsigned int j = 0; j < 3; ++j)
-                    for (unsigned int i = 0; i < 3; ++i)
-                      nu0[j] += frame.Lambda0[i][j] * frame.tangent[i];
+                  const auto resultants = law.resultants(e, g_rod);
                   for (unsigned int j = 0; j < 6; ++j)
                     patch.data(col++, k) = e[j];
                   for (unsigned int j = 0; j < 6; ++j)
-                    patch.data(col++, k) =
-                      j < 3 ? law.stiffness[j] * (e[j] / g_rod - nu0[j]) :
-                              law.stiffness[j] * (e[j] - (j == 4 ? kappa0[1] : 0.)) / g_rod;
+                    patch.data(col++, k) = resultants[j];
                   patch.data(n_data + 0, k) = X[0] + values[k][0];
                   patch.data(n_data + 1, k) = X[1] + values[k][1];
                   patch.data(n_data + 2, k) = values[k][2];

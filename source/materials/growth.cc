@@ -74,6 +74,19 @@ namespace cosmo
       }
 
     void
+    ScalarFactorGrowthLaw::parse_parameters(ParameterHandler &prm, const std::string &where)
+    {
+      factor_text = prm.get("Growth factor");
+      factor      = parse_expressions(factor_text, 1, where, "Growth factor");
+    }
+
+    double
+    ScalarFactorGrowthLaw::ramped_factor(const Point<2> &X, const double t) const
+    {
+      return growth_ramp(t, factor->value(X));
+    }
+
+    void
     GrowthTensor::parse_parameters(ParameterHandler &prm, const std::string &where)
     {
       factor_text = prm.get("Growth factor");

@@ -12,33 +12,22 @@ namespace cosmo
 {
   namespace materials
   {
-    class VolumetricGrowth : public BulkGrowthLaw
+    // A law with one scalar factor: ScalarFactorGrowthLaw parses the
+    // common 'Growth factor' (an io::InputError names the section and entry
+    // of a bad expression) and ramps it, ramped_factor(X, t) = 1 + t (g - 1).
+    class VolumetricGrowth : public ScalarFactorGrowthLaw
     {
     public:
-      /// Its own entries (none: it uses the common 'Growth factor').
-      static void
-      declare_parameters(ParameterHandler &)
-      {}
-      void
-      parse_parameters(ParameterHandler &prm, const std::string &where) override
-      {
-        text   = prm.get("Growth factor");
-        factor = parse_expressions(text, 1, where, "Growth factor");
-      }
       Tensor<2, 3>
       value(const Point<2> &X, const double t) const override
       {
-        return std::cbrt(growth_ramp(t, factor->value(X))) * unit_symmetric_tensor<3>();
+        return std::cbrt(ramped_factor(X, t)) * unit_symmetric_tensor<3>();
       }
       std::string
       description() const override
       {
-        return "volumetric, J = " + text;
+        return "volumetric, J = " + factor_text;
       }
-
-    private:
-      std::string                        text;
-      std::unique_ptr<FunctionParser<2>> factor;
     };
 
     COSMO_REGISTER_PLUGIN(BulkGrowthLaw,

@@ -27,7 +27,7 @@ namespace cosmo
       Tensor<1, 3>
       director(const std::array<double, plate_local_variables> &z) const override
       {
-        return Tensor<1, 3>({z[10], -z[9], 1.});
+        return internal::von_karman_director(z);
       }
       /// The strains as templates of the number type (the assembly
       /// differentiates them with nested Sacado numbers).

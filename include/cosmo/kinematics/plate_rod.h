@@ -1,6 +1,8 @@
 #ifndef cosmo_kinematics_plate_rod_h
 #define cosmo_kinematics_plate_rod_h
 
+#include <deal.II/base/point.h>
+
 #include <cosmo/kinematics/rotation.h>
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/materials/rod_law.h>
@@ -98,6 +100,24 @@ namespace cosmo
         return materials::grown_plate_strains(a1, a2, d, d1, d2, g.G_inv);
       }
 
+      /// The exact director d = exp([theta]x) E3 (theta = (z[9], z[10], 0)).
+      inline Tensor<1, 3>
+      exact_director(const std::array<double, plate_local_variables> &z)
+      {
+        Tensor<1, 3> theta;
+        theta[0]     = z[9];
+        theta[1]     = z[10];
+        const auto Q = rotation_exp(theta);
+        return Tensor<1, 3>({Q[0][2], Q[1][2], Q[2][2]});
+      }
+
+      /// The von Karman director d = E3 + beta, beta = theta x E3 = (theta2, -theta1, 0).
+      inline Tensor<1, 3>
+      von_karman_director(const std::array<double, plate_local_variables> &z)
+      {
+        return Tensor<1, 3>({z[10], -z[9], 1.});
+      }
+
       /// Von Karman strains (grown reference: C -> G^-T C G^-1 etc.).
       template <typename Number>
       materials::PlateStrains<Number>
@@ -152,8 +172,40 @@ namespace cosmo
       Tensor<1, 3> tangent;
     };
 
+    /**
+     * The reference strains of the discrete rim at X on it (so that the
+     * reference ring is stress free, whatever the polygon of the mesh):
+     * nu0 = Lambda0^T t, kappa0 = (0, t.e_theta / r, 0).
+     */
+    inline std::array<double, 6>
+    rim_reference_strains(const Point<2> &X, const RimFrame &f)
+    {
+      std::array<double, 6> e{};
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          double n0 = 0;
+          for (unsigned int i = 0; i < 3; ++i)
+            n0 += f.Lambda0[i][k] * f.tangent[i];
+          e[k] = n0;
+        }
+      const double r = X.norm();
+      e[4]           = (f.tangent[0] * (-X[1]) + f.tangent[1] * X[0]) / (r * r);
+      return e;
+    }
+
     namespace internal
     {
+      /// The rim's r' = t + du/dS.
+      template <typename Number>
+      Tensor<1, 3, Number>
+      rim_tangent(const std::array<Number, rim_local_variables> &z, const RimFrame &f)
+      {
+        Tensor<1, 3, Number> r1;
+        for (unsigned int i = 0; i < 3; ++i)
+          r1[i] = f.tangent[i] + z[3 + i];
+        return r1;
+      }
+
       /// The rod's six strains (nu, kappa) with moderate rotations (von Karman), kappa0 added.
       template <typename Number>
       std::array<Number, 6>
@@ -161,10 +213,8 @@ namespace cosmo
                              const RimFrame &                              f,
                              const std::array<double, 3> &                 kappa0)
       {
-        std::array<Number, 6> e;
-        Tensor<1, 3, Number>  r1; // r' = t + du/dS
-        for (unsigned int i = 0; i < 3; ++i)
-          r1[i] = f.tangent[i] + z[3 + i];
+        std::array<Number, 6>      e;
+        const Tensor<1, 3, Number> r1 = rim_tangent(z, f);
         {
           // Linearized rotation psi = theta + alpha E3: nu = Lambda0^T (r' - psi x t),
           // kappa = kappa0 + Lambda0^T psi'; the axial strain keeps the squares of the
@@ -203,10 +253,8 @@ namespace cosmo
                         const RimFrame &                              f,
                         const std::array<double, 3> &                 kappa0)
       {
-      std::array<Number, 6> e;
-      Tensor<1, 3, Number>  r1; // r' = t + du/dS
-      for (unsigned int i = 0; i < 3; ++i)
-        r1[i] = f.tangent[i] + z[3 + i];
+      std::array<Number, 6>      e;
+      const Tensor<1, 3, Number> r1 = rim_tangent(z, f);
       Tensor<1, 3, Number> theta;
       theta[0]                     = z[6];
       theta[1]                     = z[7];

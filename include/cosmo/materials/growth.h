@@ -79,6 +79,33 @@ namespace cosmo
       description() const = 0;
     };
 
+    /**
+     * A base of the laws with one scalar factor g(X), the 'Growth factor'
+     * (isotropic, axial, fibre, ...): parses it and gives it ramped to the
+     * load. A derived law that has entries of its own parses them after
+     * calling this class's parse_parameters.
+     */
+    class ScalarFactorGrowthLaw : public BulkGrowthLaw
+    {
+    public:
+      /// No entries of its own ('Growth factor' is common to all laws).
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &where) override;
+
+    protected:
+      /// growth_ramp(t, g(X)) = 1 + t (g(X) - 1).
+      double
+      ramped_factor(const Point<2> &X, double t) const;
+      /// The expression as given.
+      std::string factor_text;
+
+    private:
+      std::unique_ptr<FunctionParser<2>> factor;
+    };
+
     /// Growth I + (g - 1) f (x) f along the unit vector f (fibre-type laws).
     inline Tensor<2, 3>
     fibre_growth(const double g, const Tensor<1, 3> &f)

@@ -114,13 +114,43 @@ namespace cosmo
       }
 
       /// Membrane and bending energy (the part integrated fully).
+      /// The membrane stiffness C = E h / (1 - nu^2).
+      double
+      membrane_stiffness() const
+      {
+        return young * thickness / (1 - poisson * poisson);
+      }
+      /// The bending stiffness D = C h^2 / 12.
+      double
+      bending_stiffness() const
+      {
+        return membrane_stiffness() * thickness * thickness / 12;
+      }
+
       template <typename Number>
       Number
       membrane_bending_energy(const PlateStrains<Number> &s) const
       {
-        const double Dm = young * thickness / (1 - poisson * poisson);
-        const double Db = Dm * thickness * thickness / 12;
-        return 0.5 * Dm * quadratic(s.membrane) + 0.5 * Db * quadratic(s.bending);
+        return 0.5 * membrane_stiffness() * quadratic(s.membrane) +
+               0.5 * bending_stiffness() * quadratic(s.bending);
+      }
+
+      /**
+       * The membrane force N and the bending moment M of this law, tensor
+       * components (11, 22, 12) from the strain components (11, 22, 12):
+       * N = C ((nu tr e) I + (1 - nu) e), M likewise with D and k, so that
+       * membrane_bending_energy = 1/2 (N : e + M : k) (the 12 components
+       * counted twice). The output writes these; nothing re-derives the law.
+       */
+      std::array<double, 3>
+      membrane_force(const std::array<double, 3> &e) const
+      {
+        return resultant(e, membrane_stiffness());
+      }
+      std::array<double, 3>
+      bending_moment(const std::array<double, 3> &k) const
+      {
+        return resultant(k, bending_stiffness());
       }
 
       /// Transverse shear energy (integrated with fewer points against locking).
@@ -134,6 +164,15 @@ namespace cosmo
       }
 
     private:
+      std::array<double, 3>
+      resultant(const std::array<double, 3> &a, const double stiffness) const
+      {
+        const double tr = a[0] + a[1];
+        return {{stiffness * (poisson * tr + (1 - poisson) * a[0]),
+                 stiffness * (poisson * tr + (1 - poisson) * a[1]),
+                 stiffness * (1 - poisson) * a[2]}};
+      }
+
       /// v (tr a)^2 + (1-v) a:a for a symmetric a = (a11, a22, a12).
       template <typename Number>
       Number

@@ -41,6 +41,21 @@ namespace cosmo
           }
         return growth * W;
       }
+
+      /**
+       * The resultants (n, m) = dW/d(nu, kappa) of energy():
+       * n_k = K_k (e_k / g - e0_k), m_k = K_k (e_k - e0_k) / g. The output
+       * writes these; nothing re-derives the law.
+       */
+      std::array<double, 6>
+      resultants(const std::array<double, 6> &strains, const double growth) const
+      {
+        std::array<double, 6> r;
+        for (unsigned int k = 0; k < 6; ++k)
+          r[k] = k < 3 ? stiffness[k] * (strains[k] / growth - reference_strains[k]) :
+                         stiffness[k] * (strains[k] - reference_strains[k]) / growth;
+        return r;
+      }
     };
   } // namespace materials
 } // namespace cosmo

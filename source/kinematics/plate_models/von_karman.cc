@@ -21,8 +21,7 @@ namespace cosmo
       Tensor<1, 3>
       director(const std::array<double, plate_local_variables> &z) const override
       {
-        // d = E3 + beta, beta = theta x E3 = (theta2, -theta1, 0)
-        return Tensor<1, 3>({z[10], -z[9], 1.});
+        return internal::von_karman_director(z);
       }
       template <typename Number>
       materials::PlateStrains<Number>

@@ -5,7 +5,7 @@ namespace cosmo
 {
   namespace materials
   {
-    class FibreGrowth : public BulkGrowthLaw
+    class FibreGrowth : public ScalarFactorGrowthLaw
     {
     public:
       static void
@@ -20,9 +20,8 @@ namespace cosmo
       void
       parse_parameters(ParameterHandler &prm, const std::string &where) override
       {
-        text       = prm.get("Growth factor");
+        ScalarFactorGrowthLaw::parse_parameters(prm, where);
         fibre_text = prm.get("Fibre direction");
-        factor     = parse_expressions(text, 1, where, "Growth factor");
         fibre      = parse_expressions(fibre_text, 3, where, "Fibre direction");
       }
       Tensor<2, 3>
@@ -34,17 +33,17 @@ namespace cosmo
         AssertThrow(f.norm() > 0,
                     ExcMessage("The fibre direction vanishes at (" + std::to_string(X[0]) + ", " +
                                std::to_string(X[1]) + "): '" + fibre_text + "'"));
-        return fibre_growth(growth_ramp(t, factor->value(X)), f / f.norm());
+        return fibre_growth(ramped_factor(X, t), f / f.norm());
       }
       std::string
       description() const override
       {
-        return "fibre, g = " + text + ", f = (" + fibre_text + ")";
+        return "fibre, g = " + factor_text + ", f = (" + fibre_text + ")";
       }
 
     private:
-      std::string                        text, fibre_text;
-      std::unique_ptr<FunctionParser<2>> factor, fibre;
+      std::string                        fibre_text;
+      std::unique_ptr<FunctionParser<2>> fibre;
     };
 
     COSMO_REGISTER_PLUGIN(BulkGrowthLaw,

@@ -9,7 +9,7 @@ namespace cosmo
 {
   namespace materials
   {
-    class HelicalFibreGrowth : public BulkGrowthLaw
+    class HelicalFibreGrowth : public ScalarFactorGrowthLaw
     {
     public:
       static void
@@ -24,9 +24,8 @@ namespace cosmo
       void
       parse_parameters(ParameterHandler &prm, const std::string &where) override
       {
-        text   = prm.get("Growth factor");
-        angle  = prm.get_double("Fibre angle") * M_PI / 180.;
-        factor = parse_expressions(text, 1, where, "Growth factor");
+        ScalarFactorGrowthLaw::parse_parameters(prm, where);
+        angle = prm.get_double("Fibre angle") * M_PI / 180.;
       }
       Tensor<2, 3>
       value(const Point<2> &X, const double t) const override
@@ -42,20 +41,18 @@ namespace cosmo
           }
         else
           f[2] = 1;
-        return fibre_growth(growth_ramp(t, factor->value(X)), f);
+        return fibre_growth(ramped_factor(X, t), f);
       }
       std::string
       description() const override
       {
         std::ostringstream s;
-        s << "helical fibre, g = " << text << ", angle " << angle * 180 / M_PI << " deg";
+        s << "helical fibre, g = " << factor_text << ", angle " << angle * 180 / M_PI << " deg";
         return s.str();
       }
 
     private:
-      std::string                        text;
-      double                             angle = 0;
-      std::unique_ptr<FunctionParser<2>> factor;
+      double angle = 0;
     };
 
     COSMO_REGISTER_PLUGIN(BulkGrowthLaw,

@@ -20,12 +20,7 @@ namespace cosmo
       Tensor<1, 3>
       director(const std::array<double, plate_local_variables> &z) const override
       {
-        // d = exp([theta]x) E3
-        Tensor<1, 3> theta;
-        theta[0]     = z[9];
-        theta[1]     = z[10];
-        const auto Q = rotation_exp(theta);
-        return Tensor<1, 3>({Q[0][2], Q[1][2], Q[2][2]});
+        return internal::exact_director(z);
       }
       template <typename Number>
       materials::PlateStrains<Number>
