@@ -13,6 +13,11 @@
 
 namespace cosmo
 {
+  namespace plugins
+  {
+    template class Registry<materials::HyperelasticLaw>;
+  } // namespace plugins
+
   namespace materials
   {
     namespace
@@ -57,36 +62,16 @@ namespace cosmo
         f[a] = F[a / 3][a % 3];
       internal::differentiate<9>(
         f,
-        [&](const auto &x) { return Jg * law.energy(elastic_part(x, Fg_inv)); },
+        [&](const auto &x) { return Jg * law->energy(elastic_part(x, Fg_inv)); },
         tangent, out.energy, out.P, out.C);
     }
 
-    HyperelasticModel
-    hyperelastic_model_from_string(const std::string &name)
+    std::shared_ptr<const HyperelasticLaw>
+    HyperelasticLaw::create(const std::string &name, const double young, const double poisson)
     {
-      if (name == "neo-Hookean")
-        return HyperelasticModel::neo_hookean;
-      if (name == "Saint Venant-Kirchhoff")
-        return HyperelasticModel::saint_venant_kirchhoff;
-      throw std::runtime_error("unknown hyperelastic law '" + name + "'; allowed: " +
-                               hyperelastic_model_names());
-    }
-
-    std::string
-    hyperelastic_model_names()
-    {
-      return "neo-Hookean|Saint Venant-Kirchhoff";
-    }
-
-    HyperelasticLaw
-    HyperelasticLaw::from_young_poisson(const HyperelasticModel model,
-                                        const double            young,
-                                        const double            poisson)
-    {
-      HyperelasticLaw l;
-      l.model  = model;
-      l.mu     = young / (2 * (1 + poisson));
-      l.lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
+      std::shared_ptr<HyperelasticLaw> l = plugins::Registry<HyperelasticLaw>::create(name);
+      l->mu     = young / (2 * (1 + poisson));
+      l->lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
       return l;
     }
 
@@ -110,10 +95,10 @@ namespace cosmo
                             "A name for output.");
           prm.declare_entry("Hyperelastic law",
                             "neo-Hookean",
-                            Patterns::Selection(hyperelastic_model_names()),
-                            "Stored energy of the elastic part Fe: compressible "
-                            "neo-Hookean mu/2 (I1 - 3 - 2 ln J) + lambda/2 (ln J)^2, or "
-                            "Saint Venant-Kirchhoff lambda/2 (tr E)^2 + mu E:E.");
+                            Patterns::Selection(plugins::Registry<HyperelasticLaw>::names()),
+                            "Stored energy of the elastic part Fe (the registered laws, "
+                            "source/materials/hyperelastic_laws/). " +
+                              plugins::Registry<HyperelasticLaw>::documentation());
           prm.declare_entry("Young's modulus", "1", Patterns::Double(0),
                             "Small-strain Young's modulus E (units of stress; the "
                             "resultants come out in E times length^2, moments E length^3).");
@@ -169,10 +154,8 @@ namespace cosmo
               if (!(E > 0))
                 throw io::InputError(section, "Young's modulus", prm.get("Young's modulus"),
                                      "must be positive");
-              m.law = HyperelasticLaw::from_young_poisson(
-                hyperelastic_model_from_string(prm.get("Hyperelastic law")),
-                E,
-                prm.get_double("Poisson's ratio"));
+              m.law = HyperelasticLaw::create(prm.get("Hyperelastic law"), E,
+                                              prm.get_double("Poisson's ratio"));
               m.growth.parse_parameters(prm, section);
               for (const int r : regions)
                 {
@@ -261,7 +244,7 @@ namespace cosmo
     {
       double E = 0;
       for (const auto &m : materials)
-        E = std::max(E, m.law.young());
+        E = std::max(E, m.law->young());
       return E;
     }
 
@@ -273,9 +256,8 @@ namespace cosmo
         {
           std::ostringstream s;
           s << m.name << ": "
-            << (m.law.model == HyperelasticModel::neo_hookean ? "neo-Hookean" :
-                                                                "Saint Venant-Kirchhoff")
-            << ", E = " << m.law.young() << ", Poisson " << m.law.poisson() << ", growth "
+            << m.law->name() << ", E = " << m.law->young() << ", Poisson " << m.law->poisson()
+            << ", growth "
             << m.growth.description();
           d.push_back(s.str());
         }

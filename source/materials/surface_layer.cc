@@ -12,6 +12,11 @@
 
 namespace cosmo
 {
+  namespace plugins
+  {
+    template class Registry<materials::SurfaceGrowthLaw>;
+  } // namespace plugins
+
   namespace materials
   {
     namespace
@@ -52,20 +57,7 @@ namespace cosmo
     std::array<double, 2>
     SurfaceLayer::growth(const Point<2> &X, const double t) const
     {
-      auto ramp = [t](const double g) { return growth_ramp(t, g); };
-      switch (growth_kind)
-        {
-          case GrowthKind::none:
-            return {{1., 1.}};
-          case GrowthKind::isotropic:
-            {
-              const double g = ramp(growth_factors->value(X));
-              return {{g, g}};
-            }
-          case GrowthKind::tangential_axial:
-            return {{ramp(growth_factors->value(X, 0)), ramp(growth_factors->value(X, 1))}};
-        }
-      return {{1., 1.}};
+      return growth_law ? growth_law->growth(X, t) : std::array<double, 2>{{1., 1.}};
     }
 
     void
@@ -110,18 +102,7 @@ namespace cosmo
       std::ostringstream s;
       s << name << " on '" << boundary_parts << "': tau0 = " << tension
         << ", lambda_s = " << lambda_s << ", mu_s = " << mu_s << ", ";
-      switch (growth_kind)
-        {
-          case GrowthKind::none:
-            s << "no growth";
-            break;
-          case GrowthKind::isotropic:
-            s << "isotropic growth g = " << growth_text;
-            break;
-          case GrowthKind::tangential_axial:
-            s << "growth (gT; g3) = (" << growth_text << ")";
-            break;
-        }
+      s << (growth_law ? growth_law->description() : std::string("no growth"));
       return s.str();
     }
 
@@ -151,16 +132,17 @@ namespace cosmo
                             "mu_s of the surface law (force per length); the layer's "
                             "in-plane Young's modulus times thickness is "
                             "4 mu_s (lambda_s + mu_s)/(lambda_s + 2 mu_s).");
-          prm.declare_entry("Growth kind", "none",
-                            Patterns::Selection("none|isotropic|tangential and axial"),
+          using Laws = plugins::Registry<SurfaceGrowthLaw>;
+          prm.declare_entry("Growth kind", "none", Patterns::Selection(Laws::names()),
                             "Surface growth Fsg = diag(gT, g3) in the (boundary tangent, "
-                            "axis) basis. none: Fsg = I; isotropic: gT = g3 = g; "
-                            "tangential and axial: separate factors 'gT; g3'.");
+                            "axis) basis (the registered surface growth laws, "
+                            "source/materials/surface_growth_laws/). " + Laws::documentation());
           prm.declare_entry("Growth factor", "1", Patterns::Anything(),
                             "Surface growth factor(s) as muparser expressions of the "
                             "boundary point x, y: one expression (isotropic) or two "
                             "separated by ';' (gT along the boundary; g3 along the axis). "
                             "Ramped as 1 + t (g - 1).");
+          Laws::declare_parameters(prm);
           prm.leave_subsection();
         }
     }
@@ -189,18 +171,10 @@ namespace cosmo
                                      prm.get("Surface Lame modulus"),
                                      "lambda_s + mu_s must be >= 0 (the layer's areal "
                                      "modulus); mu_s = " + prm.get("Surface shear modulus"));
-              const std::string kind = prm.get("Growth kind");
-              l.growth_text          = prm.get("Growth factor");
-              if (kind == "isotropic")
-                l.growth_kind = SurfaceLayer::GrowthKind::isotropic;
-              else if (kind == "tangential and axial")
-                l.growth_kind = SurfaceLayer::GrowthKind::tangential_axial;
-              if (l.growth_kind != SurfaceLayer::GrowthKind::none)
-                l.growth_factors = parse_expressions(
-                  l.growth_text,
-                  l.growth_kind == SurfaceLayer::GrowthKind::isotropic ? 1 : 2,
-                  section,
-                  "Growth factor");
+              l.growth_text = prm.get("Growth factor");
+              auto law      = plugins::Registry<SurfaceGrowthLaw>::create(prm.get("Growth kind"));
+              law->parse_parameters(prm, section);
+              l.growth_law = std::move(law);
               active_layers.push_back(std::move(l));
             }
           prm.leave_subsection();

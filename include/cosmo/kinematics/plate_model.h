@@ -8,7 +8,7 @@
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/materials/rod_law.h>
 
-#include <Sacado.hpp>
+#include <cosmo/materials/energy_derivatives.h>
 
 #include <array>
 #include <string>
@@ -36,11 +36,9 @@ namespace cosmo
   {
     using namespace dealii;
 
-    /// The Sacado numbers of first and second derivatives in N variables.
-    template <int N>
-    using FirstOrderAD = Sacado::Fad::SFad<double, N>;
-    template <int N>
-    using SecondOrderAD = Sacado::Fad::SFad<FirstOrderAD<N>, N>;
+    // The Sacado numbers the assembly differentiates with (energy_derivatives.h).
+    using materials::FirstOrderAD;
+    using materials::SecondOrderAD;
 
 #define COSMO_PLATE_MODEL_OVERLOADS(Number, qualifier)                                          \
   virtual materials::PlateStrains<Number> plate_strains(                                       \

@@ -17,6 +17,13 @@ namespace cosmo
 {
   namespace materials
   {
+    /// The Sacado numbers of first and second derivatives in N variables:
+    /// what differentiate() evaluates an energy with.
+    template <int N>
+    using FirstOrderAD = Sacado::Fad::SFad<double, N>;
+    template <int N>
+    using SecondOrderAD = Sacado::Fad::SFad<FirstOrderAD<N>, N>;
+
     namespace internal
     {
       /**
@@ -32,8 +39,8 @@ namespace cosmo
                     std::array<double, N> &      gradient,
                     std::array<double, N * N> &  hessian)
       {
-        using FirstOrder  = Sacado::Fad::SFad<double, N>;
-        using SecondOrder = Sacado::Fad::SFad<FirstOrder, N>;
+        using FirstOrder  = FirstOrderAD<N>;
+        using SecondOrder = SecondOrderAD<N>;
         if (with_hessian)
           {
             std::array<SecondOrder, N> X;

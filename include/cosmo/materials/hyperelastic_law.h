@@ -1,42 +1,44 @@
 #ifndef cosmo_materials_hyperelastic_law_h
 #define cosmo_materials_hyperelastic_law_h
 
+#include <cosmo/base/plugins.h>
+#include <cosmo/materials/energy_derivatives.h>
+
 #include <array>
-#include <cmath>
+#include <memory>
 #include <string>
 
 /**
- * Isotropic hyperelastic stored-energy functions W(F), templated on the
- * number type so that Sacado differentiates them. F is passed row-major as
- * nine numbers (F[3*i+j] = F_ij) rather than as a dealii::Tensor: the static
- * Sacado types used in the hot loop have no dealii::ProductType
- * specializations, and the laws need nothing but arithmetic.
+ * Hyperelastic stored energies W(Fe) per reference volume of the elastic
+ * part Fe (row-major 3x3), with the small-strain Lame parameters mu and
+ * lambda set from Young's modulus and Poisson's ratio. Implementations
+ * register themselves by name (COSMO_REGISTER_PLUGIN, base/plugins.h), one
+ * file each in source/materials/hyperelastic_laws/ (neo-Hookean, Saint
+ * Venant-Kirchhoff); the names are the values of a material's 'Hyperelastic
+ * law' (doc/cookbook.md).
+ *
+ * GrowingMaterial differentiates W twice by nested Sacado numbers in the 9
+ * components of F (energy_derivatives.h): the interface has one virtual
+ * overload per number type; an implementation writes its energy once as a
+ * template energy_of<Number>(Fe) and derives from HyperelasticLawOf<Itself>.
  */
 namespace cosmo
 {
   namespace materials
   {
-    enum class HyperelasticModel
+    using namespace dealii;
+
+    class HyperelasticLaw
     {
-      neo_hookean,
-      saint_venant_kirchhoff
-    };
+    public:
+      virtual ~HyperelasticLaw() = default;
 
-    /// Parse "neo-Hookean" / "Saint Venant-Kirchhoff"; throws on other names.
-    HyperelasticModel
-    hyperelastic_model_from_string(const std::string &name);
-    /// The pattern string of allowed names, for ParameterHandler.
-    std::string
-    hyperelastic_model_names();
+      double mu     = 0; ///< shear modulus (small-strain)
+      double lambda = 0; ///< first Lame parameter (small-strain)
 
-    struct HyperelasticLaw
-    {
-      HyperelasticModel model  = HyperelasticModel::neo_hookean;
-      double            mu     = 0; ///< shear modulus (small-strain)
-      double            lambda = 0; ///< first Lame parameter (small-strain)
-
-      static HyperelasticLaw
-      from_young_poisson(HyperelasticModel model, double young, double poisson);
+      /// The registered law `name` with the Lame parameters of (E, Poisson).
+      static std::shared_ptr<const HyperelasticLaw>
+      create(const std::string &name, double young, double poisson);
 
       double
       young() const
@@ -49,53 +51,54 @@ namespace cosmo
         return lambda / (2 * (lambda + mu));
       }
 
-      /**
-       * W(F). Compressible neo-Hookean: mu/2 (I1 - 3 - 2 ln J) + lambda/2 (ln J)^2;
-       * Saint-Venant-Kirchhoff: lambda/2 (tr E)^2 + mu E:E, E = (F^T F - I)/2.
-       * For J <= 0 the neo-Hookean energy is +infinity (an inadmissible state).
-       */
-      template <typename Number>
-      Number
-      energy(const std::array<Number, 9> &F) const
+      /// The name it is registered under.
+      virtual std::string
+      name() const = 0;
+
+      /// W(Fe) (infinite where det Fe <= 0 if the law is not defined there).
+      virtual double
+      energy(const std::array<double, 9> &Fe) const = 0;
+      virtual FirstOrderAD<9>
+      energy(const std::array<FirstOrderAD<9>, 9> &Fe) const = 0;
+      virtual SecondOrderAD<9>
+      energy(const std::array<SecondOrderAD<9>, 9> &Fe) const = 0;
+    };
+
+    /// The overloads of HyperelasticLaw from Implementation::energy_of<Number>(Fe).
+    template <class Implementation>
+    class HyperelasticLawOf : public HyperelasticLaw
+    {
+    public:
+      double
+      energy(const std::array<double, 9> &Fe) const override
       {
-        if (model == HyperelasticModel::neo_hookean)
-          {
-            using std::log;
-            const Number J =
-              F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-              F[2] * (F[3] * F[7] - F[4] * F[6]);
-            if (!(J > 0.))
-              return Number(std::numeric_limits<double>::infinity());
-            Number I1 = F[0] * F[0];
-            for (unsigned int k = 1; k < 9; ++k)
-              I1 += F[k] * F[k];
-            const Number lnJ = log(J);
-            return 0.5 * mu * (I1 - 3. - 2. * lnJ) + 0.5 * lambda * lnJ * lnJ;
-          }
-        else
-          {
-            // E = (F^T F - I)/2, symmetric: six independent entries.
-            std::array<Number, 9> E;
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = i; j < 3; ++j)
-                {
-                  Number c = F[i] * F[j];
-                  c += F[3 + i] * F[3 + j];
-                  c += F[6 + i] * F[6 + j];
-                  E[3 * i + j] = 0.5 * (c - (i == j ? 1. : 0.));
-                  E[3 * j + i] = E[3 * i + j];
-                }
-            const Number trE = E[0] + E[4] + E[8];
-            Number       EE  = E[0] * E[0];
-            for (unsigned int k = 1; k < 9; ++k)
-              EE += E[k] * E[k];
-            return 0.5 * lambda * trE * trE + mu * EE;
-          }
+        return self().energy_of(Fe);
+      }
+      FirstOrderAD<9>
+      energy(const std::array<FirstOrderAD<9>, 9> &Fe) const override
+      {
+        return self().energy_of(Fe);
+      }
+      SecondOrderAD<9>
+      energy(const std::array<SecondOrderAD<9>, 9> &Fe) const override
+      {
+        return self().energy_of(Fe);
+      }
+
+    private:
+      const Implementation &
+      self() const
+      {
+        return static_cast<const Implementation &>(*this);
       }
     };
   } // namespace materials
-} // namespace cosmo
 
-#include <limits>
+  namespace plugins
+  {
+    // One registry of hyperelastic laws per process (instantiated in source/materials/material.cc).
+    extern template class Registry<materials::HyperelasticLaw>;
+  } // namespace plugins
+} // namespace cosmo
 
 #endif

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,8 @@ namespace cosmo
     public:
       std::string     name;
       std::string     section; ///< its parameter section, for error messages
-      HyperelasticLaw law;
+      /// The registered stored energy named by 'Hyperelastic law' (shared: materials are copied).
+      std::shared_ptr<const HyperelasticLaw> law;
       GrowthTensor    growth;
 
       /// Jg W(F Fg^-1) and dW/dF; second derivatives if `tangent`.

@@ -5,6 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <cosmo/base/plugins.h>
+
 #include <array>
 #include <memory>
 #include <string>
@@ -42,15 +44,31 @@ namespace cosmo
       std::array<double, 36> C{}; ///< d2Ws/dFs2, C[6*a+b]
     };
 
+    /**
+     * A surface growth law: Fsg = diag(gT, g3) in the (boundary tangent,
+     * axis) basis at a boundary point, ramped to the load t. Implementations
+     * register themselves by name (COSMO_REGISTER_PLUGIN, base/plugins.h),
+     * one file each in source/materials/surface_growth_laws/; the names are
+     * the values of a surface layer's 'Growth kind' (doc/cookbook.md).
+     */
+    class SurfaceGrowthLaw
+    {
+    public:
+      virtual ~SurfaceGrowthLaw() = default;
+      /// Reads its entries in the layer's section (entered; `where` names it).
+      virtual void
+      parse_parameters(ParameterHandler &prm, const std::string &where) = 0;
+      /// (gT, g3) at boundary point X and load t (every factor ramped by growth_ramp).
+      virtual std::array<double, 2>
+      growth(const Point<2> &X, double t) const = 0;
+      /// e.g. "isotropic growth g = 1.1"
+      virtual std::string
+      description() const = 0;
+    };
+
     class SurfaceLayer
     {
     public:
-      enum class GrowthKind
-      {
-        none,
-        isotropic,
-        tangential_axial
-      };
 
       std::string name;
       std::string section;        ///< its parameter section, for error messages
@@ -90,9 +108,10 @@ namespace cosmo
       std::string
       description() const;
 
-      GrowthKind                         growth_kind = GrowthKind::none;
-      std::string                        growth_text;
-      std::shared_ptr<FunctionParser<2>> growth_factors; // 1 (isotropic) or 2 (gT; g3)
+      /// The registered law its 'Growth kind' names (shared: layers are copied).
+      std::shared_ptr<const SurfaceGrowthLaw> growth_law;
+      /// Its 'Growth factor' text (for error messages).
+      std::string growth_text;
     };
 
     /**
@@ -121,6 +140,15 @@ namespace cosmo
       std::vector<SurfaceLayer> active_layers;
     };
   } // namespace materials
+} // namespace cosmo
+
+namespace cosmo
+{
+  namespace plugins
+  {
+    // One registry of surface growth laws per process (instantiated in source/materials/surface_layer.cc).
+    extern template class Registry<materials::SurfaceGrowthLaw>;
+  } // namespace plugins
 } // namespace cosmo
 
 #endif

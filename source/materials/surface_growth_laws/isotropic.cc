@@ -1,0 +1,40 @@
+// Isotropic surface growth: gT = g3 = g.
+#include <cosmo/materials/growth.h>
+#include <cosmo/materials/surface_layer.h>
+
+namespace cosmo
+{
+  namespace materials
+  {
+    class IsotropicSurfaceGrowth : public SurfaceGrowthLaw
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &where) override
+      {
+        text   = prm.get("Growth factor");
+        factor = parse_expressions(text, 1, where, "Growth factor");
+      }
+      std::array<double, 2>
+      growth(const Point<2> &X, const double t) const override
+      {
+        const double g = growth_ramp(t, factor->value(X));
+        return {{g, g}};
+      }
+      std::string
+      description() const override
+      {
+        return "isotropic growth g = " + text;
+      }
+
+    private:
+      std::string                        text;
+      std::unique_ptr<FunctionParser<2>> factor;
+    };
+
+    COSMO_REGISTER_PLUGIN(SurfaceGrowthLaw, IsotropicSurfaceGrowth, "isotropic", "gT = g3 = g.")
+  } // namespace materials
+} // namespace cosmo

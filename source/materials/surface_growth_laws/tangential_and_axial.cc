@@ -1,0 +1,43 @@
+// Surface growth with separate factors along the boundary (gT) and along
+// the rod's axis (g3).
+#include <cosmo/materials/growth.h>
+#include <cosmo/materials/surface_layer.h>
+
+namespace cosmo
+{
+  namespace materials
+  {
+    class TangentialAxialSurfaceGrowth : public SurfaceGrowthLaw
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &where) override
+      {
+        text    = prm.get("Growth factor");
+        factors = parse_expressions(text, 2, where, "Growth factor");
+      }
+      std::array<double, 2>
+      growth(const Point<2> &X, const double t) const override
+      {
+        return {{growth_ramp(t, factors->value(X, 0)), growth_ramp(t, factors->value(X, 1))}};
+      }
+      std::string
+      description() const override
+      {
+        return "growth (gT; g3) = (" + text + ")";
+      }
+
+    private:
+      std::string                        text;
+      std::unique_ptr<FunctionParser<2>> factors;
+    };
+
+    COSMO_REGISTER_PLUGIN(SurfaceGrowthLaw,
+                          TangentialAxialSurfaceGrowth,
+                          "tangential and axial",
+                          "separate factors 'gT; g3'.")
+  } // namespace materials
+} // namespace cosmo
