@@ -74,16 +74,22 @@ namespace cosmo
       }
 
     void
-    ScalarFactorGrowthLaw::parse_parameters(ParameterHandler &prm, const std::string &where)
+    GrowthFactors::parse(ParameterHandler &prm, const std::string &where, const unsigned int n)
     {
-      factor_text = prm.get("Growth factor");
-      factor      = parse_expressions(factor_text, 1, where, "Growth factor");
+      expression_text = prm.get("Growth factor");
+      expressions     = parse_expressions(expression_text, n, where, "Growth factor");
     }
 
     double
-    ScalarFactorGrowthLaw::ramped_factor(const Point<2> &X, const double t) const
+    GrowthFactors::ramped(const Point<2> &X, const double t, const unsigned int component) const
     {
-      return growth_ramp(t, factor->value(X));
+      return growth_ramp(t, expressions->value(X, component));
+    }
+
+    void
+    ScalarFactorGrowthLaw::parse_parameters(ParameterHandler &prm, const std::string &where)
+    {
+      factor.parse(prm, where, 1);
     }
 
     void

@@ -26,7 +26,7 @@ namespace cosmo
       std::string
       description() const override
       {
-        return "volumetric, J = " + factor_text;
+        return "volumetric, J = " + factor_text();
       }
     };
 

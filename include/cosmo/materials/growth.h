@@ -55,6 +55,31 @@ namespace cosmo
                       const std::string &entry);
 
     /**
+     * The 'Growth factor' entry of a growth law: n expressions of x, y
+     * separated by ';', parsed (an io::InputError names the section and the
+     * entry) and evaluated ramped to the load t.
+     */
+    class GrowthFactors
+    {
+    public:
+      void
+      parse(ParameterHandler &prm, const std::string &where, unsigned int n_components);
+      /// growth_ramp(t, g_c(X)) = 1 + t (g_c(X) - 1).
+      double
+      ramped(const Point<2> &X, double t, unsigned int component = 0) const;
+      /// The entry's text, as given.
+      const std::string &
+      text() const
+      {
+        return expression_text;
+      }
+
+    private:
+      std::string                        expression_text;
+      std::unique_ptr<FunctionParser<2>> expressions;
+    };
+
+    /**
      * A bulk growth law: Fg(X, t) on the cross-section. Implementations
      * register themselves by name (COSMO_REGISTER_PLUGIN(BulkGrowthLaw, ...),
      * base/plugins.h), one file each in source/materials/growth_laws/; the
@@ -98,12 +123,19 @@ namespace cosmo
     protected:
       /// growth_ramp(t, g(X)) = 1 + t (g(X) - 1).
       double
-      ramped_factor(const Point<2> &X, double t) const;
+      ramped_factor(const Point<2> &X, const double t) const
+      {
+        return factor.ramped(X, t);
+      }
       /// The expression as given.
-      std::string factor_text;
+      const std::string &
+      factor_text() const
+      {
+        return factor.text();
+      }
 
     private:
-      std::unique_ptr<FunctionParser<2>> factor;
+      GrowthFactors factor;
     };
 
     /// Growth I + (g - 1) f (x) f along the unit vector f (fibre-type laws).

@@ -16,7 +16,7 @@ namespace cosmo
       std::string
       description() const override
       {
-        return "axial, g = " + factor_text;
+        return "axial, g = " + factor_text();
       }
     };
 

@@ -38,7 +38,7 @@ namespace cosmo
       std::string
       description() const override
       {
-        return "fibre, g = " + factor_text + ", f = (" + fibre_text + ")";
+        return "fibre, g = " + factor_text() + ", f = (" + fibre_text + ")";
       }
 
     private:

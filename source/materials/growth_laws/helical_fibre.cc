@@ -47,7 +47,7 @@ namespace cosmo
       description() const override
       {
         std::ostringstream s;
-        s << "helical fibre, g = " << factor_text << ", angle " << angle * 180 / M_PI << " deg";
+        s << "helical fibre, g = " << factor_text() << ", angle " << angle * 180 / M_PI << " deg";
         return s.str();
       }
 

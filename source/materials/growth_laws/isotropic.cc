@@ -16,7 +16,7 @@ namespace cosmo
       std::string
       description() const override
       {
-        return "isotropic, g = " + factor_text;
+        return "isotropic, g = " + factor_text();
       }
     };
 

@@ -14,26 +14,24 @@ namespace cosmo
       void
       parse_parameters(ParameterHandler &prm, const std::string &where) override
       {
-        text   = prm.get("Growth factor");
-        factor = parse_expressions(text, 3, where, "Growth factor");
+        factors.parse(prm, where, 3);
       }
       Tensor<2, 3>
       value(const Point<2> &X, const double t) const override
       {
         Tensor<2, 3> Fg;
         for (unsigned int i = 0; i < 3; ++i)
-          Fg[i][i] = growth_ramp(t, factor->value(X, i));
+          Fg[i][i] = factors.ramped(X, t, i);
         return Fg;
       }
       std::string
       description() const override
       {
-        return "orthotropic, (g1; g2; g3) = (" + text + ")";
+        return "orthotropic, (g1; g2; g3) = (" + factors.text() + ")";
       }
 
     private:
-      std::string                        text;
-      std::unique_ptr<FunctionParser<2>> factor;
+      GrowthFactors factors;
     };
 
     COSMO_REGISTER_PLUGIN(BulkGrowthLaw,

@@ -15,24 +15,22 @@ namespace cosmo
       void
       parse_parameters(ParameterHandler &prm, const std::string &where) override
       {
-        text   = prm.get("Growth factor");
-        factor = parse_expressions(text, 1, where, "Growth factor");
+        factor.parse(prm, where, 1);
       }
       std::array<double, 2>
       growth(const Point<2> &X, const double t) const override
       {
-        const double g = growth_ramp(t, factor->value(X));
+        const double g = factor.ramped(X, t);
         return {{g, g}};
       }
       std::string
       description() const override
       {
-        return "isotropic growth g = " + text;
+        return "isotropic growth g = " + factor.text();
       }
 
     private:
-      std::string                        text;
-      std::unique_ptr<FunctionParser<2>> factor;
+      GrowthFactors factor;
     };
 
     COSMO_REGISTER_PLUGIN(SurfaceGrowthLaw, IsotropicSurfaceGrowth, "isotropic", "gT = g3 = g.")

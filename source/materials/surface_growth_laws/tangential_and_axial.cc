@@ -16,23 +16,21 @@ namespace cosmo
       void
       parse_parameters(ParameterHandler &prm, const std::string &where) override
       {
-        text    = prm.get("Growth factor");
-        factors = parse_expressions(text, 2, where, "Growth factor");
+        factors.parse(prm, where, 2);
       }
       std::array<double, 2>
       growth(const Point<2> &X, const double t) const override
       {
-        return {{growth_ramp(t, factors->value(X, 0)), growth_ramp(t, factors->value(X, 1))}};
+        return {{factors.ramped(X, t, 0), factors.ramped(X, t, 1)}};
       }
       std::string
       description() const override
       {
-        return "growth (gT; g3) = (" + text + ")";
+        return "growth (gT; g3) = (" + factors.text() + ")";
       }
 
     private:
-      std::string                        text;
-      std::unique_ptr<FunctionParser<2>> factors;
+      GrowthFactors factors;
     };
 
     COSMO_REGISTER_PLUGIN(SurfaceGrowthLaw,
