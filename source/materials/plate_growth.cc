@@ -7,26 +7,31 @@
 
 namespace cosmo
 {
+  namespace plugins
+  {
+    template class Registry<materials::PlateGrowthLaw>;
+  } // namespace plugins
+
   namespace materials
   {
     void
     PlateGrowth::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Plate growth");
-      prm.declare_entry("Kind", "none", Patterns::Selection("none|isotropic|polar"),
-                        "none: G = I. isotropic: g I with g = 'Radial growth factor'. "
-                        "polar: g_r e_r (x) e_r + g_t e_t (x) e_t.");
+      using Laws = plugins::Registry<PlateGrowthLaw>;
+      prm.declare_entry("Kind", "none", Patterns::Selection(Laws::names()),
+                        "In-plane growth G of the plate (the registered laws, "
+                        "source/materials/plate_growth_laws/). " + Laws::documentation());
       prm.declare_entry("Radial growth factor", "1", Patterns::Anything(),
                         "g_r (or g, isotropic) as a muparser expression of the radius r.");
       prm.declare_entry("Circumferential growth factor", "1", Patterns::Anything(),
                         "g_t as a muparser expression of the radius r (polar growth).");
+      Laws::declare_parameters(prm);
       prm.leave_subsection();
     }
 
-    namespace
-    {
-      std::shared_ptr<FunctionParser<1>>
-      parse_of_r(const std::string &text, const std::string &entry)
+    std::shared_ptr<FunctionParser<1>>
+      parse_expression_of_r(const std::string &text, const std::string &entry)
       {
         auto f = std::make_shared<FunctionParser<1>>(1);
         try
@@ -44,31 +49,21 @@ namespace cosmo
           }
         return f;
       }
-    } // namespace
 
     void
     PlateGrowth::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Plate growth");
-      kind = prm.get("Kind");
-      radial.reset();
-      circumferential.reset();
-      if (kind != "none")
-        radial = parse_of_r(prm.get("Radial growth factor"), "Radial growth factor");
-      if (kind == "polar")
-        circumferential =
-          parse_of_r(prm.get("Circumferential growth factor"), "Circumferential growth factor");
+      auto l = plugins::Registry<PlateGrowthLaw>::create(prm.get("Kind"));
+      l->parse_parameters(prm);
+      law = std::move(l);
       prm.leave_subsection();
     }
 
     std::array<double, 2>
     PlateGrowth::factors(const double r, const double t) const
     {
-      auto ramp = [t](const double g) { return growth_ramp(t, g); };
-      if (kind == "none")
-        return {{1., 1.}};
-      const double gr = ramp(radial->value(Point<1>(r)));
-      return {{gr, kind == "polar" ? ramp(circumferential->value(Point<1>(r))) : gr}};
+      return law ? law->factors(r, t) : std::array<double, 2>{{1., 1.}};
     }
 
     std::array<std::array<double, 2>, 2>

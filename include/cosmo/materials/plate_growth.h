@@ -5,6 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <cosmo/base/plugins.h>
+
 #include <array>
 #include <memory>
 #include <string>
@@ -21,6 +23,33 @@ namespace cosmo
   {
     using namespace dealii;
 
+    /**
+     * A law of in-plane plate growth: the factors (g_r, g_t) at radius r and
+     * load t (ramped by growth_ramp). Implementations register themselves by
+     * name (COSMO_REGISTER_PLUGIN, base/plugins.h), one file each in
+     * source/materials/plate_growth_laws/; the names are the values of
+     * 'Plate growth / Kind' (doc/cookbook.md).
+     */
+    class PlateGrowthLaw
+    {
+    public:
+      virtual ~PlateGrowthLaw() = default;
+      /// Reads its entries in 'Plate growth' (entered).
+      virtual void
+      parse_parameters(ParameterHandler &prm) = 0;
+      /// (g_r, g_t) at radius r and load t.
+      virtual std::array<double, 2>
+      factors(double r, double t) const = 0;
+    };
+
+    /**
+     * An expression of the radius r (and pi) given in entry `entry` of
+     * 'Plate growth'; an io::InputError names both if it does not parse.
+     */
+    std::shared_ptr<FunctionParser<1>>
+    parse_expression_of_r(const std::string &text, const std::string &entry);
+
+    /// The plate's growth G = g_r e_r (x) e_r + g_t e_t (x) e_t from the law 'Kind' names.
     class PlateGrowth
     {
     public:
@@ -38,10 +67,18 @@ namespace cosmo
       factors(double r, double t) const;
 
     private:
-      std::string                        kind = "none";
-      std::shared_ptr<FunctionParser<1>> radial, circumferential;
+      std::shared_ptr<const PlateGrowthLaw> law;
     };
   } // namespace materials
+} // namespace cosmo
+
+namespace cosmo
+{
+  namespace plugins
+  {
+    // One registry of plate growth laws per process (instantiated in source/materials/plate_growth.cc).
+    extern template class Registry<materials::PlateGrowthLaw>;
+  } // namespace plugins
 } // namespace cosmo
 
 #endif
