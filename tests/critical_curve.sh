@@ -27,8 +27,9 @@ for x, y in zip(a, b):
     ta, tb = float(x["t_critical"]), float(y["t_critical"])
     # the independent run's resolution; the curve's must not be 4x worse,
     # beyond the 1e-10 (|t| + 1e-2 |t|) to which a curve locates its points
-    # (solvers/critical_point_study.h): the resolution column includes the
-    # Newton precision
+    # where that is above R/10 (solvers/critical_point_study.h; a point
+    # accepted at R/10 states R): the resolution column includes the Newton
+    # precision
     ra, rb = float(x["t_resolution"]), float(y["t_resolution"])
     tol = max(1e-7 * abs(ta), 2 * ra)
     fa += float(x["factorizations"]); fb += float(y["factorizations"])

@@ -31,24 +31,24 @@ namespace cosmo
     }
 
     std::shared_ptr<FunctionParser<1>>
-      parse_expression_of_r(const std::string &text, const std::string &entry)
-      {
-        auto f = std::make_shared<FunctionParser<1>>(1);
-        try
-          {
-            f->initialize("r", text, {{"pi", M_PI}});
-            f->value(Point<1>(0.123));
-          }
-        catch (ExceptionBase &e)
-          {
-            std::ostringstream info;
-            e.print_info(info);
-            throw io::InputError("Plate growth", entry, text,
-                                 "a muparser expression of r (and pi); the parser said: " +
-                                   info.str());
-          }
-        return f;
-      }
+    parse_expression_of_r(const std::string &text, const std::string &entry)
+    {
+      auto f = std::make_shared<FunctionParser<1>>(1);
+      try
+        {
+          f->initialize("r", text, {{"pi", M_PI}});
+          f->value(Point<1>(0.123));
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          throw io::InputError("Plate growth", entry, text,
+                               "a muparser expression of r (and pi); the parser said: " +
+                                 info.str());
+        }
+      return f;
+    }
 
     void
     PlateGrowth::parse_parameters(ParameterHandler &prm)

@@ -57,12 +57,6 @@ namespace cosmo
         return true;
       }
 
-      static bool
-      has(const std::string &name)
-      {
-        return entries().count(name) > 0;
-      }
-
       /// A new instance of the implementation registered as `name`.
       static std::unique_ptr<Interface>
       create(const std::string &name)

@@ -206,6 +206,33 @@ namespace cosmo
         return r1;
       }
 
+      /**
+       * The rod's strains in its reference frame from the spatial vectors v
+       * (of nu) and w (of kappa): nu_k = Lambda0^T v, kappa = Lambda0^T w +
+       * kappa0.
+       */
+      template <typename Number>
+      std::array<Number, 6>
+      in_rim_frame(const RimFrame &             f,
+                   const Number (&v)[3],
+                   const Number (&w)[3],
+                   const std::array<double, 3> &kappa0)
+      {
+        std::array<Number, 6> e;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            Number n = 0. * v[0], m = 0. * v[0];
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                n += f.Lambda0[i][k] * v[i];
+                m += f.Lambda0[i][k] * w[i];
+              }
+            e[k]     = n;
+            e[3 + k] = m + kappa0[k];
+          }
+        return e;
+      }
+
       /// The rod's six strains (nu, kappa) with moderate rotations (von Karman), kappa0 added.
       template <typename Number>
       std::array<Number, 6>
@@ -213,37 +240,25 @@ namespace cosmo
                              const RimFrame &                              f,
                              const std::array<double, 3> &                 kappa0)
       {
-        std::array<Number, 6>      e;
-        const Tensor<1, 3, Number> r1 = rim_tangent(z, f);
-        {
-          // Linearized rotation psi = theta + alpha E3: nu = Lambda0^T (r' - psi x t),
-          // kappa = kappa0 + Lambda0^T psi'; the axial strain keeps the squares of the
-          // in-plane and out-of-plane rotations of the tangent.
-          const Number psi[3]  = {z[6], z[7], z[10]};
-          const Number dpsi[3] = {z[8], z[9], z[11]};
-          const auto & t       = f.tangent;
-          const Number pxt[3]  = {psi[1] * t[2] - psi[2] * t[1], psi[2] * t[0] - psi[0] * t[2],
-                                 psi[0] * t[1] - psi[1] * t[0]};
-          for (unsigned int k = 0; k < 3; ++k)
-            {
-              Number n = 0. * z[0], m = 0. * z[0];
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  n += f.Lambda0[i][k] * (r1[i] - pxt[i]);
-                  m += f.Lambda0[i][k] * dpsi[i];
-                }
-              e[k]     = n;
-              e[3 + k] = m + kappa0[k];
-            }
-          Number q1 = 0. * z[0], q2 = 0. * z[0];
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              q1 += f.Lambda0[i][0] * z[3 + i];
-              q2 += f.Lambda0[i][1] * z[3 + i];
-            }
-          e[2] += 0.5 * (q1 * q1 + q2 * q2);
-          return e;
-        }
+        // Linearized rotation psi = theta + alpha E3: nu = Lambda0^T (r' - psi x t),
+        // kappa = kappa0 + Lambda0^T psi'; the axial strain keeps the squares of the
+        // in-plane and out-of-plane rotations of the tangent.
+        const Tensor<1, 3, Number> r1      = rim_tangent(z, f);
+        const Number               psi[3]  = {z[6], z[7], z[10]};
+        const Number               dpsi[3] = {z[8], z[9], z[11]};
+        const auto &               t       = f.tangent;
+        const Number               v[3]    = {r1[0] - (psi[1] * t[2] - psi[2] * t[1]),
+                                   r1[1] - (psi[2] * t[0] - psi[0] * t[2]),
+                                   r1[2] - (psi[0] * t[1] - psi[1] * t[0])};
+        std::array<Number, 6>      e       = in_rim_frame(f, v, dpsi, kappa0);
+        Number                     q1 = 0. * z[0], q2 = 0. * z[0];
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            q1 += f.Lambda0[i][0] * z[3 + i];
+            q2 += f.Lambda0[i][1] * z[3 + i];
+          }
+        e[2] += 0.5 * (q1 * q1 + q2 * q2);
+        return e;
       }
 
       /// The rod's six strains (nu, kappa) from the exact rotations, kappa0 added.
@@ -253,41 +268,29 @@ namespace cosmo
                         const RimFrame &                              f,
                         const std::array<double, 3> &                 kappa0)
       {
-      std::array<Number, 6>      e;
-      const Tensor<1, 3, Number> r1 = rim_tangent(z, f);
-      Tensor<1, 3, Number> theta;
-      theta[0]                     = z[6];
-      theta[1]                     = z[7];
-      const Tensor<2, 3, Number> A = rotation_exp(theta);
-      const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
-      using std::cos;
-      using std::sin;
-      const Number c = cos(z[10]), s = sin(z[10]);
-      // B = exp(alpha [E3]x); w = B^T (T theta') + alpha' E3; v = B^T A^T r'.
-      Number wA[3], Ar[3];
-      for (unsigned int i = 0; i < 3; ++i)
-        {
-          wA[i] = T[i][0] * z[8];
-          wA[i] += T[i][1] * z[9];
-          Ar[i] = A[0][i] * r1[0];
-          Ar[i] += A[1][i] * r1[1];
-          Ar[i] += A[2][i] * r1[2];
-        }
-      const Number w[3] = {c * wA[0] + s * wA[1], -s * wA[0] + c * wA[1], wA[2] + z[11]};
-      const Number v[3] = {c * Ar[0] + s * Ar[1], -s * Ar[0] + c * Ar[1], Ar[2]};
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          Number n = 0. * z[0], m = 0. * z[0];
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              n += f.Lambda0[i][k] * v[i];
-              m += f.Lambda0[i][k] * w[i];
-            }
-          e[k]     = n;
-          e[3 + k] = m + kappa0[k];
-        }
-      return e;
-    }
+        const Tensor<1, 3, Number> r1 = rim_tangent(z, f);
+        Tensor<1, 3, Number>       theta;
+        theta[0]                     = z[6];
+        theta[1]                     = z[7];
+        const Tensor<2, 3, Number> A = rotation_exp(theta);
+        const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
+        using std::cos;
+        using std::sin;
+        const Number c = cos(z[10]), s = sin(z[10]);
+        // B = exp(alpha [E3]x); w = B^T (T theta') + alpha' E3; v = B^T A^T r'.
+        Number wA[3], Ar[3];
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            wA[i] = T[i][0] * z[8];
+            wA[i] += T[i][1] * z[9];
+            Ar[i] = A[0][i] * r1[0];
+            Ar[i] += A[1][i] * r1[1];
+            Ar[i] += A[2][i] * r1[2];
+          }
+        const Number w[3] = {c * wA[0] + s * wA[1], -s * wA[0] + c * wA[1], wA[2] + z[11]};
+        const Number v[3] = {c * Ar[0] + s * Ar[1], -s * Ar[0] + c * Ar[1], Ar[2]};
+        return in_rim_frame(f, v, w, kappa0);
+      }
     } // namespace internal
 
   } // namespace kinematics
