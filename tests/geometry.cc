@@ -608,29 +608,41 @@ namespace
   {
     auto mesh = [](const std::string &file, const std::string &program = "gmsh") {
       return input_error([&]() {
-        auto g         = gmsh_geometry(file);
-        g.gmsh_program = program;
+        auto g = geometry_from(" set Shape = gmsh\n set Mesh file = " + file +
+                               "\n set Gmsh program = " + program +
+                               "\n set Global refinements = 0");
+        Triangulation<2> tria;
+        g.create_triangulation(tria);
+      });
+    };
+    // What was there when the file was parsed and is gone when it is meshed.
+    auto removed_before_meshing = [](const std::string &file, const std::string &program,
+                                     const std::string &removed) {
+      return input_error([&]() {
+        auto g = geometry_from(" set Shape = gmsh\n set Mesh file = " + file +
+                               "\n set Gmsh program = " + program +
+                               "\n set Global refinements = 0");
+        std::filesystem::remove(removed);
         Triangulation<2> tria;
         g.create_triangulation(tria);
       });
     };
     check_message("missing .geo (at parse)", mesh("no_such_section.geo"),
                   {"Cross-section", "Mesh file", "no_such_section.geo", "cannot open"});
-    check_message("missing .geo (at meshing)", input_error([]() {
-                    geometry::CrossSectionGeometry g;
-                    g.shape     = "gmsh";
-                    g.mesh_file = "no_such_section.geo";
-                    Triangulation<2> tria;
-                    g.create_triangulation(tria);
-                  }),
+    const std::string vanishing_geo = scratch_file("vanishing.geo", "Point(1) = {0, 0, 0, 0.1};\n");
+    check_message("missing .geo (at meshing)",
+                  removed_before_meshing(vanishing_geo, "gmsh", vanishing_geo),
                   {"Mesh file", "does not exist"});
     check_message("gmsh program not found", input_error([]() {
                     geometry_from(" set Shape = gmsh\n set Mesh file = " + data_directory +
                                   "/circle.geo\n set Gmsh program = no-such-gmsh");
                   }),
                   {"Mesh file", "'no-such-gmsh' is not found"});
+    const std::string vanishing_gmsh = scratch_file("vanishing-gmsh", "#!/bin/sh\nexit 0\n");
+    std::filesystem::permissions(vanishing_gmsh, std::filesystem::perms::owner_all);
     check_message("gmsh program not found (at meshing)",
-                  mesh(data_directory + "/circle.geo", "/nonexistent/gmsh"),
+                  removed_before_meshing(data_directory + "/circle.geo", vanishing_gmsh,
+                                         vanishing_gmsh),
                   {"Mesh file", "not found"});
     check_message("syntax error: gmsh's message is shown",
                   mesh(scratch_file("syntax.geo", "Point(1) = {0, 0, 0 0.1};\n")),

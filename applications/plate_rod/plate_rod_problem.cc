@@ -69,22 +69,6 @@ namespace cosmo
         return {2, {10, 11, 0}, {N, dS, 0}};
       }
 
-      /// The rim's reference frame at X with the discrete unit tangent t (clockwise).
-      kinematics::RimFrame
-      rim_frame(const Point<2> &X, const Tensor<1, 2> &normal)
-      {
-        kinematics::RimFrame f;
-        const double         r = X.norm();
-        const double         c = X[0] / r, s = X[1] / r;
-        // d1 = e_r, d2 = E3, d3 = d1 x d2 = -e_theta (columns of Lambda0).
-        f.Lambda0[0][0] = c, f.Lambda0[1][0] = s;
-        f.Lambda0[2][1] = 1;
-        f.Lambda0[0][2] = s, f.Lambda0[1][2] = -c;
-        f.tangent[0]    = normal[1];
-        f.tangent[1]    = -normal[0];
-        return f;
-      }
-
       struct Scratch
       {
         Scratch(const Mapping<2> &     mapping,
@@ -618,12 +602,7 @@ namespace cosmo
     kinematics::PlateGrowthAtPoint
     PlateRodProblem::growth_at(const Point<2> &X, const double t) const
     {
-      const auto                     G = plate_growth.value(X, t);
-      kinematics::PlateGrowthAtPoint g;
-      g.det_G = G[0][0] * G[1][1] - G[0][1] * G[1][0];
-      g.G_inv = {{{{G[1][1] / g.det_G, -G[0][1] / g.det_G}},
-                  {{-G[1][0] / g.det_G, G[0][0] / g.det_G}}}};
-      return g;
+      return kinematics::PlateGrowthAtPoint::of(plate_growth.value(X, t));
     }
 
     materials::QuadraticRodLaw
@@ -672,16 +651,11 @@ namespace cosmo
           {
             FEValues<2> &fev =
               membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
-            // Stabilized shear (Pitkaranta; Stenberg): fully integrated with the shear
-            // stiffness times t^2/(t^2 + alpha h_K^2), t^2 the thickness squared over the
-            // Kirchhoff penalty: locking-free, and without the spurious transverse mode that
-            // reduced integration of Q2 leaves (doc/theory-plate-rod.md).
-            double cell_shear_scale = shear_scale;
-            if (!membrane_bending && stabilized_shear)
-              {
-                const double t2 = thickness * thickness / shear_scale, hK = cell->diameter();
-                cell_shear_scale = shear_scale * t2 / (t2 + shear_stabilization * hK * hK);
-              }
+            const double cell_shear_scale =
+              !membrane_bending && stabilized_shear ?
+                kinematics::stabilized_shear_scale(thickness, shear_scale, shear_stabilization,
+                                                   cell->diameter()) :
+                shear_scale;
             fev.reinit(cell);
             for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
               {
@@ -723,7 +697,7 @@ namespace cosmo
               for (unsigned int q = 0; q < sc.fev_face.n_quadrature_points; ++q)
                 {
                   const Point<2> X     = sc.fev_face.quadrature_point(q);
-                  const auto     frame = rim_frame(X, sc.fev_face.normal_vector(q));
+                  const auto     frame = kinematics::circular_rim_frame(X, sc.fev_face.normal_vector(q));
                   const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
                   zr.fill(0.);
                   for (unsigned int i = 0; i < dpc; ++i)
@@ -972,16 +946,7 @@ namespace cosmo
           if (std::abs(g[0] - g0[0]) > 1e-14 || std::abs(g[1] - g0[0]) > 1e-14)
             return std::numeric_limits<double>::quiet_NaN();
         }
-      return g0[0] / rod_growth_at(t) - 1;
-    }
-
-    void
-    PlateRodProblem::say(const std::string &line)
-    {
-      if (log)
-        (*log)(line);
-      else if (!quiet)
-        std::cout << line << std::endl;
+      return analysis::growth_mismatch(g0[0], rod_growth_at(t));
     }
 
     void
@@ -1240,7 +1205,7 @@ namespace cosmo
               for (unsigned int k = 0; k < nodes.size(); ++k)
                 {
                   const Point<2> X     = fev.quadrature_point(k);
-                  const auto     frame = rim_frame(X, fev.normal_vector(k));
+                  const auto     frame = kinematics::circular_rim_frame(X, fev.normal_vector(k));
                   const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
                   std::array<double, n_rim> z{};
                   for (unsigned int c = 0; c < 3; ++c)
@@ -1308,9 +1273,9 @@ namespace cosmo
       if (!std::isfinite(Delta1) || Delta1 == 0)
         return closed;
       const auto p = closed_form_setting();
-      // t at which the mismatch g_p/g_r - 1 reaches Delta (linear ramps).
+      // t at which the mismatch reaches Delta (linear ramps).
       const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;
-      auto         t_of = [&](const double D) { return D / (a - b * (1 + D)); };
+      auto         t_of = [&](const double D) { return analysis::load_parameter_at_mismatch(D, a, b); };
       auto         entry = [&](const unsigned int n, const double D) {
         io::JSON x    = io::JSON::object();
         x["n"]        = n;
@@ -1369,12 +1334,10 @@ namespace cosmo
     void
     PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
-      quiet        = options.quiet;
       write_output = true;
-      log = io::open_run_directory(output_directory, prm, quiet);
+      record.open(output_directory, prm, options);
       plate_series = std::make_unique<io::PVDSeries>(output_directory + "/plate.pvd");
       rim_series   = std::make_unique<io::PVDSeries>(output_directory + "/rim.pvd");
-      say("plate_rod " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
       setup_system();
       std::ostringstream info;
       info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness
@@ -1418,52 +1381,30 @@ namespace cosmo
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("smallest_eigenvalue");
 
-      std::string status = "converged", message;
-      try
-        {
-          if (critical_guess)
-            locate_from_guess();
-          else
+      record.attempt([&]() {
+        if (critical_guess)
+          return locate_from_guess();
+        set_load_parameter(path_start);
+        try
           {
-          set_load_parameter(path_start);
-          solve_flat_state(path_start);
-          if (setup_jacobian(solution) == 0 && n_negative_eigenvalues() > 0)
-            throw io::InputError(
-              "Growth path", "Start", std::to_string(path_start),
-              "the flat state there is already unstable (" +
-                std::to_string(n_negative_eigenvalues()) +
-                " negative eigenvalues) and no initial guess of a buckled state can be given: "
-                "start the path below the first critical growth (t = 0 always is)");
-          follow_branches();
+            solve_flat_state(path_start);
           }
-        }
-      catch (solvers::NewtonFailure &e)
-        {
-          status  = "failed";
-          message = std::string("the flat state at the start did not converge: ") + e.what();
-        }
-      catch (io::RunFailure &e)
-        {
-          status  = "failed";
-          message = e.what();
-        }
-      catch (io::InputError &)
-        {
-          throw;
-        }
-      catch (std::exception &e)
-        {
-          // Anything else (a Jacobian that cannot be set up at an event, a file that
-          // cannot be written): still leave a summary of what was done.
-          status  = "failed";
-          message = e.what();
-        }
+        catch (solvers::NewtonFailure &e)
+          {
+            throw io::RunFailure(std::string("the flat state at the start did not converge: ") +
+                                 e.what());
+          }
+        if (setup_jacobian(solution) == 0 && n_negative_eigenvalues() > 0)
+          throw io::InputError(
+            "Growth path", "Start", std::to_string(path_start),
+            "the flat state there is already unstable (" +
+              std::to_string(n_negative_eigenvalues()) +
+              " negative eigenvalues) and no initial guess of a buckled state can be given: "
+              "start the path below the first critical growth (t = 0 always is)");
+        follow_branches();
+      });
 
-      io::JSON j       = io::JSON::object();
-      j["application"] = "plate_rod";
-      j["version"]     = COSMO_VERSION;
-      j["status"]      = status;
-      j["message"]     = message;
+      io::JSON j       = record.summary();
       j["model"]       = model->name();
       j["domain"]      = domain == "sector" ? "sector" : "full disc";
       if (domain == "sector")
@@ -1499,13 +1440,8 @@ namespace cosmo
           solvers::add_location_to_json(e, x);
           ev.push_back(x);
         }
-      j["events"]  = ev;
-      j["timings"] = timer.to_json();
-      io::write_file_atomically(output_directory + "/summary.json",
-                                [&](std::ostream &o) { o << j.str() << "\n"; });
-      if (status != "converged")
-        throw io::RunFailure(message);
-      say("output in " + output_directory + "/");
+      j["events"] = ev;
+      record.finish(j, timer);
     }
 
     std::vector<double>

@@ -14,6 +14,7 @@
 #include <cosmo/analysis/plate_rod_thresholds.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_record.h>
 #include <cosmo/kinematics/plate_model.h>
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
@@ -80,7 +81,7 @@ namespace cosmo
       void
       set_quiet(const bool q)
       {
-        quiet = q;
+        record.set_quiet(q);
       }
 
       // NonlinearSystem / BifurcationProblem
@@ -258,7 +259,6 @@ namespace cosmo
       solvers::NewtonSettings        newton_settings;
       solvers::ArclengthSettings     arclength_settings;
       std::string                    output_directory;
-      bool                           quiet        = false;
       bool                           write_output = false;
       double                         load_parameter = 0;
 
@@ -285,7 +285,7 @@ namespace cosmo
       std::vector<PlateRodState>        states;
       std::vector<solvers::EventRecord> located_events;
       io::CSVTable                      steps_table;
-      std::unique_ptr<io::RunLog>       log;
+      io::RunRecord                     record{"plate_rod"};
       std::unique_ptr<io::PVDSeries>    plate_series, rim_series;
       io::PhaseTimer                    timer;
       unsigned int                      output_index = 0;
@@ -306,7 +306,10 @@ namespace cosmo
       materials::QuadraticRodLaw
       rod_law() const;
       void
-      say(const std::string &line);
+      say(const std::string &line) const
+      {
+        record.say(line);
+      }
       void
       write_event(const Event &e, const Vector<double> &U, const Vector<double> *mode);
       void

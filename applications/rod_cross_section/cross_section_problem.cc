@@ -12,6 +12,7 @@
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/kinematics/section.h>
 
 #include "cross_section_problem.h"
 
@@ -28,38 +29,6 @@ namespace cosmo
     {
       constexpr unsigned int n_strains = assembly::ReducedRodProblem::n_strains;
       constexpr unsigned int n_gauge   = assembly::ReducedRodProblem::n_gauge;
-
-      // e_m x e_c, for the mixed derivative of kappa x w.
-      Tensor<1, 3>
-      unit_cross(const unsigned int m, const unsigned int c)
-      {
-        Tensor<1, 3> a, b;
-        a[m] = 1;
-        b[c] = 1;
-        return cross_product_3d(a, b);
-      }
-
-      /**
-       * The surface deformation gradient Fs = [dw/dS | nu + kappa x w]
-       * (row-major 3x2) at a boundary point with deformed position w,
-       * tangential derivative du/dS of the displacement and unit tangent T.
-       */
-      std::array<double, 6>
-      surface_deformation_gradient(const Tensor<1, 3> &w,
-                                   const Tensor<1, 3> &du_dS,
-                                   const Tensor<1, 2> &T,
-                                   const Tensor<1, 3> &nu,
-                                   const Tensor<1, 3> &kappa)
-      {
-        const Tensor<1, 3>    b = nu + cross_product_3d(kappa, w);
-        std::array<double, 6> Fs;
-        for (unsigned int r = 0; r < 3; ++r)
-          {
-            Fs[2 * r]     = du_dS[r] + (r < 2 ? T[r] : 0.);
-            Fs[2 * r + 1] = b[r];
-          }
-        return Fs;
-      }
 
       std::string
       fixed(const double v, const int precision = 6)
@@ -427,7 +396,7 @@ namespace cosmo
       Tensor<1, 3>       e_x_e[3][3];
       for (unsigned int m = 0; m < 3; ++m)
         for (unsigned int c = 0; c < 3; ++c)
-          e_x_e[m][c] = unit_cross(m, c);
+          e_x_e[m][c] = kinematics::axial_column_mixed_derivative(m, c);
 
       const QGauss<2>    quadrature(degree + 1);
       const unsigned int nq  = quadrature.size();
@@ -466,21 +435,17 @@ namespace cosmo
             const double   dA = fev.JxW(q);
             const Point<2> X  = fev.quadrature_point(q);
             Tensor<1, 3>   u;
-            Tensor<2, 3>   F; // columns 0, 1: dw/dX1, dw/dX2 (u part first)
+            Tensor<2, 3>   grad_u; // columns 0, 1: du/dX1, du/dX2
             for (unsigned int i = 0; i < dpc; ++i)
               {
                 const double N = fev.shape_value(i, q);
                 const auto   g = fev.shape_grad(i, q);
                 u[comp[i]] += scratch.U_local[i] * N;
-                F[comp[i]][0] += scratch.U_local[i] * g[0];
-                F[comp[i]][1] += scratch.U_local[i] * g[1];
+                grad_u[comp[i]][0] += scratch.U_local[i] * g[0];
+                grad_u[comp[i]][1] += scratch.U_local[i] * g[1];
               }
-            const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
-            F[0][0] += 1;
-            F[1][1] += 1;
-            const Tensor<1, 3> col3 = nu + cross_product_3d(kappa, w);
-            for (unsigned int r = 0; r < 3; ++r)
-              F[r][2] = col3[r];
+            const Tensor<1, 3> w = kinematics::section_placement(X, u);
+            const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, nu, kappa);
 
             const Tensor<2, 3> &Fg = growth_at_qp[cell->active_cell_index() * nq + q];
             material.evaluate(F, Fg, jacobian, d);
@@ -505,20 +470,14 @@ namespace cosmo
                   B[i].add(3 * r + 2, Kx[r][c] * N);
                 out.r[i] += B[i].dot(P) * dA;
               }
-            // dFbar/d(strain k): nu_k -> e_k in column 3; kappa_k -> e_k x w.
+            // dFbar/d(strain k): only the third column depends on the strains.
             for (unsigned int k = 0; k < n_strains; ++k)
               {
-                D[k].n = 0;
-                if (k < 3)
-                  D[k].add(3 * k + 2, 1.);
-                else
-                  {
-                    Tensor<1, 3> ek;
-                    ek[k - 3]             = 1;
-                    const Tensor<1, 3> ew = cross_product_3d(ek, w);
-                    for (unsigned int r = 0; r < 3; ++r)
-                      D[k].add(3 * r + 2, ew[r]);
-                  }
+                D[k].n                = 0;
+                const Tensor<1, 3> db = kinematics::axial_column_strain_derivative(k, w);
+                for (unsigned int r = 0; r < 3; ++r)
+                  if (k >= 3 || r == k)
+                    D[k].add(3 * r + 2, db[r]);
                 out.resultants[k] += D[k].dot(P) * dA;
               }
 
@@ -628,7 +587,7 @@ namespace cosmo
                   const Tensor<1, 2> &Nn = ffv.normal_vector(q);
                   // Unit tangent of the boundary curve (counterclockwise on the
                   // outer boundary; the energy is even in T).
-                  const Tensor<1, 2> T({-Nn[1], Nn[0]});
+                  const Tensor<1, 2> T = kinematics::boundary_tangent(Nn);
                   Tensor<1, 3>       u, du_dS;
                   for (unsigned int i = 0; i < dpc; ++i)
                     {
@@ -636,8 +595,8 @@ namespace cosmo
                       u[comp[i]] += U_local[i] * ffv.shape_value(i, q);
                       du_dS[comp[i]] += U_local[i] * (g * T);
                     }
-                  const Tensor<1, 3> w({X[0] + u[0], X[1] + u[1], u[2]});
-                  const auto Fs = surface_deformation_gradient(w, du_dS, T, nu, kappa);
+                  const Tensor<1, 3> w  = kinematics::section_placement(X, u);
+                  const auto Fs = kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa);
                   layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
                                  jacobian, d);
                   energy += d.energy * dS;
@@ -655,16 +614,9 @@ namespace cosmo
                   for (unsigned int k = 0; k < n_strains; ++k)
                     {
                       D[k].fill(0.);
-                      if (k < 3)
-                        D[k][2 * k + 1] = 1.;
-                      else
-                        {
-                          Tensor<1, 3> ek;
-                          ek[k - 3]             = 1;
-                          const Tensor<1, 3> ew = cross_product_3d(ek, w);
-                          for (unsigned int r = 0; r < 3; ++r)
-                            D[k][2 * r + 1] = ew[r];
-                        }
+                      const Tensor<1, 3> db = kinematics::axial_column_strain_derivative(k, w);
+                      for (unsigned int r = 0; r < 3; ++r)
+                        D[k][2 * r + 1] = db[r];
                       resultants[k] += dot6(D[k], d.P) * dS;
                     }
                   if (!jacobian)
@@ -774,15 +726,6 @@ namespace cosmo
 
 
     void
-    CrossSectionProblem::say(const std::string &line)
-    {
-      if (log)
-        (*log)(line);
-      else if (!quiet)
-        std::cout << line << std::endl;
-    }
-
-    void
     CrossSectionProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
     {
       solution = U;
@@ -884,16 +827,14 @@ namespace cosmo
           for (unsigned int p = 0; p < out.size(); ++p)
             {
               const Point<2> &X = in.evaluation_points[p];
-              Tensor<1, 3>    w({X[0] + in.solution_values[p][0],
-                              X[1] + in.solution_values[p][1],
-                              in.solution_values[p][2]});
-              Tensor<2, 3>    F;
+              const Tensor<1, 3> w = kinematics::section_placement(
+                X, Tensor<1, 3>({in.solution_values[p][0], in.solution_values[p][1],
+                                 in.solution_values[p][2]}));
+              Tensor<2, 3> grad_u;
               for (unsigned int i = 0; i < 3; ++i)
                 for (unsigned int j = 0; j < 2; ++j)
-                  F[i][j] = (i == j ? 1. : 0.) + in.solution_gradients[p][i][j];
-              const Tensor<1, 3> c3 = nu + cross_product_3d(kappa, w);
-              for (unsigned int i = 0; i < 3; ++i)
-                F[i][2] = c3[i];
+                  grad_u[i][j] = in.solution_gradients[p][i][j];
+              const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, nu, kappa);
               const Tensor<2, 3>           Fg = material.growth.value(X, t);
               materials::EnergyDerivatives d;
               material.evaluate(F, Fg, false, d);
@@ -1045,13 +986,15 @@ namespace cosmo
             {
               const Point<2> &   X  = ffv.quadrature_point(k);
               const Tensor<1, 2> &N = ffv.normal_vector(k);
-              const Tensor<1, 2> T({-N[1], N[0]});
+              const Tensor<1, 2> T = kinematics::boundary_tangent(N);
               Tensor<1, 3>       du_dS;
               for (unsigned int c = 0; c < 3; ++c)
                 du_dS[c] = u_grads[k][c] * T;
-              const Tensor<1, 3> w({X[0] + u_values[k][0], X[1] + u_values[k][1], u_values[k][2]});
+              const Tensor<1, 3> w  = kinematics::section_placement(
+                X, Tensor<1, 3>({u_values[k][0], u_values[k][1], u_values[k][2]}));
               const auto         g  = layer.growth(X, t);
-              const auto         S  = layer.stress(surface_deformation_gradient(w, du_dS, T, nu, kappa), g, t);
+              const auto         S  = layer.stress(
+                kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa), g, t);
               const std::vector<double> v = {u_values[k][0], u_values[k][1], u_values[k][2],
                                              g[0], g[1], S[0], S[1], S[2], double(sf.layer + 1)};
               for (unsigned int r = 0; r < v.size(); ++r)
@@ -1153,15 +1096,10 @@ namespace cosmo
     }
 
     void
-    CrossSectionProblem::write_summary(const std::string &status, const std::string &message) const
+    CrossSectionProblem::write_summary() const
     {
       using io::JSON;
-      JSON j                  = JSON::object();
-      j["application"]        = "rod_cross_section";
-      j["version"]            = COSMO_VERSION;
-      j["parameter_file"]     = parameter_file;
-      j["status"]             = status;
-      j["message"]            = message;
+      JSON j                  = record.summary();
       j["mode"]               = mode;
       JSON free               = JSON::array();
       for (unsigned int k = 0; k < 6; ++k)
@@ -1199,23 +1137,18 @@ namespace cosmo
       helix["curvature"]   = h.curvature;
       helix["torsion"]     = h.torsion;
       j["newton_iterations"] = total_newton_iterations;
-      j["timings"]           = timer.to_json();
-      io::write_file_atomically(output_directory + "/summary.json",
-                                [&](std::ostream &out) { out << j.str() << "\n"; });
+      record.finish(j, timer);
     }
 
     void
     CrossSectionProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
-      quiet          = options.quiet;
-      parameter_file = options.parameter_file;
       write_output   = true;
-      log = io::open_run_directory(output_directory, prm, quiet);
+      record.open(output_directory, prm, options);
       pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
       pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
       if (!surface_faces.empty() || !surface_layers.layers().empty())
         pvd_surface = std::make_unique<io::PVDSeries>(output_directory + "/surface.pvd");
-      say("rod_cross_section " + std::string(COSMO_VERSION) + ": " + parameter_file);
       {
         io::PhaseTimer::Scope scope(timer, "setup");
         setup_system();
@@ -1251,20 +1184,15 @@ namespace cosmo
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("min_elastic_J");
 
-      std::string status = "converged", message;
-      try
-        {
-          solve();
-        }
-      catch (io::RunFailure &e)
-        {
-          status  = "failed";
-          message = e.what();
-          write_summary(status, message);
-          throw;
-        }
-      write_summary(status, message);
+      record.attempt([&]() { solve(); });
+      if (!record.failed())
+        say_result();
+      write_summary();
+    }
 
+    void
+    CrossSectionProblem::say_result() const
+    {
       const auto &s = last_state;
       say("");
       say("Result at t = " + fixed(s.t) + ":");
@@ -1291,7 +1219,6 @@ namespace cosmo
       out << "  timings [s]:";
       for (const auto &p : timer.phases())
         out << "  " << p << " " << fixed(timer.seconds(p), 3);
-      out << "\n  output in " << output_directory << "/";
       say(out.str());
     }
 
@@ -1361,12 +1288,7 @@ namespace cosmo
       std::vector<std::string> rejected;
       for (unsigned int k = 0; k < sweep.size(); ++k)
         {
-          sweep.apply(prm, k);
-          const std::string dir = base + "/point-" + Utilities::int_to_string(k, 2);
-          io::ParameterSweep::set_entry(prm, "Output/Output directory", dir, "Output",
-                                        "Output directory");
-          // A point's parameters.prm reproduces that point alone.
-          io::ParameterSweep::set_entry(prm, "Parameter sweep/Entry", "", "Parameter sweep", "Entry");
+          sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(base, k));
           io::RunOptions point_options = options;
           point_options.quiet          = true; // the point's log.txt has the details
           std::vector<double> row = {double(k), sweep.value(k)};

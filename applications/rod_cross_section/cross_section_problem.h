@@ -13,6 +13,7 @@
 #include <cosmo/geometry/cross_section.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_record.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/materials/material.h>
 #include <cosmo/materials/surface_layer.h>
@@ -127,7 +128,6 @@ namespace cosmo
       double                         rod_piece_length = 0; // 0: automatic
       unsigned int                   rod_piece_slices = 24;
       bool                           stiffness_every_step = true;
-      std::string                    parameter_file;
 
       // Discretization
       Triangulation<2>                        triangulation;
@@ -151,12 +151,11 @@ namespace cosmo
       std::vector<double>                surface_length;       // per layer, reference arc length
 
       // Output and bookkeeping
-      std::unique_ptr<io::RunLog>      log;
+      io::RunRecord                    record{"rod_cross_section"};
       std::unique_ptr<io::PVDSeries>   pvd, pvd_rod, pvd_surface;
       io::CSVTable                     steps_table;
       std::vector<io::JSON>            step_records;
       CrossSectionState                last_state;
-      bool                             quiet                    = false;
 
       unsigned int
       n_u() const
@@ -189,9 +188,15 @@ namespace cosmo
       void
       write_surface_layers(const std::string &file, double t) const;
       void
-      write_summary(const std::string &status, const std::string &message) const;
+      write_summary() const;
+      /// The final state in words: energy, strains, resultants, stiffness, centreline.
       void
-      say(const std::string &line);
+      say_result() const;
+      void
+      say(const std::string &line) const
+      {
+        record.say(line);
+      }
     };
 
     /**

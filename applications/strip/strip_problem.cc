@@ -370,15 +370,6 @@ namespace cosmo
     }
 
     void
-    StripProblem::say(const std::string &line)
-    {
-      if (log)
-        (*log)(line);
-      else if (!quiet)
-        std::cout << line << std::endl;
-    }
-
-    void
     StripProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
     {
       solution   = U;
@@ -617,10 +608,8 @@ namespace cosmo
     void
     StripProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
-      quiet        = options.quiet;
       write_output = true;
-      log = io::open_run_directory(output_directory, prm, quiet);
-      say("strip " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
+      record.open(output_directory, prm, options);
       setup_system();
       std::ostringstream info;
       info << "  strip w = " << strip_width << ", h = " << thickness << " (w/h = "
@@ -640,38 +629,27 @@ namespace cosmo
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("smallest_eigenvalue");
 
-      std::string status = "converged", message;
-      try
-        {
-          if (table.enabled())
-            {
-              io::PhaseTimer::Scope scope(timer, "constitutive table");
-              write_output = false; // no per-point files
-              set_load_parameter(1.);
-              Vector<double> checkpoint;
-              table.run(target_strains, strains_of(solution),
-                        [this](const std::array<double, 6> &e) { return resolve(e); },
-                        [&]() { checkpoint = solution; },
-                        [&]() { solution = checkpoint; },
-                        output_directory,
-                        [this](const std::string &m) { say(m); });
-              write_output = true;
-            }
-          else if (arclength_settings.enabled)
-            follow_branches();
-          else
-            solve();
-        }
-      catch (io::RunFailure &e)
-        {
-          status  = "failed";
-          message = e.what();
-        }
-      io::JSON j       = io::JSON::object();
-      j["application"] = "strip";
-      j["version"]     = COSMO_VERSION;
-      j["status"]      = status;
-      j["message"]     = message;
+      record.attempt([&]() {
+        if (table.enabled())
+          {
+            io::PhaseTimer::Scope scope(timer, "constitutive table");
+            write_output = false; // no per-point files
+            set_load_parameter(1.);
+            Vector<double> checkpoint;
+            table.run(target_strains, strains_of(solution),
+                      [this](const std::array<double, 6> &e) { return resolve(e); },
+                      [&]() { checkpoint = solution; },
+                      [&]() { solution = checkpoint; },
+                      output_directory,
+                      record.reporter());
+            write_output = true;
+          }
+        else if (arclength_settings.enabled)
+          follow_branches();
+        else
+          solve();
+      });
+      io::JSON j       = record.summary();
       j["width"]       = strip_width;
       j["thickness"]   = thickness;
       j["field_dofs"]  = n_field;
@@ -686,13 +664,7 @@ namespace cosmo
             x["mode_symmetry"] = symmetry_name(event_parities[k]);
           }
       });
-      j["timings"]     = timer.to_json();
-
-      io::write_file_atomically(output_directory + "/summary.json",
-                                [&](std::ostream &o) { o << j.str() << "\n"; });
-      if (status != "converged")
-        throw io::RunFailure(message);
-      say("output in " + output_directory + "/");
+      record.finish(j, timer);
     }
 
     void

@@ -10,6 +10,7 @@
 #include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_record.h>
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/solvers/continuation.h>
 
@@ -70,7 +71,7 @@ namespace cosmo
       void
       set_quiet(const bool q)
       {
-        quiet = q;
+        record.set_quiet(q);
       }
 
       const Vector<double> &
@@ -134,7 +135,6 @@ namespace cosmo
       std::string                   linear_solver_name = "MUMPS";
       std::string                   output_directory;
       bool                          write_output = false;
-      bool                          quiet        = false;
 
       // Discretization
       Triangulation<1>             triangulation;
@@ -146,10 +146,13 @@ namespace cosmo
       /// mode_parity() of each located branch point's mode (NaN for folds).
       std::vector<double>          event_parities;
       io::CSVTable                 steps_table;
-      std::unique_ptr<io::RunLog>  log;
+      io::RunRecord                record{"strip"};
 
       void
-      say(const std::string &line);
+      say(const std::string &line) const
+      {
+        record.say(line);
+      }
       void
       write_section(const std::string &file, const Vector<double> &U) const;
       /// strip-NNNN.vtu: a piece of the strip swept along the helix.

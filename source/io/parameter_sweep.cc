@@ -165,5 +165,21 @@ namespace cosmo
     {
       set_entry(prm, entry_path, text(k), "Parameter sweep", "Entry");
     }
+
+    void
+    ParameterSweep::prepare_point(ParameterHandler & prm,
+                                  const unsigned int k,
+                                  const std::string &point_directory) const
+    {
+      apply(prm, k);
+      set_entry(prm, "Output/Output directory", point_directory, "Output", "Output directory");
+      set_entry(prm, "Parameter sweep/Entry", "", "Parameter sweep", "Entry");
+    }
+
+    std::string
+    ParameterSweep::point_directory(const std::string &directory, const unsigned int k)
+    {
+      return directory + "/point-" + Utilities::int_to_string(k, 2);
+    }
   } // namespace io
 } // namespace cosmo

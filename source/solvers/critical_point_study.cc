@@ -72,18 +72,6 @@ namespace cosmo
       }
 
       /// A point's run writes into `directory`; its parameters.prm reproduces it alone.
-      void
-      prepare_point(ParameterHandler &        prm,
-                    const io::ParameterSweep &sweep,
-                    const unsigned int        k,
-                    const std::string &       directory)
-      {
-        sweep.apply(prm, k);
-        io::ParameterSweep::set_entry(prm, "Output/Output directory", directory, "Output",
-                                      "Output directory");
-        io::ParameterSweep::set_entry(prm, "Parameter sweep/Entry", "", "Parameter sweep", "Entry");
-      }
-
       /// The critical load of the new mode continued back to an earlier value.
       struct ContinuedBack
       {
@@ -101,7 +89,7 @@ namespace cosmo
                     const io::RunOptions &    options,
                     const CriticalPointStudy &study)
       {
-        prepare_point(prm, sweep, k, directory);
+        sweep.prepare_point(prm, k, directory);
         auto run = study.make_run(prm);
         run->start_from_critical_point(g);
         ContinuedBack back;
@@ -181,7 +169,7 @@ namespace cosmo
       for (unsigned int k = 0; k < sweep.size(); ++k)
         {
           const auto        start = std::chrono::steady_clock::now();
-          const std::string point = directory + "/point-" + Utilities::int_to_string(k, 2);
+          const std::string point = io::ParameterSweep::point_directory(directory, k);
           double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,
                  continued = 0, mode_change = 0, codim2_value = NAN, codim2_t = NAN;
           std::vector<double> mode_class(n_mode, NAN), further(n_more, NAN);
@@ -191,7 +179,7 @@ namespace cosmo
           std::string failure;
           try
             {
-              prepare_point(prm, sweep, k, point);
+              sweep.prepare_point(prm, k, point);
               auto         run = study.make_run(prm);
               CriticalGuess g;
               unsigned int  order = 0;

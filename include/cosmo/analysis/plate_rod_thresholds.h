@@ -30,6 +30,26 @@ namespace cosmo
       edge_stiffness() const;
     };
 
+    /**
+     * The growth mismatch Delta = g_p / g_r - 1 of a plate growing by the
+     * factor g_p and a rim by g_r (both uniform and isotropic).
+     */
+    inline double
+    growth_mismatch(const double plate_growth, const double rod_growth)
+    {
+      return plate_growth / rod_growth - 1;
+    }
+
+    /**
+     * The load parameter t at which the linear ramps g_p = 1 + t a,
+     * g_r = 1 + t b reach the mismatch Delta: t = Delta / (a - b (1 + Delta)).
+     */
+    inline double
+    load_parameter_at_mismatch(const double Delta, const double a, const double b)
+    {
+      return Delta / (a - b * (1 + Delta));
+    }
+
     /// The flat pre-buckled (Lame) state for plate growth strain ep and rod growth strain er.
     struct PrebuckledState
     {

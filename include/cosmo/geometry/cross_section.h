@@ -7,17 +7,19 @@
 #include <deal.II/grid/tria.h>
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 /**
- * Cross-section domains A of the rod: built-in shapes (circle, ellipse,
- * rectangle, annulus, and the two-region bilayer strip and half disc) and any
- * shape from gmsh: an ASCII .msh, or a .geo that is meshed here by running the
- * gmsh program. Physical surface tags become region (material) ids, physical
- * line tags boundary ids; their names (and the built-in shapes' fixed names)
+ * Cross-section domains A of the rod: the shapes registered by name
+ * (geometry/section_shape.h; built in: circle, ellipse, rectangle, annulus,
+ * the two-region bilayer and half disc, and any shape from gmsh: an ASCII
+ * .msh, or a .geo that is meshed here by running the gmsh program).
+ * Physical surface tags become region (material) ids, physical line tags
+ * boundary ids; their names (and the built-in shapes' fixed names)
  * are available after create_triangulation(), so that materials and surface
  * layers can be given by name.
  *
@@ -41,6 +43,8 @@ namespace cosmo
       double     I12 = 0; ///< int X1 X2 dA
       double     diameter = 0;
     };
+
+    class SectionShape;
 
     class CrossSectionGeometry
     {
@@ -84,14 +88,8 @@ namespace cosmo
       static SectionProperties
       properties(const Triangulation<2> &tria, unsigned int degree);
 
-      std::string shape;
-      double      radius = 1, semi_axis_1 = 1, semi_axis_2 = 0.5, width = 1, height = 1,
-             inner_radius = 0.5, layer_fraction = 0.5;
-      std::string  mesh_file;
-      /// The gmsh executable (name looked up in PATH, or a path) for a .geo.
-      std::string gmsh_program = "gmsh";
-      /// gmsh's maximum element size for a .geo; 0: the .geo's own sizes.
-      double       mesh_size = 0;
+      /// The registered name of the shape (`Cross-section / Shape`).
+      std::string  shape;
       unsigned int refinements = 3;
       /// Shift applied to a gmsh mesh to put its centroid at the origin.
       mutable Point<2> applied_shift;
@@ -99,6 +97,7 @@ namespace cosmo
       mutable std::string meshing_summary;
 
     private:
+      std::shared_ptr<SectionShape> shape_model;
       // Filled by create_triangulation(), which is const like the rest of
       // the problem's use of the geometry (as applied_shift).
       mutable std::map<std::string, types::boundary_id> boundary_parts;

@@ -72,6 +72,21 @@ namespace cosmo
       void
       apply(ParameterHandler &prm, unsigned int k) const;
 
+      /**
+       * The parameters of point k alone, with output to `point_directory`:
+       * the swept entry set to its value, `Output directory` to that
+       * directory and `Parameter sweep/Entry` cleared, so that the point's
+       * parameters.prm reproduces that point alone.
+       */
+      void
+      prepare_point(ParameterHandler & prm,
+                    unsigned int       k,
+                    const std::string &point_directory) const;
+
+      /// Where point k of a study in `directory` writes: `directory`/point-kk.
+      static std::string
+      point_directory(const std::string &directory, unsigned int k);
+
       /// Set any entry given by its path "Section/.../Entry" (InputError if refused).
       static void
       set_entry(ParameterHandler &prm, const std::string &path, const std::string &value,

@@ -56,6 +56,25 @@ namespace cosmo
   X(FirstOrderAD<8>, qualifier)                          \
   X(SecondOrderAD<8>, qualifier)
 
+    /**
+     * The factor on the transverse shear stiffness of the stabilized shear
+     * (Pitkaranta; Stenberg): fully integrated, with the shear stiffness
+     * times t^2/(t^2 + alpha h_K^2), h_K the cell diameter and t^2 the
+     * thickness squared over the model's shear_scale() (the Kirchhoff
+     * penalty): locking-free, and without the spurious transverse mode that
+     * reduced integration of Q2 leaves (doc/theory-plate-rod.md). Returns
+     * shear_scale times that factor.
+     */
+    inline double
+    stabilized_shear_scale(const double thickness,
+                           const double shear_scale,
+                           const double alpha,
+                           const double h_K)
+    {
+      const double t2 = thickness * thickness / shear_scale;
+      return shear_scale * t2 / (t2 + alpha * h_K * h_K);
+    }
+
     class PlateModel
     {
     public:

@@ -62,6 +62,17 @@ namespace cosmo
     {
       std::array<std::array<double, 2>, 2> G_inv{{{{1, 0}}, {{0, 1}}}};
       double                               det_G = 1;
+
+      /// From the growth tensor G (2x2, in-plane, G[i][j]).
+      static PlateGrowthAtPoint
+      of(const std::array<std::array<double, 2>, 2> &G)
+      {
+        PlateGrowthAtPoint g;
+        g.det_G = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+        g.G_inv = {{{{G[1][1] / g.det_G, -G[0][1] / g.det_G}},
+                    {{-G[1][0] / g.det_G, G[0][0] / g.det_G}}}};
+        return g;
+      }
     };
 
     namespace internal
@@ -171,6 +182,26 @@ namespace cosmo
       Tensor<2, 3> Lambda0;
       Tensor<1, 3> tangent;
     };
+
+    /**
+     * The reference frame of the circular rim at X on it, with the discrete
+     * unit tangent of the mesh's rim face (outward normal `normal`,
+     * tangent clockwise): d1 = e_r, d2 = E3, d3 = d1 x d2 = -e_theta, the
+     * columns of Lambda0.
+     */
+    inline RimFrame
+    circular_rim_frame(const Point<2> &X, const Tensor<1, 2> &normal)
+    {
+      RimFrame     f;
+      const double r = X.norm();
+      const double c = X[0] / r, s = X[1] / r;
+      f.Lambda0[0][0] = c, f.Lambda0[1][0] = s;
+      f.Lambda0[2][1] = 1;
+      f.Lambda0[0][2] = s, f.Lambda0[1][2] = -c;
+      f.tangent[0]    = normal[1];
+      f.tangent[1]    = -normal[0];
+      return f;
+    }
 
     /**
      * The reference strains of the discrete rim at X on it (so that the

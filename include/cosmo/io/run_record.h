@@ -1,0 +1,110 @@
+#ifndef cosmo_io_run_record_h
+#define cosmo_io_run_record_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+/**
+ * What every run of every application leaves and says, in one place
+ * (doc/specification/architecture.md): the output directory with
+ * parameters.prm and log.txt, progress lines on the terminal (unless
+ * quiet), the exception policy and summary.json's common keys.
+ *
+ * The policy: bad input (io::InputError) ends the run with exit status 1
+ * and no summary; any other failure of the work (io::RunFailure, a Newton
+ * failure at the start, a file that cannot be written, ...) is recorded as
+ * `"status": "failed"` with its message in summary.json, which is written
+ * either way, and then ends the run with exit status 2 (io::RunFailure).
+ */
+namespace cosmo
+{
+  namespace io
+  {
+    using namespace dealii;
+
+    class RunRecord
+    {
+    public:
+      /// `application` as it calls itself (summary.json's "application").
+      explicit RunRecord(const std::string &application);
+
+      /**
+       * Create `directory`, write the parameters as read (parameters.prm),
+       * open log.txt and say which application and file this is.
+       */
+      void
+      open(const std::string &directory, const ParameterHandler &prm, const RunOptions &options);
+
+      /// A line to log.txt and (unless quiet) the terminal; before open(), the terminal only.
+      void
+      say(const std::string &line) const;
+
+      /// say() as a function, for the library's progress callbacks.
+      std::function<void(const std::string &)>
+      reporter() const;
+
+      bool
+      quiet() const
+      {
+        return options.quiet;
+      }
+
+      void
+      set_quiet(const bool q)
+      {
+        options.quiet = q;
+      }
+
+      /// Run `work` under the policy above (InputError passes through).
+      void
+      attempt(const std::function<void()> &work);
+
+      /// Record a failure found by the caller.
+      void
+      fail(const std::string &message);
+
+      bool
+      failed() const
+      {
+        return status != "converged";
+      }
+
+      /**
+       * The keys every summary.json starts with: application, version,
+       * parameter_file, status ("converged" or "failed"), message.
+       */
+      JSON
+      summary() const;
+
+      /**
+       * Add the timings, write `summary` to summary.json (atomically) and
+       * then either say where the output is or, for a failed run, throw
+       * io::RunFailure with its message (exit status 2).
+       */
+      void
+      finish(JSON summary, const PhaseTimer &timer) const;
+
+      const std::string &
+      directory() const
+      {
+        return output_directory;
+      }
+
+    private:
+      std::string             application;
+      RunOptions              options;
+      std::string             output_directory;
+      std::unique_ptr<RunLog> log;
+      std::string             status = "converged";
+      std::string             message;
+    };
+  } // namespace io
+} // namespace cosmo
+
+#endif

@@ -1,0 +1,88 @@
+#include <cosmo/config.h>
+#include <cosmo/io/run_record.h>
+
+#include <iostream>
+
+namespace cosmo
+{
+  namespace io
+  {
+    RunRecord::RunRecord(const std::string &application)
+      : application(application)
+    {}
+
+    void
+    RunRecord::open(const std::string &directory, const ParameterHandler &prm,
+                    const RunOptions &run_options)
+    {
+      options          = run_options;
+      output_directory = directory;
+      log              = open_run_directory(directory, prm, options.quiet);
+      say(application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
+    }
+
+    void
+    RunRecord::say(const std::string &line) const
+    {
+      if (log)
+        (*log)(line);
+      else if (!options.quiet)
+        std::cout << line << std::endl;
+    }
+
+    std::function<void(const std::string &)>
+    RunRecord::reporter() const
+    {
+      return [this](const std::string &line) { say(line); };
+    }
+
+    void
+    RunRecord::attempt(const std::function<void()> &work)
+    {
+      try
+        {
+          work();
+        }
+      catch (InputError &)
+        {
+          throw;
+        }
+      catch (std::exception &e)
+        {
+          // Not bad input: the run could not reach its target. Still leave a
+          // summary of what was done.
+          fail(e.what());
+        }
+    }
+
+    void
+    RunRecord::fail(const std::string &what)
+    {
+      status  = "failed";
+      message = what;
+    }
+
+    JSON
+    RunRecord::summary() const
+    {
+      JSON j              = JSON::object();
+      j["application"]    = application;
+      j["version"]        = COSMO_VERSION;
+      j["parameter_file"] = options.parameter_file;
+      j["status"]         = status;
+      j["message"]        = message;
+      return j;
+    }
+
+    void
+    RunRecord::finish(JSON summary, const PhaseTimer &timer) const
+    {
+      summary["timings"] = timer.to_json();
+      write_file_atomically(output_directory + "/summary.json",
+                            [&](std::ostream &o) { o << summary.str() << "\n"; });
+      if (failed())
+        throw RunFailure(message);
+      say("output in " + output_directory + "/");
+    }
+  } // namespace io
+} // namespace cosmo
