@@ -2,7 +2,8 @@
 # Regression test of one example: run it (output into a scratch directory),
 # check what is known independently of the code -- a natural state has zero
 # resultants and zero multipliers; lines '# check: <key> = <value> +- <tol>'
-# in the .prm state closed-form values -- then compare its key numbers from
+# in the .prm state closed-form values (a key is a path in summary.json,
+# list items by 0-based index: stiffness.5.5) -- then compare its key numbers from
 # summary.json with the stored reference with numdiff (relative 1e-6,
 # absolute 1e-9: far above the Newton tolerance, far below any physical change).
 # A parameter sweep (sweep.csv) is checked row by row instead: lines
@@ -77,7 +78,7 @@ for line in open(sys.argv[2]):
         name, value, tol = m.group(1), float(m.group(2)), float(m.group(3))
         got = s
         for part in name.split("."):
-            got = got[part]
+            got = got[int(part)] if isinstance(got, list) else got[part]
         assert abs(got - value) <= tol, "%s = %r, expected %r +- %g" % (name, got, value, tol)
         print("checked %s = %r (expected %r +- %g)" % (name, got, value, tol), file=sys.stderr)
 print("energy", s["energy"])
