@@ -1,6 +1,5 @@
 // The plate and rim energies are differentiated here (Sacado, 15 and 12
 // local variables): the heavy translation unit of part 3.
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/base/work_stream.h>
@@ -12,6 +11,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/parameter_sweep.h>
@@ -37,16 +37,7 @@ namespace cosmo
       constexpr int n_plate = kinematics::plate_local_variables;
       constexpr int n_rim   = kinematics::rim_local_variables;
 
-      /// Rim boundary id; the mirror edges of a sector are 1 (theta = 0) and 2 (theta = pi/n).
-      constexpr types::boundary_id rim_id = 0, mirror_first = 1, mirror_second = 2;
-
-      /// Which local variables a shape function drives and with what weight.
-      struct Drive
-      {
-        unsigned int n = 0;
-        unsigned int var[3];
-        double       w[3];
-      };
+      using assembly::Drive;
 
       Drive
       plate_drive(const unsigned int c, const double N, const Tensor<1, 2> &g)
@@ -109,301 +100,12 @@ namespace cosmo
         double                               plate_energy = 0, rod_energy = 0;
       };
 
-      /// Add the contribution of one quadrature point: W, gradient g and Hessian H of the
-      /// energy density in the local variables, the shape functions' drives.
-      template <int N>
-      void
-      add_point(const std::vector<Drive> &      drives,
-                const std::array<double, N> &   g,
-                const std::array<double, N * N> &H,
-                const double                     dA,
-                const bool                       jacobian,
-                Copy &                           c)
-      {
-        const unsigned int n = drives.size();
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const Drive &a = drives[i];
-            double       s = 0;
-            for (unsigned int p = 0; p < a.n; ++p)
-              s += g[a.var[p]] * a.w[p];
-            c.r[i] += s * dA;
-          }
-        if (!jacobian)
-          return;
-        // K += B H B^T dA with B the (sparse) drives: first B H, then the
-        // upper triangle of (B H) B^T, mirrored (H is symmetric).
-        thread_local std::vector<std::array<double, N>> BH;
-        BH.resize(n);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const Drive &a = drives[i];
-            for (int b = 0; b < N; ++b)
-              {
-                double s = 0;
-                for (unsigned int p = 0; p < a.n; ++p)
-                  s += a.w[p] * H[N * a.var[p] + b];
-                BH[i][b] = s * dA;
-              }
-          }
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            if (drives[i].n == 0)
-              continue;
-            for (unsigned int j = i; j < n; ++j)
-              {
-                const Drive &b = drives[j];
-                double       k = 0;
-                for (unsigned int q = 0; q < b.n; ++q)
-                  k += BH[i][b.var[q]] * b.w[q];
-                c.K(i, j) += k;
-                if (j != i)
-                  c.K(j, i) += k;
-              }
-          }
-      }
     } // namespace
 
     PlateRodProblem::PlateRodProblem() = default;
     PlateRodProblem::~PlateRodProblem()
     {
       dof_handler.clear();
-    }
-
-    void
-    PlateRodProblem::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Plate");
-      prm.declare_entry("Radius", "1", Patterns::Double(0), "Radius R of the disc.");
-      prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
-                        "Thickness h of the plate (h < R).");
-      prm.leave_subsection();
-      materials::NaghdiPlateLaw::declare_parameters(prm);
-      materials::PlateGrowth::declare_parameters(prm);
-      prm.enter_subsection("Rim rod");
-      prm.declare_entry("Stiffnesses", "0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6",
-                        Patterns::List(Patterns::Double(0), 6, 6),
-                        "GA1, GA2, EA, EI1, EI2, GJ of the rim's cross-section (d1 radial, d2 "
-                        "the plate normal, d3 the tangent): shear along d1, d2, extension, "
-                        "bending about d1 (out of plane), about d2 (in plane), torsion. E.g. the "
-                        "diagonal of a rod_cross_section stiffness.");
-      prm.declare_entry("Stiffness file", "", Patterns::Anything(),
-                        "If set: a rod_cross_section summary.json whose 6x6 'stiffness' gives "
-                        "the rim's stiffnesses (its diagonal; the section's X1 is the rim's "
-                        "radial axis d1, X2 the plate normal d2); replaces 'Stiffnesses'. The "
-                        "largest dropped off-diagonal coupling is logged.");
-      prm.declare_entry("Growth factor", "1", Patterns::Double(0),
-                        "Axial growth g of the rim at t = 1 (ramped as 1 + t (g - 1)); the "
-                        "stress-free rim is a ring of radius g R.");
-      prm.leave_subsection();
-      prm.enter_subsection("Model");
-      using Models = plugins::Registry<kinematics::PlateModel>;
-      prm.declare_entry("Model", "cosserat", Patterns::Selection(Models::names()),
-                        "The plate model (the registered models, "
-                        "source/kinematics/plate_models/). " + Models::documentation());
-      Models::declare_parameters(prm);
-      prm.declare_entry("Shear integration", "automatic",
-                        Patterns::Selection("automatic|stabilized|reduced"),
-                        "Transverse shear of the plate. stabilized: full Gauss integration with "
-                        "the shear stiffness times t^2/(t^2 + alpha h_K^2) (h_K the cell "
-                        "diameter; t^2 divided by the penalty in the kirchhoff model): "
-                        "locking-free and free of spurious modes; reduced: p Gauss points "
-                        "(Q2 then has a spurious transverse mode with little shear energy, "
-                        "which membrane compression destabilizes on fine meshes: measured at "
-                        "h_K ~ 3 h; the kirchhoff penalty keeps it far away); automatic: "
-                        "reduced for kirchhoff, stabilized otherwise.");
-      prm.declare_entry("Shear stabilization", "0.03", Patterns::Double(0),
-                        "alpha of the stabilized shear integration (0.03: the smallest "
-                        "threshold errors on coarse meshes, doc/theory-plate-rod.md).");
-      prm.leave_subsection();
-      prm.enter_subsection("Mesh");
-      prm.declare_entry("Domain", "full disc", Patterns::Selection("full disc|sector"),
-                        "full disc, or the sector 0 <= theta <= Sector angle with mirror "
-                        "conditions on both radial edges (keeps the modes cos(k n theta)).");
-      prm.declare_entry("Sector angle", "90", Patterns::Double(0, 360),
-                        "Sector angle in degrees: 180/n for an integer n >= 1.");
-      prm.declare_entry("Global refinements", "3", Patterns::Integer(0, 8),
-                        "Refinements of the coarse disc (5 cells) or sector (3 cells).");
-      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(2, 4),
-                        "Degree p of FE_Q(p) for all fields and of the mapping of the rim; "
-                        "shear terms and the rod are integrated with p Gauss points.");
-      prm.leave_subsection();
-      prm.enter_subsection("Growth path");
-      prm.declare_entry("Start", "0", Patterns::Double(0, 1),
-                        "Load parameter t where the path starts (growth is ramped from "
-                        "t = 0, none, to t = 1, the factors given); the flat state there "
-                        "must be stable.");
-      prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
-                        "Stop where the first change of stability is located (critical "
-                        "growth only: studies, quick checks); the same as 'Arclength "
-                        "continuation / Stop at first event'.");
-      prm.leave_subsection();
-      io::ParameterSweep::declare_parameters(prm);
-      solvers::NewtonSettings::declare_parameters(prm);
-      solvers::ArclengthSettings::declare_parameters(prm);
-      prm.enter_subsection("Output");
-      prm.declare_entry("Output directory", "output/plate_rod", Patterns::Anything(),
-                        "Directory for parameters.prm, summary.json, steps.csv, plate.pvd, "
-                        "rim.pvd with their VTU files, event VTUs and log.txt.");
-      prm.leave_subsection();
-    }
-
-    void
-    PlateRodProblem::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Plate");
-      radius    = prm.get_double("Radius");
-      thickness = prm.get_double("Thickness");
-      if (!(radius > 0))
-        throw io::InputError("Plate", "Radius", prm.get("Radius"), "must be positive");
-      if (!(thickness > 0) || !(thickness < radius))
-        throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
-                             "must be positive and smaller than the radius " +
-                               prm.get("Radius"));
-      prm.leave_subsection();
-      plate_law.parse_parameters(prm);
-      plate_law.thickness = thickness;
-      plate_growth.parse_parameters(prm);
-
-      prm.enter_subsection("Rim rod");
-      const auto k = io::get_double_list(prm, "Stiffnesses", 6, "Rim rod");
-      std::copy(k.begin(), k.end(), rod_stiffness.begin());
-      stiffness_file = prm.get("Stiffness file");
-      if (!stiffness_file.empty())
-        {
-          // The part-1 summary.json: "stiffness": [[6 numbers], ... 6 rows].
-          std::ifstream in(stiffness_file);
-          if (!in)
-            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                 "a readable rod_cross_section summary.json (cannot open it)");
-          std::stringstream buffer;
-          buffer << in.rdbuf();
-          std::vector<double> K; // the finite numbers of "stiffness", row by row
-          std::size_t         rows = 0, non_square = 0;
-          try
-            {
-              const io::JSON  summary = io::JSON::parse(buffer.str());
-              const io::JSON *k       = summary.find("stiffness");
-              if (k && k->is_array())
-                for (rows = 0; rows < k->size(); ++rows)
-                  {
-                    non_square += k->at(rows).size() != 6;
-                    for (std::size_t b = 0; b < k->at(rows).size(); ++b)
-                      if (std::isfinite(k->at(rows).at(b).as_number()))
-                        K.push_back(k->at(rows).at(b).as_number());
-                  }
-            }
-          catch (std::runtime_error &e)
-            {
-              throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                   "a rod_cross_section summary.json (" + std::string(e.what()) +
-                                     ")");
-            }
-          if (K.size() != 36 || rows != 6 || non_square > 0)
-            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
-                                 "finite numbers (found " + std::to_string(K.size()) +
-                                 " numbers in " + std::to_string(rows) + " rows)");
-          double coupling = 0;
-          for (unsigned int a = 0; a < 6; ++a)
-            {
-              rod_stiffness[a] = K[7 * a];
-              for (unsigned int b = 0; b < 6; ++b)
-                if (a != b)
-                  coupling = std::max(coupling, std::abs(K[6 * a + b]) /
-                                                  std::sqrt(std::abs(K[7 * a] * K[7 * b])));
-            }
-          stiffness_coupling = coupling;
-        }
-      rod_growth = prm.get_double("Growth factor");
-      if (!(rod_growth > 0))
-        throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
-                             "must be positive");
-      // The rim against the plate: beyond 1e8 times the plate's own stiffness
-      // the coupled Hessian loses every digit of the plate's contribution in
-      // double precision (the rigid limit is reached to 1e-8 long before).
-      const double Eh = plate_law.young * thickness;
-      const double D  = Eh * thickness * thickness / (12 * (1 - plate_law.poisson * plate_law.poisson));
-      const char * names[6] = {"GA1", "GA2", "EA", "EI1", "EI2", "GJ"};
-      for (unsigned int i = 0; i < 6; ++i)
-        {
-          const double scale = i < 3 ? Eh * radius : D * radius;
-          if (!(rod_stiffness[i] > 0))
-            throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"),
-                                 std::string("every stiffness must be positive (") + names[i] +
-                                   " is not)");
-          if (rod_stiffness[i] > 1e8 * scale)
-            {
-              std::ostringstream m;
-              m << names[i] << " = " << rod_stiffness[i] << " is " << rod_stiffness[i] / scale
-                << " times the plate's " << (i < 3 ? "E h R" : "D R")
-                << ": stiffer than representable next to the plate in double precision (at "
-                   "most 1e8 times); a rim 1e6 times stiffer is already rigid to 1e-6";
-              throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"), m.str());
-            }
-        }
-      prm.leave_subsection();
-
-      prm.enter_subsection("Model");
-      const std::string m = prm.get("Model");
-      model = plugins::Registry<kinematics::PlateModel>::create(m);
-      model->parse_parameters(prm);
-      stabilized_shear = prm.get("Shear integration") == "stabilized" ||
-                         (prm.get("Shear integration") == "automatic" &&
-                          !model->automatic_reduced_shear());
-      shear_stabilization = prm.get_double("Shear stabilization");
-      prm.leave_subsection();
-
-      prm.enter_subsection("Mesh");
-      domain = prm.get("Domain");
-      {
-        const double angle = prm.get_double("Sector angle");
-        const double n     = 180. / angle;
-        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
-          throw io::InputError("Mesh", "Sector angle", prm.get("Sector angle"),
-                               "the sector must be pi/n: 180/n degrees for an integer n >= 1 "
-                               "(180, 90, 60, 45, 36, 30, ...)");
-        sector_n = static_cast<unsigned int>(std::round(n));
-      }
-      refinements = prm.get_integer("Global refinements");
-      if (domain == "full disc" && refinements == 0)
-        throw io::InputError("Mesh", "Global refinements", "0",
-                             "at least 1 for the full disc (its coarse mesh has no vertex at the "
-                             "centre for the gauge conditions)");
-      degree      = prm.get_integer("Polynomial degree");
-      prm.leave_subsection();
-
-      prm.enter_subsection("Growth path");
-      path_start          = prm.get_double("Start");
-      stop_at_first_event = prm.get_bool("Stop at first event");
-      prm.leave_subsection();
-      newton_settings.parse_parameters(prm);
-      arclength_settings.parse_parameters(prm);
-      arclength_settings.enabled = true; // the plate is always followed by arclength
-      // 'Growth path / Stop at first event' is the library's entry under the
-      // plate's name: either stops the first branch at its first event.
-      arclength_settings.stop_at_first_event =
-        arclength_settings.stop_at_first_event || stop_at_first_event;
-      prm.enter_subsection("Output");
-      output_directory = prm.get("Output directory");
-      prm.leave_subsection();
-
-      // Growth must stay positive along the path.
-      prm.enter_subsection("Plate growth");
-      const std::string radial_text = prm.get("Radial growth factor"),
-                        circumferential_text = prm.get("Circumferential growth factor");
-      prm.leave_subsection();
-      for (const double t : {0., 1.})
-        for (unsigned int i = 0; i <= 20; ++i)
-          {
-            const auto g = plate_growth.factors(radius * i / 20., t);
-            if (!(g[0] > 0) || !(g[1] > 0))
-              throw io::InputError("Plate growth",
-                                   g[0] > 0 ? "Circumferential growth factor" : "Radial growth factor",
-                                   g[0] > 0 ? circumferential_text : radial_text,
-                                   "growth factors must be positive for 0 <= r <= R (not at r = " +
-                                     std::to_string(radius * i / 20.) + ")");
-          }
     }
 
     void
@@ -661,11 +363,8 @@ namespace cosmo
               {
                 z.fill(0.);
                 for (unsigned int i = 0; i < dpc; ++i)
-                  {
-                    sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
-                    for (unsigned int p = 0; p < sc.drives[i].n; ++p)
-                      z[sc.drives[i].var[p]] += sc.U_local[i] * sc.drives[i].w[p];
-                  }
+                  sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
+                assembly::gather_local_variables<n_plate>(sc.drives, sc.U_local, z);
                 const auto gr = growth_at(fev.quadrature_point(q), t);
                 double     W  = 0;
                 // The plate energy depends on the gradients of u, on theta and (membrane and
@@ -684,7 +383,7 @@ namespace cosmo
                 else
                   materials::internal::differentiate_subset<8>(z, 3, energy_of, jacobian, W, g, H);
                 c.plate_energy += W * fev.JxW(q);
-                add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c);
+                assembly::add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c.r, c.K);
               }
           }
         // The rim rod on the cell's rim faces.
@@ -701,12 +400,9 @@ namespace cosmo
                   const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
                   zr.fill(0.);
                   for (unsigned int i = 0; i < dpc; ++i)
-                    {
-                      sc.drives[i] = rim_drive(comp[i], sc.fev_face.shape_value(i, q),
-                                               sc.fev_face.shape_grad(i, q) * t2);
-                      for (unsigned int p = 0; p < sc.drives[i].n; ++p)
-                        zr[sc.drives[i].var[p]] += sc.U_local[i] * sc.drives[i].w[p];
-                    }
+                    sc.drives[i] = rim_drive(comp[i], sc.fev_face.shape_value(i, q),
+                                             sc.fev_face.shape_grad(i, q) * t2);
+                  assembly::gather_local_variables<n_rim>(sc.drives, sc.U_local, zr);
                   auto law              = rod;
                   law.reference_strains = kinematics::rim_reference_strains(X, frame);
                   double W              = 0;
@@ -715,7 +411,7 @@ namespace cosmo
                     [&](const auto &x) { return kinematics::rim_rod_energy(x, frame, law, g_rod, *model); },
                     jacobian, W, gr, Hr);
                   c.rod_energy += W * sc.fev_face.JxW(q);
-                  add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian, c);
+                  assembly::add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian, c.r, c.K);
                 }
             }
       };
@@ -826,115 +522,6 @@ namespace cosmo
         w[i] = dof_component[i] < 3 ? 1 / F : 1 / (F * radius);
     }
 
-    PlateRodState
-    PlateRodProblem::analyse(const Vector<double> &U, const unsigned int n_modes) const
-    {
-      PlateRodState s;
-      s.t = load_parameter;
-      s.rim_w_amplitude.assign(n_modes, 0.);
-      s.rim_ur_amplitude.assign(n_modes, 0.);
-      const bool sector = domain == "sector";
-      // Fourier coefficients of w and u_r on the rim in the polar angle, for
-      // the mode numbers m = k step the domain admits (step = n on a sector
-      // pi/n: the mirror-symmetric extension has only those).
-      const unsigned int  step = sector_step();
-      std::vector<double> aw(n_modes), bw(n_modes), ar(n_modes), br(n_modes);
-      const QGauss<1>     face(degree + 1);
-      FEFaceValues<2>     fev(*mapping, *fe, face, update_values | update_quadrature_points | update_JxW_values);
-      std::vector<Vector<double>> values(face.size(), Vector<double>(6));
-      double              ur_mean = 0, length = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            {
-              fev.reinit(cell, f);
-              fev.get_function_values(U, values);
-              for (unsigned int q = 0; q < face.size(); ++q)
-                {
-                  const Point<2> X  = fev.quadrature_point(q);
-                  const double   r  = X.norm(), a = std::atan2(X[1], X[0]);
-                  const double   da = fev.JxW(q) / r;
-                  const double   w  = values[q][2];
-                  const double   ur = (values[q][0] * X[0] + values[q][1] * X[1]) / r;
-                  ur_mean += ur * fev.JxW(q);
-                  length += fev.JxW(q);
-                  for (unsigned int k = 0; k < n_modes; ++k)
-                    {
-                      const double m = double(k * step);
-                      aw[k] += w * std::cos(m * a) * da;
-                      bw[k] += w * std::sin(m * a) * da;
-                      ar[k] += ur * std::cos(m * a) * da;
-                      br[k] += ur * std::sin(m * a) * da;
-                    }
-                }
-            }
-      const double span = sector ? M_PI / sector_n : 2 * M_PI;
-      for (unsigned int k = 0; k < n_modes; ++k)
-        {
-          const double f = (k == 0 ? 1. : 2.) / span;
-          s.rim_w_amplitude[k]  = f * (sector ? std::abs(aw[k]) : std::hypot(aw[k], bw[k]));
-          s.rim_ur_amplitude[k] = f * (sector ? std::abs(ar[k]) : std::hypot(ar[k], br[k]));
-        }
-      s.rim_radial_strain = ur_mean / length / radius;
-      // The apex carries w = 0 (gauge): the dome height is minus the rim's mean w.
-      s.w_centre = -aw[0] / span;
-      double wmin = 0, wmax = 0;
-      for (unsigned int i = 0; i < U.size(); ++i)
-        if (dof_component[i] == 2)
-          wmin = std::min(wmin, U[i]), wmax = std::max(wmax, U[i]);
-      s.max_abs_w = wmax - wmin;
-      // The in-plane displacement at every node: u1 and u2 of the same support point.
-      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
-      const unsigned int                   nodes = fe->base_element(0).n_dofs_per_cell();
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          cell->get_dof_indices(idx);
-          for (unsigned int k = 0; k < nodes; ++k)
-            s.max_abs_inplane =
-              std::max(s.max_abs_inplane, std::hypot(U[idx[fe->component_to_system_index(0, k)]],
-                                                     U[idx[fe->component_to_system_index(1, k)]]));
-        }
-      return s;
-    }
-
-    std::pair<unsigned int, bool>
-    PlateRodProblem::classify_mode(const Vector<double> &mode) const
-    {
-      // Mode numbers up to what the rim resolves: one per rim face over the full circle
-      // (beyond, the Fourier amplitudes of the sampled rim alias).
-      unsigned int rim_faces = 0;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            ++rim_faces;
-      const unsigned int full_circle = rim_faces * (domain == "sector" ? 2 * sector_n : 1);
-      const auto         s = analyse(mode, std::max(2u, full_circle / sector_step() + 1));
-      // Half the range of w (a mode's w is measured from the apex) against the largest
-      // in-plane displacement.
-      const bool   out = 0.5 * s.max_abs_w > s.max_abs_inplane;
-      const auto & a   = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
-      unsigned int k   = 0;
-      for (unsigned int j = 1; j < a.size(); ++j)
-        if (a[j] > a[k])
-          k = j;
-      return {k * sector_step(), out};
-    }
-
-    analysis::PlateRod
-    PlateRodProblem::closed_form_setting() const
-    {
-      analysis::PlateRod p;
-      p.radius    = radius;
-      p.thickness = thickness;
-      p.young     = plate_law.young;
-      p.poisson   = plate_law.poisson;
-      p.rod_EA    = rod_stiffness[2];
-      p.rod_EI1   = rod_stiffness[3];
-      p.rod_EI2   = rod_stiffness[4];
-      p.rod_GJ    = rod_stiffness[5];
-      return p;
-    }
-
     double
     PlateRodProblem::mismatch(const double t) const
     {
@@ -983,352 +570,6 @@ namespace cosmo
       report.n_negative = record.event.n_negative_after;
       set_load_parameter(report.t);
       converged_step(solution, report);
-    }
-
-    void
-    PlateRodProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
-    {
-      solution = U;
-      load_parameter = report.t;
-      PlateRodState s = analyse(U);
-      s.n_negative    = report.n_negative;
-      s.branch        = report.branch;
-      auto same_state = [&](const Vector<double> &V, const double load) {
-        return V.size() == U.size() && load == load_parameter &&
-               std::equal(U.begin(), U.end(), V.begin());
-      };
-      // The driver has just factorized at this state, unless it located an event since.
-      if (!report_with_last_factorization && !same_state(factorized_at, factorized_load))
-        setup_jacobian(U);
-      report_with_last_factorization = false;
-      if (!same_state(assembled_at, assembled_load))
-        {
-          Vector<double> R;
-          assemble(U, &R, false);
-        }
-      s.plate_energy = assembled_energy[0];
-      s.rod_energy   = assembled_energy[1];
-      {
-        io::PhaseTimer::Scope scope(timer, "stability (smallest eigenvalue)");
-        Vector<double>        mask, mode;
-        mode_mask(mask);
-        s.smallest_eigenvalue = solvers::smallest_eigenvalue(*this, mask, mode, 30);
-      }
-      states.push_back(s);
-      std::ostringstream line;
-      line << "step " << std::setw(3) << report.step << "  branch " << report.branch
-           << "  t = " << std::setprecision(8) << std::setw(10) << report.t << "  Delta = "
-           << std::setprecision(5) << mismatch(report.t) << "  Newton " << report.newton_iterations
-           << "  dome " << std::setprecision(4) << s.w_centre << "  neg.eig. " << s.n_negative
-           << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue;
-      say(line.str());
-      if (!write_output)
-        return;
-      io::PhaseTimer::Scope scope(timer, "output");
-      std::vector<double> row = {double(report.step), double(report.branch), report.t,
-                                 mismatch(report.t), plate_growth.factors(radius, report.t)[1],
-                                 rod_growth_at(report.t), double(report.newton_iterations),
-                                 s.plate_energy + s.rod_energy, s.plate_energy, s.rod_energy,
-                                 s.w_centre, s.max_abs_w, s.max_abs_inplane, s.rim_radial_strain};
-      row.insert(row.end(), s.rim_w_amplitude.begin(), s.rim_w_amplitude.end());
-      row.insert(row.end(), s.rim_ur_amplitude.begin(), s.rim_ur_amplitude.end());
-      row.push_back(s.n_negative);
-      row.push_back(s.smallest_eigenvalue);
-      steps_table.add_row(row);
-      steps_table.write(output_directory + "/steps.csv");
-      const std::string tag = Utilities::int_to_string(output_index++, 4);
-      write_plate(output_directory + "/plate-" + tag + ".vtu", U);
-      write_rim(output_directory + "/rim-" + tag + ".vtu", U);
-      plate_series->add(report.step, "plate-" + tag + ".vtu");
-      rim_series->add(report.step, "rim-" + tag + ".vtu");
-    }
-
-    void
-    PlateRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
-    {
-      solvers::EventRecord r;
-      r.event = e;
-      r.state.assign(U.begin(), U.end());
-      if (mode)
-        r.mode.assign(mode->begin(), mode->end());
-      located_events.push_back(r);
-      if (write_output)
-        write_event(e, U, mode);
-    }
-
-    void
-    PlateRodProblem::write_event(const Event &, const Vector<double> &U, const Vector<double> *mode)
-    {
-      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
-      write_plate(output_directory + "/event-" + tag + ".vtu", U);
-      if (mode)
-        {
-          // The mode added to the state, scaled to a tenth of the radius.
-          Vector<double> V = U;
-          double         m = 0;
-          for (unsigned int i = 0; i < mode->size(); ++i)
-            if (dof_component[i] < 3)
-              m = std::max(m, std::abs((*mode)[i]));
-          if (m > 0)
-            V.add(0.1 * radius / m, *mode);
-          write_plate(output_directory + "/event-" + tag + "-mode.vtu", V);
-        }
-    }
-
-    void
-    PlateRodProblem::write_plate(const std::string &file, const Vector<double> &U) const
-    {
-      // The deformed mid-surface phi = X + u in 3D with the displacement, the
-      // director, the growth factors and the membrane forces and bending
-      // moments (polar components, plate law of the chosen model) as fields.
-      std::vector<Point<2>> unit;
-      for (unsigned int j = 0; j <= degree; ++j)
-        for (unsigned int i = 0; i <= degree; ++i)
-          unit.emplace_back(double(i) / degree, double(j) / degree);
-      const Quadrature<2> nodes(unit);
-      FEValues<2>         fev(*mapping, *fe, nodes,
-                      update_values | update_gradients | update_quadrature_points);
-      std::vector<Vector<double>>              values(nodes.size(), Vector<double>(6));
-      std::vector<std::vector<Tensor<1, 2>>>   grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
-      std::vector<DataOutBase::Patch<2, 3>>    patches;
-      const unsigned int                       np = degree + 1;
-      const unsigned int                       n_data = 3 + 3 + 2 + 3 + 3;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fev.reinit(cell);
-          fev.get_function_values(U, values);
-          fev.get_function_gradients(U, grads);
-          DataOutBase::Patch<2, 3> patch;
-          patch.n_subdivisions       = degree;
-          patch.reference_cell       = ReferenceCells::Quadrilateral;
-          patch.points_are_available = true;
-          patch.data.reinit(n_data + 3, np * np);
-          for (unsigned int k = 0; k < nodes.size(); ++k)
-            {
-              const Point<2>               X = fev.quadrature_point(k);
-              std::array<double, n_plate> z{};
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  z[c]     = values[k][c];
-                  z[3 + c] = grads[k][c][0];
-                  z[6 + c] = grads[k][c][1];
-                }
-              for (unsigned int c = 0; c < 2; ++c)
-                {
-                  z[9 + c]  = values[k][3 + c];
-                  z[11 + c] = grads[k][3 + c][0];
-                  z[13 + c] = grads[k][3 + c][1];
-                }
-              const auto gr = growth_at(X, load_parameter);
-              const auto st = model->plate_strains(z, gr);
-              const Tensor<1, 3> d = model->director(z);
-              const double r = X.norm(), ca = r > 0 ? X[0] / r : 1, sa = r > 0 ? X[1] / r : 0;
-              // Polar components of a symmetric (11, 22, 12) tensor.
-              auto polar = [&](const std::array<double, 3> &a) {
-                const double rr = ca * ca * a[0] + sa * sa * a[1] + 2 * ca * sa * a[2];
-                const double tt = sa * sa * a[0] + ca * ca * a[1] - 2 * ca * sa * a[2];
-                const double rt = -ca * sa * a[0] + ca * sa * a[1] + (ca * ca - sa * sa) * a[2];
-                return std::array<double, 3>{{rr, tt, rt}};
-              };
-              const auto N  = polar(plate_law.membrane_force(st.membrane));
-              const auto M  = polar(plate_law.bending_moment(st.bending));
-              const auto gf = plate_growth.factors(r, load_parameter);
-              unsigned int col = 0;
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = values[k][c];
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = d[c];
-              patch.data(col++, k) = gf[0];
-              patch.data(col++, k) = gf[1];
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = N[c];
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = M[c];
-              patch.data(n_data + 0, k) = X[0] + values[k][0];
-              patch.data(n_data + 1, k) = X[1] + values[k][1];
-              patch.data(n_data + 2, k) = values[k][2];
-            }
-          for (unsigned int v = 0; v < 4; ++v)
-            {
-              const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
-              patch.vertices[v] =
-                Point<3>(patch.data(n_data, pt), patch.data(n_data + 1, pt), patch.data(n_data + 2, pt));
-            }
-          patch.patch_index = patches.size();
-          patches.push_back(std::move(patch));
-        }
-      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
-                                              "director",     "director",     "director",
-                                              "growth_radial", "growth_circumferential",
-                                              "N_rr",         "N_tt",         "N_rt",
-                                              "M_rr",         "M_tt",         "M_rt"};
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
-                   {3, 5, "director", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, names, vectors, flags, o);
-      });
-    }
-
-    void
-    PlateRodProblem::write_rim(const std::string &file, const Vector<double> &U) const
-    {
-      // The rim rod as a polyline through phi(X(S)) with its frame d1, d2, d3
-      // and its strains and resultants (n = dpsi/dnu, m = dpsi/dkappa).
-      std::vector<Point<1>> unit;
-      for (unsigned int i = 0; i <= degree; ++i)
-        unit.emplace_back(double(i) / degree);
-      const Quadrature<1> nodes(unit);
-      FEFaceValues<2>     fev(*mapping, *fe, nodes,
-                          update_values | update_gradients | update_quadrature_points |
-                            update_normal_vectors);
-      std::vector<Vector<double>>            values(nodes.size(), Vector<double>(6));
-      std::vector<std::vector<Tensor<1, 2>>> grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
-      std::vector<DataOutBase::Patch<1, 3>>  patches;
-      const auto                             rod   = rod_law();
-      const double                           g_rod = rod_growth_at(load_parameter);
-      const unsigned int                     n_data = 9 + 6 + 6;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            {
-              fev.reinit(cell, f);
-              fev.get_function_values(U, values);
-              fev.get_function_gradients(U, grads);
-              DataOutBase::Patch<1, 3> patch;
-              patch.n_subdivisions       = degree;
-              patch.reference_cell       = ReferenceCells::Line;
-              patch.points_are_available = true;
-              patch.data.reinit(n_data + 3, nodes.size());
-              for (unsigned int k = 0; k < nodes.size(); ++k)
-                {
-                  const Point<2> X     = fev.quadrature_point(k);
-                  const auto     frame = kinematics::circular_rim_frame(X, fev.normal_vector(k));
-                  const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
-                  std::array<double, n_rim> z{};
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      z[c]     = values[k][c];
-                      z[3 + c] = grads[k][c] * t2;
-                    }
-                  z[6]  = values[k][3];
-                  z[7]  = values[k][4];
-                  z[8]  = grads[k][3] * t2;
-                  z[9]  = grads[k][4] * t2;
-                  z[10] = values[k][5];
-                  z[11] = grads[k][5] * t2;
-                  auto law              = rod;
-                  law.reference_strains = kinematics::rim_reference_strains(X, frame);
-                  const auto e          = model->rim_strains(
-                    z, frame, {{law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}});
-                  // Frame: Lambda = exp(theta) exp(alpha E3) Lambda0.
-                  Tensor<1, 3, double> th, al;
-                  th[0] = z[6], th[1] = z[7], al[2] = z[10];
-                  const Tensor<2, 3> L =
-                    kinematics::rotation_exp(th) * kinematics::rotation_exp(al) * frame.Lambda0;
-                  unsigned int col = 0;
-                  for (unsigned int j = 0; j < 3; ++j)
-                    for (unsigned int i = 0; i < 3; ++i)
-                      patch.data(col++, k) = L[i][j];
-                  const auto resultants = law.resultants(e, g_rod);
-                  for (unsigned int j = 0; j < 6; ++j)
-                    patch.data(col++, k) = e[j];
-                  for (unsigned int j = 0; j < 6; ++j)
-                    patch.data(col++, k) = resultants[j];
-                  patch.data(n_data + 0, k) = X[0] + values[k][0];
-                  patch.data(n_data + 1, k) = X[1] + values[k][1];
-                  patch.data(n_data + 2, k) = values[k][2];
-                }
-              for (unsigned int v = 0; v < 2; ++v)
-                {
-                  const unsigned int k = v == 0 ? 0 : degree;
-                  patch.vertices[v] = Point<3>(patch.data(n_data, k), patch.data(n_data + 1, k),
-                                               patch.data(n_data + 2, k));
-                }
-              patch.patch_index = patches.size();
-              patches.push_back(std::move(patch));
-            }
-      std::vector<std::string> names = {"d1", "d1", "d1", "d2", "d2", "d2", "d3", "d3", "d3",
-                                        "nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3",
-                                        "n1", "n2", "n3", "m1", "m2", "m3"};
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{0, 2, "d1", DataComponentInterpretation::component_is_part_of_vector},
-                   {3, 5, "d2", DataComponentInterpretation::component_is_part_of_vector},
-                   {6, 8, "d3", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, names, vectors, flags, o);
-      });
-    }
-
-    io::JSON
-    PlateRodProblem::closed_forms(double &first_mismatch, std::string &text) const
-    {
-      io::JSON     closed = io::JSON::object();
-      const double Delta1 = mismatch(1.);
-      first_mismatch      = NAN;
-      if (!std::isfinite(Delta1) || Delta1 == 0)
-        return closed;
-      const auto p = closed_form_setting();
-      // t at which the mismatch reaches Delta (linear ramps).
-      const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;
-      auto         t_of = [&](const double D) { return analysis::load_parameter_at_mismatch(D, a, b); };
-      auto         entry = [&](const unsigned int n, const double D) {
-        io::JSON x    = io::JSON::object();
-        x["n"]        = n;
-        x["mismatch"] = D;
-        x["t"]        = t_of(D);
-        return x;
-      };
-      std::ostringstream c;
-      c << std::setprecision(6);
-      if (Delta1 > 0)
-        {
-          const double D                     = analysis::axisymmetric_critical_mismatch(p);
-          closed["axisymmetric"]["mismatch"] = D;
-          closed["axisymmetric"]["t"]        = t_of(D);
-          first_mismatch                     = D;
-          c << "  closed form (Kirchhoff, small strain): axisymmetric buckling at Delta = " << D
-            << ", t = " << t_of(D);
-        }
-      else
-        {
-          // The lobed families, over the mode numbers the domain admits (a sector pi/n keeps
-          // the multiples of n).
-          const unsigned int step = domain == "sector" ? sector_n : 1;
-          const unsigned int n0   = step >= 2 ? step : 2;
-          double             best_out = -1e300, best_planar = -1e300;
-          unsigned int       n_out = 0, n_planar = 0;
-          c << "  closed forms (Kirchhoff, small strain), out-of-plane lobes:";
-          for (unsigned int n = n0; n <= std::max(12u, n0 + 4 * step); n += step)
-            {
-              const double D = analysis::out_of_plane_critical_mismatch(p, n);
-              closed["out_of_plane"].push_back(entry(n, D));
-              if (n <= n0 + 3 * step)
-                c << " n = " << n << ": Delta = " << D << " (t = " << t_of(D) << ")";
-              if (D > best_out)
-                best_out = D, n_out = n;
-            }
-          for (unsigned int n = n0; n <= 200; n += step)
-            {
-              const double D = analysis::planar_critical_mismatch(p, n);
-              if (D > best_planar)
-                best_planar = D, n_planar = n;
-            }
-          closed["first_out_of_plane"] = entry(n_out, best_out);
-          closed["first_planar"]       = entry(n_planar, best_planar);
-          first_mismatch               = std::max(best_out, best_planar);
-          c << "\n  first out-of-plane mode n = " << n_out << " at Delta = " << best_out
-            << "; first planar mode n = " << n_planar << " at Delta = " << best_planar << " (t = "
-            << t_of(best_planar) << ")";
-        }
-      closed["first"]["mismatch"] = first_mismatch;
-      closed["first"]["t"]        = t_of(first_mismatch);
-      text                        = c.str();
-      return closed;
     }
 
     void
@@ -1442,22 +683,6 @@ namespace cosmo
         }
       j["events"] = ev;
       record.finish(j, timer);
-    }
-
-    std::vector<double>
-    PlateRodProblem::classify_critical_mode(const Vector<double> &mode) const
-    {
-      const auto c = classify_mode(mode);
-      return {double(c.first), double(c.second)};
-    }
-
-    std::vector<double>
-    PlateRodProblem::critical_point_columns(const solvers::EventRecord &e) const
-    {
-      double      closed = NAN;
-      std::string text;
-      closed_forms(closed, text);
-      return {mismatch(e.event.lambda), closed};
     }
 
     void

@@ -47,6 +47,9 @@ namespace cosmo
   {
     using namespace dealii;
 
+    /// Rim boundary id; the mirror edges of a sector are 1 (theta = 0) and 2 (theta = pi/n).
+    constexpr types::boundary_id rim_id = 0, mirror_first = 1, mirror_second = 2;
+
     /// What one state looks like, for steps.csv and summary.json.
     struct PlateRodState
     {

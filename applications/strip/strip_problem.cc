@@ -11,6 +11,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/parameter_sweep.h>
@@ -33,13 +34,14 @@ namespace cosmo
     {
       constexpr int n_local = kinematics::strip_local_variables;
 
-      /// Which local variables a shape function of component c drives: value and derivative.
-      std::pair<unsigned int, unsigned int>
-      local_indices(const unsigned int c)
+      /// The local variables a shape function of component c drives: its value (u, theta1,
+      /// theta3 at 0-2, 6, 7) with weight N and its derivative (3-5, 8, 9) with weight N'.
+      assembly::Drive
+      strip_drive(const unsigned int c, const double N, const double dN)
       {
         if (c < 3)
-          return {c, 3 + c};
-        return {c == 3 ? 6u : 7u, c == 3 ? 8u : 9u};
+          return {2, {c, 3 + c, 0}, {N, dN, 0}};
+        return {2, {c == 3 ? 6u : 7u, c == 3 ? 8u : 9u, 0}, {N, dN, 0}};
       }
     } // namespace
 
@@ -47,78 +49,6 @@ namespace cosmo
     StripProblem::~StripProblem()
     {
       dof_handler.clear();
-    }
-
-    void
-    StripProblem::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Strip");
-      prm.declare_entry("Width", "1", Patterns::Double(0), "Width w of the strip (length unit).");
-      prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
-                        "Thickness h of the plate; h < w.");
-      prm.declare_entry("Number of cells", "40", Patterns::Integer(1, 100000),
-                        "Cells across the width.");
-      prm.declare_entry("Mesh", "graded", Patterns::Selection("graded|uniform"),
-                        "graded: vertices at eta = (w/2) sin(pi xi/2), xi uniform in "
-                        "[-1, 1], finer toward the free edges where the boundary layers "
-                        "are; uniform: equal cells.");
-      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
-                        "Degree p of FE_Q(p) for u and theta.");
-      prm.declare_entry("Shear integration", "reduced", Patterns::Selection("reduced|full"),
-                        "reduced: the transverse shear energy with p Gauss points (against "
-                        "shear locking, doc/specification/strip.md); full: p + 1 like the rest.");
-      prm.leave_subsection();
-      materials::NaghdiPlateLaw::declare_parameters(prm);
-      assembly::ReducedRodProblem::declare_strain_parameters(prm);
-      solvers::NewtonSettings::declare_parameters(prm);
-      solvers::ContinuationSettings::declare_parameters(prm);
-      solvers::ArclengthSettings::declare_parameters(prm);
-      assembly::ConstitutiveTable::declare_parameters(prm);
-      io::ParameterSweep::declare_parameters(prm);
-      prm.enter_subsection("Output");
-      prm.declare_entry("Output directory", "output/strip", Patterns::Anything(),
-                        "Directory for parameters.prm, summary.json, steps.csv, "
-                        "section-NNNN.vtu and log.txt (created if needed).");
-      prm.leave_subsection();
-    }
-
-    void
-    StripProblem::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Strip");
-      strip_width   = prm.get_double("Width");
-      thickness     = prm.get_double("Thickness");
-      n_cells       = prm.get_integer("Number of cells");
-      mesh_kind     = prm.get("Mesh");
-      degree        = prm.get_integer("Polynomial degree");
-      reduced_shear = prm.get("Shear integration") == "reduced";
-      if (!(strip_width > 0))
-        throw io::InputError("Strip", "Width", prm.get("Width"), "must be positive");
-      if (!(thickness > 0))
-        throw io::InputError("Strip", "Thickness", prm.get("Thickness"), "must be positive");
-      if (!(thickness < strip_width))
-        throw io::InputError("Strip", "Thickness", prm.get("Thickness"),
-                             "must be smaller than the width " + prm.get("Width") +
-                               " (a strip is a plate: h << w)");
-      prm.leave_subsection();
-      law.parse_parameters(prm);
-      law.thickness = thickness;
-      parse_strain_parameters(prm);
-      newton_settings.parse_parameters(prm);
-      continuation_settings.parse_parameters(prm);
-      arclength_settings.parse_parameters(prm);
-      table.parse_parameters(prm);
-      if (table.enabled())
-        for (const unsigned int k : {table.first, table.second})
-          if (strain_is_free[k])
-            throw io::InputError("Constitutive table",
-                                 k == table.first ? "First strain" : "Second strain",
-                                 kinematics::strain_names[k],
-                                 "a prescribed strain: this one is free ('Rod strains / Mode' "
-                                 "or 'Free strains'), so its value would be ignored");
-      prm.enter_subsection("Output");
-      output_directory = prm.get("Output directory");
-      prm.leave_subsection();
     }
 
     void
@@ -220,12 +150,14 @@ namespace cosmo
           , fev_reduced(fe, reduced,
                         update_values | update_gradients | update_quadrature_points | update_JxW_values)
           , U_local(fe.n_dofs_per_cell())
+          , drives(fe.n_dofs_per_cell())
         {}
         StripScratch(const StripScratch &o)
           : StripScratch(o.fev_full.get_fe(), o.fev_full.get_quadrature(), o.fev_reduced.get_quadrature())
         {}
         FEValues<1>                               fev_full, fev_reduced;
         std::vector<double>                       U_local;
+        std::vector<assembly::Drive>              drives;
         std::array<double, n_local>               z, g;
         std::array<double, n_local * n_local>     H;
       };
@@ -290,11 +222,8 @@ namespace cosmo
               {
                 z.fill(0.);
                 for (unsigned int i = 0; i < dpc; ++i)
-                  {
-                    const auto [v, d] = local_indices(comp[i]);
-                    z[v] += sc.U_local[i] * fev.shape_value(i, q);
-                    z[d] += sc.U_local[i] * fev.shape_grad(i, q)[0];
-                  }
+                  sc.drives[i] = strip_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q)[0]);
+                assembly::gather_local_variables<n_local>(sc.drives, sc.U_local, z);
                 for (unsigned int k = 0; k < n_strains; ++k)
                   z[10 + k] = e[k];
                 const double eta = fev.quadrature_point(q)[0];
@@ -310,28 +239,9 @@ namespace cosmo
                 c.energy += W * dA;
                 for (unsigned int k = 0; k < n_strains; ++k)
                   c.resultants[k] += g[10 + k] * dA;
-                for (unsigned int i = 0; i < dpc; ++i)
-                  {
-                    const auto [vi, di] = local_indices(comp[i]);
-                    const double Ni = fev.shape_value(i, q), Di = fev.shape_grad(i, q)[0];
-                    c.r[i] += (g[vi] * Ni + g[di] * Di) * dA;
-                    if (!jacobian)
-                      continue;
-                    for (unsigned int j = 0; j < dpc; ++j)
-                      {
-                        const auto [vj, dj] = local_indices(comp[j]);
-                        const double Nj = fev.shape_value(j, q), Dj = fev.shape_grad(j, q)[0];
-                        c.K(i, j) += (H[n_local * vi + vj] * Ni * Nj + H[n_local * vi + dj] * Ni * Dj +
-                                      H[n_local * di + vj] * Di * Nj + H[n_local * di + dj] * Di * Dj) *
-                                     dA;
-                      }
-                    for (unsigned int k = 0; k < n_strains; ++k)
-                      c.B(i, k) += (H[n_local * vi + 10 + k] * Ni + H[n_local * di + 10 + k] * Di) * dA;
-                  }
+                assembly::add_point<n_local>(sc.drives, g, H, dA, jacobian, c.r, c.K);
                 if (jacobian)
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    for (unsigned int l = 0; l < n_strains; ++l)
-                      c.E(k, l) += H[n_local * (10 + k) + 10 + l] * dA;
+                  assembly::add_strain_blocks<n_local>(sc.drives, H, dA, 10, n_strains, c.B, c.E);
               }
           }
       };
@@ -369,240 +279,12 @@ namespace cosmo
       return last_state;
     }
 
-    void
-    StripProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
-    {
-      solution   = U;
-      last_state = condensed_state(solution);
-      const auto &s = last_state;
-      // The eigenvalue of smallest magnitude of the Hessian on the
-      // constrained field space (free strains condensed): the one that
-      // crosses zero where the section buckles.
-      Vector<double> mask, mode;
-      mode_mask(mask);
-      const double smallest = solvers::smallest_eigenvalue(*this, mask, mode, 50);
-      record_state(report, s);
-      std::ostringstream line;
-      line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t
-           << "  Newton " << std::setw(2) << report.newton_iterations << "  Psi = "
-           << std::setprecision(8) << s.energy << "  neg.eig. " << s.n_negative
-           << "  min|eig| " << std::setprecision(3) << smallest << "  strains (";
-      for (unsigned int k = 0; k < 6; ++k)
-        line << (k ? ", " : "") << std::setprecision(6) << s.strains[k];
-      line << ")";
-      say(line.str());
-      if (!write_output)
-        return;
-      std::vector<double> row = {double(report.step), double(report.branch), report.t,
-                                 double(report.newton_iterations), report.residual_norm, s.energy};
-      row.insert(row.end(), s.strains.begin(), s.strains.end());
-      row.insert(row.end(), s.resultants.begin(), s.resultants.end());
-      for (unsigned int k = 0; k < 6; ++k)
-        row.push_back(s.stiffness(k, k));
-      row.push_back(s.n_negative);
-      row.push_back(smallest);
-      steps_table.add_row(row);
-      steps_table.write(output_directory + "/steps.csv");
-      write_section(output_directory + "/section-" + Utilities::int_to_string(report.step, 4) +
-                      ".vtu",
-                    solution);
-      write_piece(output_directory + "/strip-" + Utilities::int_to_string(report.step, 4) +
-                  ".vtu");
-    }
-
-    void
-    StripProblem::write_piece(const std::string &file) const
-    {
-      // A piece of the strip in 3D: the mid-surface phi(eta, s) = r(s) + R(s)
-      // y(eta) swept along the helix of the current strains, over one turn or
-      // three widths (whichever is shorter), 24 slices; fields eta, s and the
-      // director d = R q.
-      const auto                   e = strains_of(solution);
-      const kinematics::RodStrains strains(e);
-      const double                 k = strains.kappa.norm();
-      const double                 L = k > 0 ? std::min(2 * M_PI / k, 3 * strip_width) : 3 * strip_width;
-      const unsigned int           n_slices = 24;
-      std::vector<Point<1>>        unit;
-      for (unsigned int i = 0; i <= degree; ++i)
-        unit.emplace_back(double(i) / degree);
-      const Quadrature<1>         nodes(unit);
-      FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
-      Vector<double>              field(solution.begin(), solution.begin() + n_field);
-      std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
-      std::vector<DataOutBase::Patch<2, 3>> patches;
-      const unsigned int                    np = degree + 1;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fev.reinit(cell);
-          fev.get_function_values(field, values);
-          for (unsigned int slice = 0; slice < n_slices; ++slice)
-            {
-              DataOutBase::Patch<2, 3> patch;
-              patch.n_subdivisions       = degree;
-              patch.reference_cell       = ReferenceCells::Quadrilateral;
-              patch.points_are_available = true;
-              patch.data.reinit(5 + 3, np * np);
-              for (unsigned int j = 0; j < np; ++j)
-                {
-                  const double X3 = L * (slice + double(j) / degree) / n_slices;
-                  const auto   R  = kinematics::helix_rotation(strains.kappa, X3);
-                  const auto   r  = kinematics::helix_position(strains.nu, strains.kappa, X3);
-                  for (unsigned int i = 0; i < np; ++i)
-                    {
-                      const unsigned int   pt  = j * np + i;
-                      const double         eta = fev.quadrature_point(i)[0];
-                      Tensor<1, 3, double> theta;
-                      theta[0]                = values[i][3];
-                      theta[2]                = values[i][4];
-                      const auto         Q    = kinematics::rotation_exp(theta);
-                      const Tensor<1, 3> y({eta + values[i][0], values[i][1], values[i][2]});
-                      const Tensor<1, 3> q({Q[0][1], Q[1][1], Q[2][1]});
-                      const Tensor<1, 3> x = r + R * y, d = R * q;
-                      patch.data(0, pt)    = eta;
-                      patch.data(1, pt)    = X3;
-                      for (unsigned int c = 0; c < 3; ++c)
-                        {
-                          patch.data(2 + c, pt) = d[c];
-                          patch.data(5 + c, pt) = x[c];
-                        }
-                    }
-                }
-              for (unsigned int v = 0; v < 4; ++v)
-                {
-                  const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
-                  patch.vertices[v] =
-                    Point<3>(patch.data(5, pt), patch.data(6, pt), patch.data(7, pt));
-                }
-              patch.patch_index = patches.size();
-              patches.push_back(std::move(patch));
-            }
-        }
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{2, 4, "director", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, {"eta", "arc_length", "director", "director", "director"},
-                               vectors, flags, o);
-      });
-    }
-
-    double
-    StripProblem::mode_parity(const Vector<double> &mode) const
-    {
-      // The out-of-plane displacement u2 (component 1) alone: a mesh not
-      // symmetric about eta = 0 has no parity (NaN).
-      return geometry::reflection_parity(
-        dof_handler, geometry::mirror_dofs(MappingQ1<1>(), dof_handler, 0, strip_width), mode,
-        {0., 1.});
-    }
-
-    std::vector<double>
-    StripProblem::classify_critical_mode(const Vector<double> &mode) const
-    {
-      // +1 symmetric, -1 antisymmetric about the centre line, 0 mixed
-      const double p = mode_parity(mode);
-      return {p > 0.5 ? 1. : p < -0.5 ? -1. : std::isfinite(p) ? 0. : NAN};
-    }
-
-    std::string
-    StripProblem::symmetry_name(const double parity)
-    {
-      return parity > 0.5 ? "symmetric" : parity < -0.5 ? "antisymmetric" : "mixed";
-    }
-
-    void
-    StripProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
-    {
-      ReducedRodProblem::located_event(e, U, mode);
-      event_parities.push_back(mode ? mode_parity(*mode) : NAN);
-      if (mode)
-        {
-          std::ostringstream m;
-          m << "  mode " << symmetry_name(event_parities.back())
-            << " about the centre line (parity " << std::setprecision(3) << event_parities.back()
-            << ")";
-          say(m.str());
-        }
-      if (!write_output)
-        return;
-      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
-      write_section(output_directory + "/event-" + tag + ".vtu", U);
-      if (mode)
-        {
-          // The mode as a perturbation of the state at the event, scaled to
-          // a tenth of the width, so that its shape can be seen.
-          Vector<double> V = U;
-          double         m = 0;
-          for (unsigned int i = 0; i < n_field; ++i)
-            m = std::max(m, std::abs((*mode)[i]));
-          if (m > 0)
-            V.add(0.1 * strip_width / m, *mode);
-          write_section(output_directory + "/event-" + tag + "-mode.vtu", V);
-        }
-    }
-
     std::vector<solvers::EventRecord>
     StripProblem::follow_branches()
     {
       follow_path(arclength_settings, newton_settings, solution,
                   [this](const std::string &s) { say(s); });
       return event_records();
-    }
-
-    void
-    StripProblem::write_section(const std::string &file, const Vector<double> &U) const
-    {
-      // The deformed cross-section curve y(eta) in the director frame, with
-      // the thickness-line director q as a vector field: line cells.
-      const QGauss<1> points(degree + 1); // any points along each cell
-      std::vector<Point<1>> unit;
-      for (unsigned int i = 0; i <= degree; ++i)
-        unit.emplace_back(double(i) / degree);
-      const Quadrature<1>         nodes(unit);
-      FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
-      Vector<double>              field(U.begin(), U.begin() + n_field);
-      std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
-      std::vector<DataOutBase::Patch<1, 3>> patches;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fev.reinit(cell);
-          fev.get_function_values(field, values);
-          DataOutBase::Patch<1, 3> patch;
-          patch.n_subdivisions       = degree;
-          patch.reference_cell       = ReferenceCells::Line;
-          patch.points_are_available = true;
-          patch.data.reinit(4 + 3, nodes.size());
-          for (unsigned int k = 0; k < nodes.size(); ++k)
-            {
-              const double         eta = fev.quadrature_point(k)[0];
-              Tensor<1, 3, double> theta;
-              theta[0]             = values[k][3];
-              theta[2]             = values[k][4];
-              const auto R         = kinematics::rotation_exp(theta);
-              patch.data(0, k)     = eta;
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(1 + c, k) = R[c][1];
-              patch.data(4, k) = eta + values[k][0];
-              patch.data(5, k) = values[k][1];
-              patch.data(6, k) = values[k][2];
-            }
-          for (unsigned int v = 0; v < 2; ++v)
-            {
-              const unsigned int k = v == 0 ? 0 : degree;
-              patch.vertices[v] = Point<3>(patch.data(4, k), patch.data(5, k), patch.data(6, k));
-            }
-          patch.patch_index = patches.size();
-          patches.push_back(std::move(patch));
-        }
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{1, 3, "director", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, {"eta", "director", "director", "director"}, vectors,
-                               flags, o);
-      });
     }
 
     void

@@ -1,6 +1,7 @@
 #ifndef cosmo_kinematics_section_h
 #define cosmo_kinematics_section_h
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <array>

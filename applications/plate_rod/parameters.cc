@@ -1,0 +1,255 @@
+// The parameters of part 3: what the plate_rod application reads and checks.
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/config.h>
+
+#include "plate_rod_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include <fstream>
+
+namespace cosmo
+{
+  namespace plate_rod
+  {
+    void
+    PlateRodProblem::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Plate");
+      prm.declare_entry("Radius", "1", Patterns::Double(0), "Radius R of the disc.");
+      prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
+                        "Thickness h of the plate (h < R).");
+      prm.leave_subsection();
+      materials::NaghdiPlateLaw::declare_parameters(prm);
+      materials::PlateGrowth::declare_parameters(prm);
+      prm.enter_subsection("Rim rod");
+      prm.declare_entry("Stiffnesses", "0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6",
+                        Patterns::List(Patterns::Double(0), 6, 6),
+                        "GA1, GA2, EA, EI1, EI2, GJ of the rim's cross-section (d1 radial, d2 "
+                        "the plate normal, d3 the tangent): shear along d1, d2, extension, "
+                        "bending about d1 (out of plane), about d2 (in plane), torsion. E.g. the "
+                        "diagonal of a rod_cross_section stiffness.");
+      prm.declare_entry("Stiffness file", "", Patterns::Anything(),
+                        "If set: a rod_cross_section summary.json whose 6x6 'stiffness' gives "
+                        "the rim's stiffnesses (its diagonal; the section's X1 is the rim's "
+                        "radial axis d1, X2 the plate normal d2); replaces 'Stiffnesses'. The "
+                        "largest dropped off-diagonal coupling is logged.");
+      prm.declare_entry("Growth factor", "1", Patterns::Double(0),
+                        "Axial growth g of the rim at t = 1 (ramped as 1 + t (g - 1)); the "
+                        "stress-free rim is a ring of radius g R.");
+      prm.leave_subsection();
+      prm.enter_subsection("Model");
+      using Models = plugins::Registry<kinematics::PlateModel>;
+      prm.declare_entry("Model", "cosserat", Patterns::Selection(Models::names()),
+                        "The plate model (the registered models, "
+                        "source/kinematics/plate_models/). " + Models::documentation());
+      Models::declare_parameters(prm);
+      prm.declare_entry("Shear integration", "automatic",
+                        Patterns::Selection("automatic|stabilized|reduced"),
+                        "Transverse shear of the plate. stabilized: full Gauss integration with "
+                        "the shear stiffness times t^2/(t^2 + alpha h_K^2) (h_K the cell "
+                        "diameter; t^2 divided by the penalty in the kirchhoff model): "
+                        "locking-free and free of spurious modes; reduced: p Gauss points "
+                        "(Q2 then has a spurious transverse mode with little shear energy, "
+                        "which membrane compression destabilizes on fine meshes: measured at "
+                        "h_K ~ 3 h; the kirchhoff penalty keeps it far away); automatic: "
+                        "reduced for kirchhoff, stabilized otherwise.");
+      prm.declare_entry("Shear stabilization", "0.03", Patterns::Double(0),
+                        "alpha of the stabilized shear integration (0.03: the smallest "
+                        "threshold errors on coarse meshes, doc/theory-plate-rod.md).");
+      prm.leave_subsection();
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Domain", "full disc", Patterns::Selection("full disc|sector"),
+                        "full disc, or the sector 0 <= theta <= Sector angle with mirror "
+                        "conditions on both radial edges (keeps the modes cos(k n theta)).");
+      prm.declare_entry("Sector angle", "90", Patterns::Double(0, 360),
+                        "Sector angle in degrees: 180/n for an integer n >= 1.");
+      prm.declare_entry("Global refinements", "3", Patterns::Integer(0, 8),
+                        "Refinements of the coarse disc (5 cells) or sector (3 cells).");
+      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(2, 4),
+                        "Degree p of FE_Q(p) for all fields and of the mapping of the rim; "
+                        "shear terms and the rod are integrated with p Gauss points.");
+      prm.leave_subsection();
+      prm.enter_subsection("Growth path");
+      prm.declare_entry("Start", "0", Patterns::Double(0, 1),
+                        "Load parameter t where the path starts (growth is ramped from "
+                        "t = 0, none, to t = 1, the factors given); the flat state there "
+                        "must be stable.");
+      prm.declare_entry("Stop at first event", "false", Patterns::Bool(),
+                        "Stop where the first change of stability is located (critical "
+                        "growth only: studies, quick checks); the same as 'Arclength "
+                        "continuation / Stop at first event'.");
+      prm.leave_subsection();
+      io::ParameterSweep::declare_parameters(prm);
+      solvers::NewtonSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/plate_rod", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, plate.pvd, "
+                        "rim.pvd with their VTU files, event VTUs and log.txt.");
+      prm.leave_subsection();
+    }
+
+    void
+    PlateRodProblem::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Plate");
+      radius    = prm.get_double("Radius");
+      thickness = prm.get_double("Thickness");
+      if (!(radius > 0))
+        throw io::InputError("Plate", "Radius", prm.get("Radius"), "must be positive");
+      if (!(thickness > 0) || !(thickness < radius))
+        throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
+                             "must be positive and smaller than the radius " +
+                               prm.get("Radius"));
+      prm.leave_subsection();
+      plate_law.parse_parameters(prm);
+      plate_law.thickness = thickness;
+      plate_growth.parse_parameters(prm);
+
+      prm.enter_subsection("Rim rod");
+      const auto k = io::get_double_list(prm, "Stiffnesses", 6, "Rim rod");
+      std::copy(k.begin(), k.end(), rod_stiffness.begin());
+      stiffness_file = prm.get("Stiffness file");
+      if (!stiffness_file.empty())
+        {
+          // The part-1 summary.json: "stiffness": [[6 numbers], ... 6 rows].
+          std::ifstream in(stiffness_file);
+          if (!in)
+            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                 "a readable rod_cross_section summary.json (cannot open it)");
+          std::stringstream buffer;
+          buffer << in.rdbuf();
+          std::vector<double> K; // the finite numbers of "stiffness", row by row
+          std::size_t         rows = 0, non_square = 0;
+          try
+            {
+              const io::JSON  summary = io::JSON::parse(buffer.str());
+              const io::JSON *k       = summary.find("stiffness");
+              if (k && k->is_array())
+                for (rows = 0; rows < k->size(); ++rows)
+                  {
+                    non_square += k->at(rows).size() != 6;
+                    for (std::size_t b = 0; b < k->at(rows).size(); ++b)
+                      if (std::isfinite(k->at(rows).at(b).as_number()))
+                        K.push_back(k->at(rows).at(b).as_number());
+                  }
+            }
+          catch (std::runtime_error &e)
+            {
+              throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                   "a rod_cross_section summary.json (" + std::string(e.what()) +
+                                     ")");
+            }
+          if (K.size() != 36 || rows != 6 || non_square > 0)
+            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
+                                 "finite numbers (found " + std::to_string(K.size()) +
+                                 " numbers in " + std::to_string(rows) + " rows)");
+          double coupling = 0;
+          for (unsigned int a = 0; a < 6; ++a)
+            {
+              rod_stiffness[a] = K[7 * a];
+              for (unsigned int b = 0; b < 6; ++b)
+                if (a != b)
+                  coupling = std::max(coupling, std::abs(K[6 * a + b]) /
+                                                  std::sqrt(std::abs(K[7 * a] * K[7 * b])));
+            }
+          stiffness_coupling = coupling;
+        }
+      rod_growth = prm.get_double("Growth factor");
+      if (!(rod_growth > 0))
+        throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
+                             "must be positive");
+      // The rim against the plate: beyond 1e8 times the plate's own stiffness
+      // the coupled Hessian loses every digit of the plate's contribution in
+      // double precision (the rigid limit is reached to 1e-8 long before).
+      const double Eh = plate_law.young * thickness;
+      const double D  = Eh * thickness * thickness / (12 * (1 - plate_law.poisson * plate_law.poisson));
+      const char * names[6] = {"GA1", "GA2", "EA", "EI1", "EI2", "GJ"};
+      for (unsigned int i = 0; i < 6; ++i)
+        {
+          const double scale = i < 3 ? Eh * radius : D * radius;
+          if (!(rod_stiffness[i] > 0))
+            throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"),
+                                 std::string("every stiffness must be positive (") + names[i] +
+                                   " is not)");
+          if (rod_stiffness[i] > 1e8 * scale)
+            {
+              std::ostringstream m;
+              m << names[i] << " = " << rod_stiffness[i] << " is " << rod_stiffness[i] / scale
+                << " times the plate's " << (i < 3 ? "E h R" : "D R")
+                << ": stiffer than representable next to the plate in double precision (at "
+                   "most 1e8 times); a rim 1e6 times stiffer is already rigid to 1e-6";
+              throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"), m.str());
+            }
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Model");
+      const std::string m = prm.get("Model");
+      model = plugins::Registry<kinematics::PlateModel>::create(m);
+      model->parse_parameters(prm);
+      stabilized_shear = prm.get("Shear integration") == "stabilized" ||
+                         (prm.get("Shear integration") == "automatic" &&
+                          !model->automatic_reduced_shear());
+      shear_stabilization = prm.get_double("Shear stabilization");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      domain = prm.get("Domain");
+      {
+        const double angle = prm.get_double("Sector angle");
+        const double n     = 180. / angle;
+        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
+          throw io::InputError("Mesh", "Sector angle", prm.get("Sector angle"),
+                               "the sector must be pi/n: 180/n degrees for an integer n >= 1 "
+                               "(180, 90, 60, 45, 36, 30, ...)");
+        sector_n = static_cast<unsigned int>(std::round(n));
+      }
+      refinements = prm.get_integer("Global refinements");
+      if (domain == "full disc" && refinements == 0)
+        throw io::InputError("Mesh", "Global refinements", "0",
+                             "at least 1 for the full disc (its coarse mesh has no vertex at the "
+                             "centre for the gauge conditions)");
+      degree      = prm.get_integer("Polynomial degree");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Growth path");
+      path_start          = prm.get_double("Start");
+      stop_at_first_event = prm.get_bool("Stop at first event");
+      prm.leave_subsection();
+      newton_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
+      arclength_settings.enabled = true; // the plate is always followed by arclength
+      // 'Growth path / Stop at first event' is the library's entry under the
+      // plate's name: either stops the first branch at its first event.
+      arclength_settings.stop_at_first_event =
+        arclength_settings.stop_at_first_event || stop_at_first_event;
+      prm.enter_subsection("Output");
+      output_directory = prm.get("Output directory");
+      prm.leave_subsection();
+
+      // Growth must stay positive along the path.
+      prm.enter_subsection("Plate growth");
+      const std::string radial_text = prm.get("Radial growth factor"),
+                        circumferential_text = prm.get("Circumferential growth factor");
+      prm.leave_subsection();
+      for (const double t : {0., 1.})
+        for (unsigned int i = 0; i <= 20; ++i)
+          {
+            const auto g = plate_growth.factors(radius * i / 20., t);
+            if (!(g[0] > 0) || !(g[1] > 0))
+              throw io::InputError("Plate growth",
+                                   g[0] > 0 ? "Circumferential growth factor" : "Radial growth factor",
+                                   g[0] > 0 ? circumferential_text : radial_text,
+                                   "growth factors must be positive for 0 <= r <= R (not at r = " +
+                                     std::to_string(radius * i / 20.) + ")");
+          }
+    }
+  } // namespace plate_rod
+} // namespace cosmo

@@ -1,0 +1,492 @@
+// What part 3 reports: the steps table, the rim's Fourier amplitudes and the
+// mode classification, the closed forms, the plate and rim VTU files.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <cosmo/config.h>
+
+#include "plate_rod_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace plate_rod
+  {
+    PlateRodState
+    PlateRodProblem::analyse(const Vector<double> &U, const unsigned int n_modes) const
+    {
+      PlateRodState s;
+      s.t = load_parameter;
+      s.rim_w_amplitude.assign(n_modes, 0.);
+      s.rim_ur_amplitude.assign(n_modes, 0.);
+      const bool sector = domain == "sector";
+      // Fourier coefficients of w and u_r on the rim in the polar angle, for
+      // the mode numbers m = k step the domain admits (step = n on a sector
+      // pi/n: the mirror-symmetric extension has only those).
+      const unsigned int  step = sector_step();
+      std::vector<double> aw(n_modes), bw(n_modes), ar(n_modes), br(n_modes);
+      const QGauss<1>     face(degree + 1);
+      FEFaceValues<2>     fev(*mapping, *fe, face, update_values | update_quadrature_points | update_JxW_values);
+      std::vector<Vector<double>> values(face.size(), Vector<double>(6));
+      double              ur_mean = 0, length = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            {
+              fev.reinit(cell, f);
+              fev.get_function_values(U, values);
+              for (unsigned int q = 0; q < face.size(); ++q)
+                {
+                  const Point<2> X  = fev.quadrature_point(q);
+                  const double   r  = X.norm(), a = std::atan2(X[1], X[0]);
+                  const double   da = fev.JxW(q) / r;
+                  const double   w  = values[q][2];
+                  const double   ur = (values[q][0] * X[0] + values[q][1] * X[1]) / r;
+                  ur_mean += ur * fev.JxW(q);
+                  length += fev.JxW(q);
+                  for (unsigned int k = 0; k < n_modes; ++k)
+                    {
+                      const double m = double(k * step);
+                      aw[k] += w * std::cos(m * a) * da;
+                      bw[k] += w * std::sin(m * a) * da;
+                      ar[k] += ur * std::cos(m * a) * da;
+                      br[k] += ur * std::sin(m * a) * da;
+                    }
+                }
+            }
+      const double span = sector ? M_PI / sector_n : 2 * M_PI;
+      for (unsigned int k = 0; k < n_modes; ++k)
+        {
+          const double f = (k == 0 ? 1. : 2.) / span;
+          s.rim_w_amplitude[k]  = f * (sector ? std::abs(aw[k]) : std::hypot(aw[k], bw[k]));
+          s.rim_ur_amplitude[k] = f * (sector ? std::abs(ar[k]) : std::hypot(ar[k], br[k]));
+        }
+      s.rim_radial_strain = ur_mean / length / radius;
+      // The apex carries w = 0 (gauge): the dome height is minus the rim's mean w.
+      s.w_centre = -aw[0] / span;
+      double wmin = 0, wmax = 0;
+      for (unsigned int i = 0; i < U.size(); ++i)
+        if (dof_component[i] == 2)
+          wmin = std::min(wmin, U[i]), wmax = std::max(wmax, U[i]);
+      s.max_abs_w = wmax - wmin;
+      // The in-plane displacement at every node: u1 and u2 of the same support point.
+      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+      const unsigned int                   nodes = fe->base_element(0).n_dofs_per_cell();
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(idx);
+          for (unsigned int k = 0; k < nodes; ++k)
+            s.max_abs_inplane =
+              std::max(s.max_abs_inplane, std::hypot(U[idx[fe->component_to_system_index(0, k)]],
+                                                     U[idx[fe->component_to_system_index(1, k)]]));
+        }
+      return s;
+    }
+
+    std::pair<unsigned int, bool>
+    PlateRodProblem::classify_mode(const Vector<double> &mode) const
+    {
+      // Mode numbers up to what the rim resolves: one per rim face over the full circle
+      // (beyond, the Fourier amplitudes of the sampled rim alias).
+      unsigned int rim_faces = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            ++rim_faces;
+      const unsigned int full_circle = rim_faces * (domain == "sector" ? 2 * sector_n : 1);
+      const auto         s = analyse(mode, std::max(2u, full_circle / sector_step() + 1));
+      // Half the range of w (a mode's w is measured from the apex) against the largest
+      // in-plane displacement.
+      const bool   out = 0.5 * s.max_abs_w > s.max_abs_inplane;
+      const auto & a   = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
+      unsigned int k   = 0;
+      for (unsigned int j = 1; j < a.size(); ++j)
+        if (a[j] > a[k])
+          k = j;
+      return {k * sector_step(), out};
+    }
+
+    analysis::PlateRod
+    PlateRodProblem::closed_form_setting() const
+    {
+      analysis::PlateRod p;
+      p.radius    = radius;
+      p.thickness = thickness;
+      p.young     = plate_law.young;
+      p.poisson   = plate_law.poisson;
+      p.rod_EA    = rod_stiffness[2];
+      p.rod_EI1   = rod_stiffness[3];
+      p.rod_EI2   = rod_stiffness[4];
+      p.rod_GJ    = rod_stiffness[5];
+      return p;
+    }
+
+    void
+    PlateRodProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution = U;
+      load_parameter = report.t;
+      PlateRodState s = analyse(U);
+      s.n_negative    = report.n_negative;
+      s.branch        = report.branch;
+      auto same_state = [&](const Vector<double> &V, const double load) {
+        return V.size() == U.size() && load == load_parameter &&
+               std::equal(U.begin(), U.end(), V.begin());
+      };
+      // The driver has just factorized at this state, unless it located an event since.
+      if (!report_with_last_factorization && !same_state(factorized_at, factorized_load))
+        setup_jacobian(U);
+      report_with_last_factorization = false;
+      if (!same_state(assembled_at, assembled_load))
+        {
+          Vector<double> R;
+          assemble(U, &R, false);
+        }
+      s.plate_energy = assembled_energy[0];
+      s.rod_energy   = assembled_energy[1];
+      {
+        io::PhaseTimer::Scope scope(timer, "stability (smallest eigenvalue)");
+        Vector<double>        mask, mode;
+        mode_mask(mask);
+        s.smallest_eigenvalue = solvers::smallest_eigenvalue(*this, mask, mode, 30);
+      }
+      states.push_back(s);
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  branch " << report.branch
+           << "  t = " << std::setprecision(8) << std::setw(10) << report.t << "  Delta = "
+           << std::setprecision(5) << mismatch(report.t) << "  Newton " << report.newton_iterations
+           << "  dome " << std::setprecision(4) << s.w_centre << "  neg.eig. " << s.n_negative
+           << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue;
+      say(line.str());
+      if (!write_output)
+        return;
+      io::PhaseTimer::Scope scope(timer, "output");
+      std::vector<double> row = {double(report.step), double(report.branch), report.t,
+                                 mismatch(report.t), plate_growth.factors(radius, report.t)[1],
+                                 rod_growth_at(report.t), double(report.newton_iterations),
+                                 s.plate_energy + s.rod_energy, s.plate_energy, s.rod_energy,
+                                 s.w_centre, s.max_abs_w, s.max_abs_inplane, s.rim_radial_strain};
+      row.insert(row.end(), s.rim_w_amplitude.begin(), s.rim_w_amplitude.end());
+      row.insert(row.end(), s.rim_ur_amplitude.begin(), s.rim_ur_amplitude.end());
+      row.push_back(s.n_negative);
+      row.push_back(s.smallest_eigenvalue);
+      steps_table.add_row(row);
+      steps_table.write(output_directory + "/steps.csv");
+      const std::string tag = Utilities::int_to_string(output_index++, 4);
+      write_plate(output_directory + "/plate-" + tag + ".vtu", U);
+      write_rim(output_directory + "/rim-" + tag + ".vtu", U);
+      plate_series->add(report.step, "plate-" + tag + ".vtu");
+      rim_series->add(report.step, "rim-" + tag + ".vtu");
+    }
+
+    void
+    PlateRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
+    {
+      solvers::EventRecord r;
+      r.event = e;
+      r.state.assign(U.begin(), U.end());
+      if (mode)
+        r.mode.assign(mode->begin(), mode->end());
+      located_events.push_back(r);
+      if (write_output)
+        write_event(e, U, mode);
+    }
+
+    void
+    PlateRodProblem::write_event(const Event &, const Vector<double> &U, const Vector<double> *mode)
+    {
+      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
+      write_plate(output_directory + "/event-" + tag + ".vtu", U);
+      if (mode)
+        {
+          // The mode added to the state, scaled to a tenth of the radius.
+          Vector<double> V = U;
+          double         m = 0;
+          for (unsigned int i = 0; i < mode->size(); ++i)
+            if (dof_component[i] < 3)
+              m = std::max(m, std::abs((*mode)[i]));
+          if (m > 0)
+            V.add(0.1 * radius / m, *mode);
+          write_plate(output_directory + "/event-" + tag + "-mode.vtu", V);
+        }
+    }
+
+    void
+    PlateRodProblem::write_plate(const std::string &file, const Vector<double> &U) const
+    {
+      // The deformed mid-surface phi = X + u in 3D with the displacement, the
+      // director, the growth factors and the membrane forces and bending
+      // moments (polar components, plate law of the chosen model) as fields.
+      std::vector<Point<2>> unit;
+      for (unsigned int j = 0; j <= degree; ++j)
+        for (unsigned int i = 0; i <= degree; ++i)
+          unit.emplace_back(double(i) / degree, double(j) / degree);
+      const Quadrature<2> nodes(unit);
+      FEValues<2>         fev(*mapping, *fe, nodes,
+                      update_values | update_gradients | update_quadrature_points);
+      std::vector<Vector<double>>              values(nodes.size(), Vector<double>(6));
+      std::vector<std::vector<Tensor<1, 2>>>   grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
+      std::vector<DataOutBase::Patch<2, 3>>    patches;
+      const unsigned int                       np = degree + 1;
+      const unsigned int                       n_data = 3 + 3 + 2 + 3 + 3;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(U, values);
+          fev.get_function_gradients(U, grads);
+          DataOutBase::Patch<2, 3> patch;
+          patch.n_subdivisions       = degree;
+          patch.reference_cell       = ReferenceCells::Quadrilateral;
+          patch.points_are_available = true;
+          patch.data.reinit(n_data + 3, np * np);
+          for (unsigned int k = 0; k < nodes.size(); ++k)
+            {
+              const Point<2>               X = fev.quadrature_point(k);
+              std::array<double, kinematics::plate_local_variables> z{};
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  z[c]     = values[k][c];
+                  z[3 + c] = grads[k][c][0];
+                  z[6 + c] = grads[k][c][1];
+                }
+              for (unsigned int c = 0; c < 2; ++c)
+                {
+                  z[9 + c]  = values[k][3 + c];
+                  z[11 + c] = grads[k][3 + c][0];
+                  z[13 + c] = grads[k][3 + c][1];
+                }
+              const auto gr = growth_at(X, load_parameter);
+              const auto st = model->plate_strains(z, gr);
+              const Tensor<1, 3> d = model->director(z);
+              const double r = X.norm(), ca = r > 0 ? X[0] / r : 1, sa = r > 0 ? X[1] / r : 0;
+              // Polar components of a symmetric (11, 22, 12) tensor.
+              auto polar = [&](const std::array<double, 3> &a) {
+                const double rr = ca * ca * a[0] + sa * sa * a[1] + 2 * ca * sa * a[2];
+                const double tt = sa * sa * a[0] + ca * ca * a[1] - 2 * ca * sa * a[2];
+                const double rt = -ca * sa * a[0] + ca * sa * a[1] + (ca * ca - sa * sa) * a[2];
+                return std::array<double, 3>{{rr, tt, rt}};
+              };
+              const auto N  = polar(plate_law.membrane_force(st.membrane));
+              const auto M  = polar(plate_law.bending_moment(st.bending));
+              const auto gf = plate_growth.factors(r, load_parameter);
+              unsigned int col = 0;
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = values[k][c];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = d[c];
+              patch.data(col++, k) = gf[0];
+              patch.data(col++, k) = gf[1];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = N[c];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(col++, k) = M[c];
+              patch.data(n_data + 0, k) = X[0] + values[k][0];
+              patch.data(n_data + 1, k) = X[1] + values[k][1];
+              patch.data(n_data + 2, k) = values[k][2];
+            }
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
+              patch.vertices[v] =
+                Point<3>(patch.data(n_data, pt), patch.data(n_data + 1, pt), patch.data(n_data + 2, pt));
+            }
+          patch.patch_index = patches.size();
+          patches.push_back(std::move(patch));
+        }
+      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
+                                              "director",     "director",     "director",
+                                              "growth_radial", "growth_circumferential",
+                                              "N_rr",         "N_tt",         "N_rt",
+                                              "M_rr",         "M_tt",         "M_rt"};
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
+                   {3, 5, "director", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, o);
+      });
+    }
+
+    void
+    PlateRodProblem::write_rim(const std::string &file, const Vector<double> &U) const
+    {
+      // The rim rod as a polyline through phi(X(S)) with its frame d1, d2, d3
+      // and its strains and resultants (n = dpsi/dnu, m = dpsi/dkappa).
+      std::vector<Point<1>> unit;
+      for (unsigned int i = 0; i <= degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      const Quadrature<1> nodes(unit);
+      FEFaceValues<2>     fev(*mapping, *fe, nodes,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_normal_vectors);
+      std::vector<Vector<double>>            values(nodes.size(), Vector<double>(6));
+      std::vector<std::vector<Tensor<1, 2>>> grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
+      std::vector<DataOutBase::Patch<1, 3>>  patches;
+      const auto                             rod   = rod_law();
+      const double                           g_rod = rod_growth_at(load_parameter);
+      const unsigned int                     n_data = 9 + 6 + 6;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+            {
+              fev.reinit(cell, f);
+              fev.get_function_values(U, values);
+              fev.get_function_gradients(U, grads);
+              DataOutBase::Patch<1, 3> patch;
+              patch.n_subdivisions       = degree;
+              patch.reference_cell       = ReferenceCells::Line;
+              patch.points_are_available = true;
+              patch.data.reinit(n_data + 3, nodes.size());
+              for (unsigned int k = 0; k < nodes.size(); ++k)
+                {
+                  const Point<2> X     = fev.quadrature_point(k);
+                  const auto     frame = kinematics::circular_rim_frame(X, fev.normal_vector(k));
+                  const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
+                  std::array<double, kinematics::rim_local_variables> z{};
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      z[c]     = values[k][c];
+                      z[3 + c] = grads[k][c] * t2;
+                    }
+                  z[6]  = values[k][3];
+                  z[7]  = values[k][4];
+                  z[8]  = grads[k][3] * t2;
+                  z[9]  = grads[k][4] * t2;
+                  z[10] = values[k][5];
+                  z[11] = grads[k][5] * t2;
+                  auto law              = rod;
+                  law.reference_strains = kinematics::rim_reference_strains(X, frame);
+                  const auto e          = model->rim_strains(
+                    z, frame, {{law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}});
+                  // Frame: Lambda = exp(theta) exp(alpha E3) Lambda0.
+                  Tensor<1, 3, double> th, al;
+                  th[0] = z[6], th[1] = z[7], al[2] = z[10];
+                  const Tensor<2, 3> L =
+                    kinematics::rotation_exp(th) * kinematics::rotation_exp(al) * frame.Lambda0;
+                  unsigned int col = 0;
+                  for (unsigned int j = 0; j < 3; ++j)
+                    for (unsigned int i = 0; i < 3; ++i)
+                      patch.data(col++, k) = L[i][j];
+                  const auto resultants = law.resultants(e, g_rod);
+                  for (unsigned int j = 0; j < 6; ++j)
+                    patch.data(col++, k) = e[j];
+                  for (unsigned int j = 0; j < 6; ++j)
+                    patch.data(col++, k) = resultants[j];
+                  patch.data(n_data + 0, k) = X[0] + values[k][0];
+                  patch.data(n_data + 1, k) = X[1] + values[k][1];
+                  patch.data(n_data + 2, k) = values[k][2];
+                }
+              for (unsigned int v = 0; v < 2; ++v)
+                {
+                  const unsigned int k = v == 0 ? 0 : degree;
+                  patch.vertices[v] = Point<3>(patch.data(n_data, k), patch.data(n_data + 1, k),
+                                               patch.data(n_data + 2, k));
+                }
+              patch.patch_index = patches.size();
+              patches.push_back(std::move(patch));
+            }
+      std::vector<std::string> names = {"d1", "d1", "d1", "d2", "d2", "d2", "d3", "d3", "d3",
+                                        "nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3",
+                                        "n1", "n2", "n3", "m1", "m2", "m3"};
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{0, 2, "d1", DataComponentInterpretation::component_is_part_of_vector},
+                   {3, 5, "d2", DataComponentInterpretation::component_is_part_of_vector},
+                   {6, 8, "d3", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, o);
+      });
+    }
+
+    io::JSON
+    PlateRodProblem::closed_forms(double &first_mismatch, std::string &text) const
+    {
+      io::JSON     closed = io::JSON::object();
+      const double Delta1 = mismatch(1.);
+      first_mismatch      = NAN;
+      if (!std::isfinite(Delta1) || Delta1 == 0)
+        return closed;
+      const auto p = closed_form_setting();
+      // t at which the mismatch reaches Delta (linear ramps).
+      const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;
+      auto         t_of = [&](const double D) { return analysis::load_parameter_at_mismatch(D, a, b); };
+      auto         entry = [&](const unsigned int n, const double D) {
+        io::JSON x    = io::JSON::object();
+        x["n"]        = n;
+        x["mismatch"] = D;
+        x["t"]        = t_of(D);
+        return x;
+      };
+      std::ostringstream c;
+      c << std::setprecision(6);
+      if (Delta1 > 0)
+        {
+          const double D                     = analysis::axisymmetric_critical_mismatch(p);
+          closed["axisymmetric"]["mismatch"] = D;
+          closed["axisymmetric"]["t"]        = t_of(D);
+          first_mismatch                     = D;
+          c << "  closed form (Kirchhoff, small strain): axisymmetric buckling at Delta = " << D
+            << ", t = " << t_of(D);
+        }
+      else
+        {
+          // The lobed families, over the mode numbers the domain admits (a sector pi/n keeps
+          // the multiples of n).
+          const unsigned int step = domain == "sector" ? sector_n : 1;
+          const unsigned int n0   = step >= 2 ? step : 2;
+          double             best_out = -1e300, best_planar = -1e300;
+          unsigned int       n_out = 0, n_planar = 0;
+          c << "  closed forms (Kirchhoff, small strain), out-of-plane lobes:";
+          for (unsigned int n = n0; n <= std::max(12u, n0 + 4 * step); n += step)
+            {
+              const double D = analysis::out_of_plane_critical_mismatch(p, n);
+              closed["out_of_plane"].push_back(entry(n, D));
+              if (n <= n0 + 3 * step)
+                c << " n = " << n << ": Delta = " << D << " (t = " << t_of(D) << ")";
+              if (D > best_out)
+                best_out = D, n_out = n;
+            }
+          for (unsigned int n = n0; n <= 200; n += step)
+            {
+              const double D = analysis::planar_critical_mismatch(p, n);
+              if (D > best_planar)
+                best_planar = D, n_planar = n;
+            }
+          closed["first_out_of_plane"] = entry(n_out, best_out);
+          closed["first_planar"]       = entry(n_planar, best_planar);
+          first_mismatch               = std::max(best_out, best_planar);
+          c << "\n  first out-of-plane mode n = " << n_out << " at Delta = " << best_out
+            << "; first planar mode n = " << n_planar << " at Delta = " << best_planar << " (t = "
+            << t_of(best_planar) << ")";
+        }
+      closed["first"]["mismatch"] = first_mismatch;
+      closed["first"]["t"]        = t_of(first_mismatch);
+      text                        = c.str();
+      return closed;
+    }
+
+    std::vector<double>
+    PlateRodProblem::classify_critical_mode(const Vector<double> &mode) const
+    {
+      const auto c = classify_mode(mode);
+      return {double(c.first), double(c.second)};
+    }
+
+    std::vector<double>
+    PlateRodProblem::critical_point_columns(const solvers::EventRecord &e) const
+    {
+      double      closed = NAN;
+      std::string text;
+      closed_forms(closed, text);
+      return {mismatch(e.event.lambda), closed};
+    }
+  } // namespace plate_rod
+} // namespace cosmo

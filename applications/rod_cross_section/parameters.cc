@@ -1,0 +1,95 @@
+// The parameters of part 1: what the rod_cross_section application reads and checks.
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/config.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/kinematics/section.h>
+
+#include "cross_section_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    void
+    CrossSectionProblem::declare_parameters(ParameterHandler &prm)
+    {
+      geometry::CrossSectionGeometry::declare_parameters(prm);
+      materials::MaterialLibrary::declare_parameters(prm);
+      materials::SurfaceLayerLibrary::declare_parameters(prm);
+
+      prm.enter_subsection("Finite element");
+      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
+                        "Degree p of the FE_Q(p)^3 displacement of the cross-section "
+                        "(and of the isoparametric mapping). p >= 2 for nearly "
+                        "incompressible materials.");
+      prm.leave_subsection();
+
+      assembly::ReducedRodProblem::declare_strain_parameters(prm);
+
+      solvers::NewtonSettings::declare_parameters(prm);
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Linear solver", solvers::SparseDirectSolver::kind_names() ==
+                                             "UMFPACK" ? "UMFPACK" : "MUMPS",
+                        Patterns::Selection(solvers::SparseDirectSolver::kind_names()),
+                        "Sparse direct solver of the Newton systems: MUMPS (LDL^T, "
+                        "gives the stability indicator) or UMFPACK (LU).");
+      prm.leave_subsection();
+      solvers::ContinuationSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
+
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/rod_cross_section", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, the VTU "
+                        "series and log.txt (created if needed).");
+      prm.declare_entry("VTU output", "every step", Patterns::Selection("every step|final|none"),
+                        "When to write the deformed section (solution-NNNN.vtu, "
+                        "solution.pvd) and the 3D rod piece (rod-NNNN.vtu, rod.pvd).");
+      prm.declare_entry("Rod piece length", "0", Patterns::Double(0),
+                        "Length (reference arc length) of the 3D piece of rod swept along "
+                        "the helix; 0: one helical turn, at most 10 section diameters.");
+      prm.declare_entry("Rod piece slices", "24", Patterns::Integer(1, 1000),
+                        "Number of slices of the 3D rod piece along its length.");
+      prm.declare_entry("Stiffness at every step", "true", Patterns::Bool(),
+                        "Compute the 6x6 stiffness (one more factorization) at every "
+                        "step, not only at the final one.");
+      prm.leave_subsection();
+
+      io::ParameterSweep::declare_parameters(prm);
+    }
+
+    void
+    CrossSectionProblem::parse_parameters(ParameterHandler &prm)
+    {
+      geometry.parse_parameters(prm);
+      materials.parse_parameters(prm);
+      surface_layers.parse_parameters(prm);
+
+      prm.enter_subsection("Finite element");
+      degree = prm.get_integer("Polynomial degree");
+      prm.leave_subsection();
+
+      parse_strain_parameters(prm);
+
+      newton_settings.parse_parameters(prm);
+      prm.enter_subsection("Nonlinear solver");
+      linear_solver_name = prm.get("Linear solver");
+      prm.leave_subsection();
+      continuation_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
+
+      prm.enter_subsection("Output");
+      output_directory     = prm.get("Output directory");
+      vtu_frequency        = prm.get("VTU output");
+      rod_piece_length     = prm.get_double("Rod piece length");
+      rod_piece_slices     = prm.get_integer("Rod piece slices");
+      stiffness_every_step = prm.get_bool("Stiffness at every step");
+      prm.leave_subsection();
+    }
+  } // namespace rod
+} // namespace cosmo

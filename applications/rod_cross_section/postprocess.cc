@@ -1,0 +1,484 @@
+// What part 1 reports: the steps table, the section's VTU (stresses and
+// growth), the surface layers, the rod swept along its helix, summary.json and
+// the final state in words.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <cosmo/config.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/kinematics/section.h>
+
+#include "cross_section_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    namespace
+    {
+      std::string
+      fixed(const double v, const int precision = 6)
+      {
+        std::ostringstream s;
+        s << std::setprecision(precision) << v;
+        return s.str();
+      }
+    } // namespace
+
+    namespace
+    {
+      /// Stresses and growth at output points of the deformed section.
+      class SectionPostprocessor : public DataPostprocessor<2>
+      {
+      public:
+        SectionPostprocessor(const materials::MaterialLibrary &materials,
+                             const std::array<double, 6> &     strains,
+                             const double                      t)
+          : materials(materials)
+          , nu({strains[0], strains[1], strains[2]})
+          , kappa({strains[3], strains[4], strains[5]})
+          , t(t)
+        {}
+
+        std::vector<std::string>
+        get_names() const override
+        {
+          return {"position", "position", "position", "traction_E3", "traction_E3",
+                  "traction_E3", "von_Mises_stress", "mean_stress", "growth_J",
+                  "elastic_J", "energy_density", "region"};
+        }
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        get_data_component_interpretation() const override
+        {
+          std::vector<DataComponentInterpretation::DataComponentInterpretation> v(
+            12, DataComponentInterpretation::component_is_scalar);
+          for (unsigned int k = 0; k < 6; ++k)
+            v[k] = DataComponentInterpretation::component_is_part_of_vector;
+          return v;
+        }
+        UpdateFlags
+        get_needed_update_flags() const override
+        {
+          return update_values | update_gradients | update_quadrature_points;
+        }
+        void
+        evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
+                              std::vector<Vector<double>> &             out) const override
+        {
+          const auto  cell     = in.template get_cell<2>();
+          const auto &material = materials.material(cell->material_id());
+          for (unsigned int p = 0; p < out.size(); ++p)
+            {
+              const Point<2> &X = in.evaluation_points[p];
+              const Tensor<1, 3> w = kinematics::section_placement(
+                X, Tensor<1, 3>({in.solution_values[p][0], in.solution_values[p][1],
+                                 in.solution_values[p][2]}));
+              Tensor<2, 3> grad_u;
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 2; ++j)
+                  grad_u[i][j] = in.solution_gradients[p][i][j];
+              const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, nu, kappa);
+              const Tensor<2, 3>           Fg = material.growth.value(X, t);
+              materials::EnergyDerivatives d;
+              material.evaluate(F, Fg, false, d);
+              Tensor<2, 3> P;
+              for (unsigned int a = 0; a < 9; ++a)
+                P[a / 3][a % 3] = d.P[a];
+              const double       J     = determinant(F);
+              const Tensor<2, 3> sigma = (J > 0 ? 1. / J : 0.) * P * transpose(F);
+              const double       mean  = trace(sigma) / 3;
+              Tensor<2, 3>       dev   = sigma;
+              for (unsigned int i = 0; i < 3; ++i)
+                dev[i][i] -= mean;
+              for (unsigned int i = 0; i < 3; ++i)
+                out[p][i] = w[i];
+              for (unsigned int i = 0; i < 3; ++i)
+                out[p][3 + i] = P[i][2];
+              out[p][6]  = std::sqrt(1.5 * scalar_product(dev, dev));
+              out[p][7]  = mean;
+              out[p][8]  = determinant(Fg);
+              out[p][9]  = J / determinant(Fg);
+              out[p][10] = d.energy;
+              out[p][11] = cell->material_id();
+            }
+        }
+
+      private:
+        const materials::MaterialLibrary &materials;
+        const Tensor<1, 3>                nu, kappa;
+        const double                      t;
+      };
+    } // namespace
+
+    void
+    CrossSectionProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution = U;
+      const bool with_stiffness = stiffness_every_step || report.final;
+      if (with_stiffness)
+        last_state = current_state();
+      else
+        {
+          FieldIntegrals a;
+          assemble(solution, nullptr, false, &a);
+          last_state.t             = load_parameter;
+          last_state.energy        = a.energy;
+          last_state.min_elastic_J = a.min_elastic_J;
+          last_state.resultants    = a.resultants;
+          last_state.strains       = strains_of(solution);
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            last_state.multipliers[k] = solution[n_u() + k];
+          last_state.n_negative = -1;
+        }
+      const CrossSectionState &s = last_state;
+      record_state(report, s);
+
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8)
+           << fixed(report.t, 5) << "  Newton " << std::setw(2) << report.newton_iterations
+           << "  |R| " << std::scientific << std::setprecision(1) << report.residual_norm
+           << std::defaultfloat << "  Psi = " << fixed(s.energy, 8) << "  neg.eig. "
+           << s.n_negative;
+      if (std::any_of(strain_is_free.begin(), strain_is_free.end(), [](bool b) { return b; }))
+        {
+          line << "  strains (";
+          for (unsigned int k = 0; k < 6; ++k)
+            line << (k ? ", " : "") << fixed(s.strains[k], 6);
+          line << ")";
+        }
+      say(line.str());
+
+      if (!write_output)
+        return;
+      io::PhaseTimer::Scope scope(timer, "output");
+      std::vector<double> row = {double(report.step), double(report.branch), report.t,
+                                 double(report.newton_iterations), report.residual_norm,
+                                 double(report.cutbacks), s.energy};
+      row.insert(row.end(), s.strains.begin(), s.strains.end());
+      row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+      row.insert(row.end(), s.multipliers.begin(), s.multipliers.end());
+      for (unsigned int k = 0; k < 6; ++k)
+        row.push_back(with_stiffness ? s.stiffness(k, k) : NAN);
+      row.push_back(s.n_negative);
+      row.push_back(s.min_elastic_J);
+      steps_table.add_row(row);
+      steps_table.write(output_directory + "/steps.csv");
+      if (vtu_frequency == "every step" || (vtu_frequency == "final" && report.final))
+        write_vtu(report.step, report.t);
+    }
+
+    void
+    CrossSectionProblem::write_vtu(const unsigned int step, const double t)
+    {
+      const std::string name = "solution-" + Utilities::int_to_string(step, 4) + ".vtu";
+      {
+        Vector<double> u(solution.begin(), solution.begin() + n_u());
+        SectionPostprocessor post(materials, strains_of(solution), t);
+        DataOut<2>           data_out;
+        data_out.attach_dof_handler(dof_handler);
+        std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
+          3, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(u, std::vector<std::string>(3, "displacement"),
+                                 DataOut<2>::type_dof_data, interp);
+        data_out.add_data_vector(u, post);
+        data_out.build_patches(*mapping, degree, DataOut<2>::curved_inner_cells);
+
+        // deal.II groups vector components of 2D output in pairs, but the
+        // section's fields (displacement, position, traction) are 3-vectors:
+        // lift the patches into 3D space (points (X1, X2, 0)), where VTU
+        // vectors have three components and ParaView can warp the section
+        // by the displacement.
+        const std::vector<std::string> names = {
+          "displacement", "displacement", "displacement", "position", "position", "position",
+          "traction_E3", "traction_E3", "traction_E3", "von_Mises_stress", "mean_stress",
+          "growth_J", "elastic_J", "energy_density", "region"};
+        const unsigned int n_data = names.size();
+        std::vector<DataOutBase::Patch<2, 3>> patches;
+        for (const auto &p2 : data_out.get_patches())
+          {
+            DataOutBase::Patch<2, 3> p3;
+            p3.n_subdivisions       = p2.n_subdivisions;
+            p3.reference_cell       = p2.reference_cell;
+            p3.patch_index          = p2.patch_index;
+            p3.points_are_available = true;
+            for (unsigned int v = 0; v < 4; ++v)
+              p3.vertices[v] = Point<3>(p2.vertices[v][0], p2.vertices[v][1], 0);
+            const unsigned int n_points = p2.data.n_cols();
+            const unsigned int np       = p2.n_subdivisions + 1;
+            p3.data.reinit(n_data + 3, n_points);
+            for (unsigned int k = 0; k < n_points; ++k)
+              {
+                for (unsigned int r = 0; r < n_data; ++r)
+                  p3.data(r, k) = p2.data(r, k);
+                Point<2> x;
+                if (p2.points_are_available)
+                  x = Point<2>(p2.data(n_data, k), p2.data(n_data + 1, k));
+                else
+                  {
+                    const double xi = double(k % np) / p2.n_subdivisions,
+                                 eta = double(k / np) / p2.n_subdivisions;
+                    x = (1 - xi) * (1 - eta) * p2.vertices[0] + xi * (1 - eta) * p2.vertices[1] +
+                        (1 - xi) * eta * p2.vertices[2] + xi * eta * p2.vertices[3];
+                  }
+                p3.data(n_data, k)     = x[0];
+                p3.data(n_data + 1, k) = x[1];
+                p3.data(n_data + 2, k) = 0;
+              }
+            patches.push_back(std::move(p3));
+          }
+        std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                               DataComponentInterpretation::DataComponentInterpretation>>
+          vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
+                     {3, 5, "position", DataComponentInterpretation::component_is_part_of_vector},
+                     {6, 8, "traction_E3", DataComponentInterpretation::component_is_part_of_vector}};
+        DataOutBase::VtkFlags flags;
+        flags.write_higher_order_cells = false;
+        io::write_file_atomically(output_directory + "/" + name, [&](std::ostream &out) {
+          DataOutBase::write_vtu(patches, names, vectors, flags, out);
+        });
+      }
+      pvd->add(t, name);
+      const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
+      write_rod_piece(output_directory + "/" + rod_name);
+      pvd_rod->add(t, rod_name);
+      if (!surface_faces.empty())
+        {
+          const std::string surface_name = "surface-" + Utilities::int_to_string(step, 4) + ".vtu";
+          write_surface_layers(output_directory + "/" + surface_name, t);
+          pvd_surface->add(t, surface_name);
+        }
+    }
+
+    void
+    CrossSectionProblem::write_surface_layers(const std::string &file, const double t) const
+    {
+      // The layers as polylines on the reference boundary (points (X1, X2, 0),
+      // with the displacement to warp by), with their growth and stress.
+      const auto         e = strains_of(solution);
+      const Tensor<1, 3> nu({e[0], e[1], e[2]}), kappa({e[3], e[4], e[5]});
+      const unsigned int p = degree;
+      std::vector<Point<1>> unit_points;
+      for (unsigned int i = 0; i <= p; ++i)
+        unit_points.emplace_back(double(i) / p);
+      const Quadrature<1> points(unit_points);
+      FEFaceValues<2>     ffv(*mapping, *fe, points,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_normal_vectors);
+      Vector<double>                   u(solution.begin(), solution.begin() + n_u());
+      std::vector<Vector<double>>      u_values(p + 1, Vector<double>(3));
+      std::vector<std::vector<Tensor<1, 2>>> u_grads(p + 1, std::vector<Tensor<1, 2>>(3));
+      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
+                                              "growth_T", "growth_3", "stress_TT", "stress_33",
+                                              "stress_T3", "layer"};
+      std::vector<DataOutBase::Patch<1, 3>> patches;
+      for (const auto &sf : surface_faces)
+        {
+          const auto &layer = surface_layers.layers()[sf.layer];
+          ffv.reinit(sf.cell, sf.face);
+          ffv.get_function_values(u, u_values);
+          ffv.get_function_gradients(u, u_grads);
+          DataOutBase::Patch<1, 3> patch;
+          patch.n_subdivisions       = p;
+          patch.reference_cell       = ReferenceCells::Line;
+          patch.points_are_available = true;
+          patch.data.reinit(names.size() + 3, p + 1);
+          for (unsigned int k = 0; k <= p; ++k)
+            {
+              const Point<2> &   X  = ffv.quadrature_point(k);
+              const Tensor<1, 2> &N = ffv.normal_vector(k);
+              const Tensor<1, 2> T = kinematics::boundary_tangent(N);
+              Tensor<1, 3>       du_dS;
+              for (unsigned int c = 0; c < 3; ++c)
+                du_dS[c] = u_grads[k][c] * T;
+              const Tensor<1, 3> w  = kinematics::section_placement(
+                X, Tensor<1, 3>({u_values[k][0], u_values[k][1], u_values[k][2]}));
+              const auto         g  = layer.growth(X, t);
+              const auto         S  = layer.stress(
+                kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa), g, t);
+              const std::vector<double> v = {u_values[k][0], u_values[k][1], u_values[k][2],
+                                             g[0], g[1], S[0], S[1], S[2], double(sf.layer + 1)};
+              for (unsigned int r = 0; r < v.size(); ++r)
+                patch.data(r, k) = v[r];
+              patch.data(names.size(), k)     = X[0];
+              patch.data(names.size() + 1, k) = X[1];
+              patch.data(names.size() + 2, k) = 0;
+            }
+          patch.vertices[0] = Point<3>(patch.data(names.size(), 0), patch.data(names.size() + 1, 0), 0);
+          patch.vertices[1] = Point<3>(patch.data(names.size(), p), patch.data(names.size() + 1, p), 0);
+          patch.patch_index = patches.size();
+          patches.push_back(std::move(patch));
+        }
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      flags.write_higher_order_cells = false;
+      io::write_file_atomically(file, [&](std::ostream &out) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, out);
+      });
+    }
+
+    void
+    CrossSectionProblem::write_rod_piece(const std::string &file) const
+    {
+      // A short piece of the rod in 3D: the deformed section swept along the
+      // helix, x(X1, X2, X3) = r(X3) + R(X3) w(X1, X2).
+      const auto                e = strains_of(solution);
+      const kinematics::RodStrains strains(e);
+      const double              D = section_properties.diameter;
+      double                    L = rod_piece_length;
+      if (L == 0)
+        {
+          const double k = strains.kappa.norm();
+          L              = (k > 0) ? std::min(2 * M_PI / k, 10 * D) : 3 * D;
+        }
+      const unsigned int p  = degree;
+      const unsigned int np = p + 1;
+      std::vector<Point<2>> unit_points;
+      for (unsigned int j = 0; j < np; ++j)
+        for (unsigned int i = 0; i < np; ++i)
+          unit_points.emplace_back(double(i) / p, double(j) / p);
+      const Quadrature<2> points(unit_points);
+      FEValues<2>         fev(*mapping, *fe, points, update_values | update_quadrature_points);
+      Vector<double>              u(solution.begin(), solution.begin() + n_u());
+      std::vector<Vector<double>> u_values(unit_points.size(), Vector<double>(3));
+
+      std::vector<DataOutBase::Patch<3, 3>> patches;
+      const unsigned int                    n_slices = rod_piece_slices;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(u, u_values);
+          for (unsigned int s = 0; s < n_slices; ++s)
+            {
+              DataOutBase::Patch<3, 3> patch;
+              patch.n_subdivisions       = p;
+              patch.reference_cell       = ReferenceCells::Hexahedron;
+              patch.points_are_available = true;
+              const unsigned int n_points = np * np * np;
+              patch.data.reinit(2 + 3, n_points);
+              for (unsigned int k = 0; k < np; ++k)
+                {
+                  const double X3 = L * (s + double(k) / p) / n_slices;
+                  const Tensor<2, 3> R = kinematics::helix_rotation(strains.kappa, X3);
+                  const Tensor<1, 3> r = kinematics::helix_position(strains.nu, strains.kappa, X3);
+                  for (unsigned int ij = 0; ij < np * np; ++ij)
+                    {
+                      const Point<2> &X = fev.quadrature_point(ij);
+                      const Tensor<1, 3> w({X[0] + u_values[ij][0], X[1] + u_values[ij][1],
+                                            u_values[ij][2]});
+                      const Tensor<1, 3> x = r + R * w;
+                      const unsigned int pt = k * np * np + ij;
+                      patch.data(0, pt) = X3;
+                      patch.data(1, pt) = cell->material_id();
+                      for (unsigned int c = 0; c < 3; ++c)
+                        patch.data(2 + c, pt) = x[c];
+                    }
+                }
+              // Corner vertices (used by some writers for bounding boxes).
+              for (unsigned int v = 0; v < 8; ++v)
+                {
+                  const unsigned int i = (v & 1) ? p : 0, j = (v & 2) ? p : 0,
+                                     k = (v & 4) ? p : 0;
+                  const unsigned int pt = k * np * np + j * np + i;
+                  patch.vertices[v] =
+                    Point<3>(patch.data(2, pt), patch.data(3, pt), patch.data(4, pt));
+                }
+              patch.patch_index = patches.size();
+              patches.push_back(std::move(patch));
+            }
+        }
+      DataOutBase::VtkFlags flags;
+      flags.write_higher_order_cells = false;
+      io::write_file_atomically(file, [&](std::ostream &out) {
+        DataOutBase::write_vtu(patches, {"arc_length", "region"}, {}, flags, out);
+      });
+    }
+
+    void
+    CrossSectionProblem::write_summary() const
+    {
+      using io::JSON;
+      JSON j                  = record.summary();
+      j["mode"]               = mode;
+      JSON free               = JSON::array();
+      for (unsigned int k = 0; k < 6; ++k)
+        if (strain_is_free[k])
+          free.push_back(kinematics::strain_names[k]);
+      j["free_strains"]       = free;
+      j["load_parameter"]     = last_state.t;
+      JSON &mesh              = j["mesh"];
+      mesh["shape"]           = geometry.shape;
+      mesh["cells"]           = triangulation.n_active_cells();
+      mesh["field_dofs"]      = n_u();
+      mesh["degree"]          = degree;
+      mesh["area"]            = section_properties.area;
+      mesh["I11"]             = section_properties.I11;
+      mesh["I22"]             = section_properties.I22;
+      mesh["diameter"]        = section_properties.diameter;
+      mesh["centroid_shift"]  = JSON::array({geometry.applied_shift[0], geometry.applied_shift[1]});
+      JSON mats               = JSON::array();
+      for (const auto &s : materials.descriptions())
+        mats.push_back(s);
+      j["materials"]          = mats;
+      JSON layers             = JSON::array();
+      for (const auto &s : surface_layers.descriptions())
+        layers.push_back(s);
+      j["surface_layers"]     = layers;
+      add_state_to_summary(j, last_state);
+      j["min_elastic_J"]              = last_state.min_elastic_J;
+      const auto h = kinematics::helix_geometry(kinematics::RodStrains(last_state.strains));
+      JSON &helix  = j["helix"];
+      helix["description"] = h.description();
+      helix["radius"]      = h.radius;
+      helix["pitch"]       = h.pitch; // inf -> null for a straight rod
+      helix["handedness"]  = h.handedness;
+      helix["axis"]        = JSON::array({h.axis[0], h.axis[1], h.axis[2]});
+      helix["curvature"]   = h.curvature;
+      helix["torsion"]     = h.torsion;
+      j["newton_iterations"] = total_newton_iterations;
+      record.finish(j, timer);
+    }
+
+    void
+    CrossSectionProblem::say_result() const
+    {
+      const auto &s = last_state;
+      say("");
+      say("Result at t = " + fixed(s.t) + ":");
+      std::ostringstream out;
+      out << "  energy per unit length  " << fixed(s.energy, 10) << "\n  strains    ";
+      for (unsigned int k = 0; k < 6; ++k)
+        out << " " << kinematics::strain_names[k] << " = " << fixed(s.strains[k], 10);
+      out << "\n  resultants ";
+      for (unsigned int k = 0; k < 6; ++k)
+        out << " " << kinematics::resultant_names[k] << " = " << fixed(s.resultants[k], 6);
+      out << "\n  multipliers";
+      for (unsigned int k = 0; k < 6; ++k)
+        out << " " << fixed(s.multipliers[k], 3);
+      out << "\n  stiffness (nu1, nu2, nu3, kappa1, kappa2, kappa3):\n";
+      for (unsigned int a = 0; a < 6; ++a)
+        {
+          out << "   ";
+          for (unsigned int b = 0; b < 6; ++b)
+            out << std::setw(14) << fixed(s.stiffness(a, b), 6);
+          out << "\n";
+        }
+      out << "  natural/current centreline: "
+          << kinematics::helix_geometry(kinematics::RodStrains(s.strains)).description() << "\n";
+      out << "  timings [s]:";
+      for (const auto &p : timer.phases())
+        out << "  " << p << " " << fixed(timer.seconds(p), 3);
+      say(out.str());
+    }
+  } // namespace rod
+} // namespace cosmo

@@ -1,0 +1,90 @@
+// The parameters of part 2: what the strip application reads and checks.
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/config.h>
+#include <cosmo/kinematics/helix.h>
+
+#include "strip_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace strip
+  {
+    void
+    StripProblem::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Strip");
+      prm.declare_entry("Width", "1", Patterns::Double(0), "Width w of the strip (length unit).");
+      prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
+                        "Thickness h of the plate; h < w.");
+      prm.declare_entry("Number of cells", "40", Patterns::Integer(1, 100000),
+                        "Cells across the width.");
+      prm.declare_entry("Mesh", "graded", Patterns::Selection("graded|uniform"),
+                        "graded: vertices at eta = (w/2) sin(pi xi/2), xi uniform in "
+                        "[-1, 1], finer toward the free edges where the boundary layers "
+                        "are; uniform: equal cells.");
+      prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
+                        "Degree p of FE_Q(p) for u and theta.");
+      prm.declare_entry("Shear integration", "reduced", Patterns::Selection("reduced|full"),
+                        "reduced: the transverse shear energy with p Gauss points (against "
+                        "shear locking, doc/specification/strip.md); full: p + 1 like the rest.");
+      prm.leave_subsection();
+      materials::NaghdiPlateLaw::declare_parameters(prm);
+      assembly::ReducedRodProblem::declare_strain_parameters(prm);
+      solvers::NewtonSettings::declare_parameters(prm);
+      solvers::ContinuationSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
+      assembly::ConstitutiveTable::declare_parameters(prm);
+      io::ParameterSweep::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/strip", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, "
+                        "section-NNNN.vtu and log.txt (created if needed).");
+      prm.leave_subsection();
+    }
+
+    void
+    StripProblem::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Strip");
+      strip_width   = prm.get_double("Width");
+      thickness     = prm.get_double("Thickness");
+      n_cells       = prm.get_integer("Number of cells");
+      mesh_kind     = prm.get("Mesh");
+      degree        = prm.get_integer("Polynomial degree");
+      reduced_shear = prm.get("Shear integration") == "reduced";
+      if (!(strip_width > 0))
+        throw io::InputError("Strip", "Width", prm.get("Width"), "must be positive");
+      if (!(thickness > 0))
+        throw io::InputError("Strip", "Thickness", prm.get("Thickness"), "must be positive");
+      if (!(thickness < strip_width))
+        throw io::InputError("Strip", "Thickness", prm.get("Thickness"),
+                             "must be smaller than the width " + prm.get("Width") +
+                               " (a strip is a plate: h << w)");
+      prm.leave_subsection();
+      law.parse_parameters(prm);
+      law.thickness = thickness;
+      parse_strain_parameters(prm);
+      newton_settings.parse_parameters(prm);
+      continuation_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
+      table.parse_parameters(prm);
+      if (table.enabled())
+        for (const unsigned int k : {table.first, table.second})
+          if (strain_is_free[k])
+            throw io::InputError("Constitutive table",
+                                 k == table.first ? "First strain" : "Second strain",
+                                 kinematics::strain_names[k],
+                                 "a prescribed strain: this one is free ('Rod strains / Mode' "
+                                 "or 'Free strains'), so its value would be ignored");
+      prm.enter_subsection("Output");
+      output_directory = prm.get("Output directory");
+      prm.leave_subsection();
+    }
+  } // namespace strip
+} // namespace cosmo

@@ -1,0 +1,253 @@
+// What part 2 reports: the steps table, the mode's width-wise symmetry, the
+// strip swept along its helix and the cross-section VTU files.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <cosmo/config.h>
+#include <cosmo/geometry/mirror_dofs.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/kinematics/rotation.h>
+
+#include "strip_problem.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace strip
+  {
+    void
+    StripProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution   = U;
+      last_state = condensed_state(solution);
+      const auto &s = last_state;
+      // The eigenvalue of smallest magnitude of the Hessian on the
+      // constrained field space (free strains condensed): the one that
+      // crosses zero where the section buckles.
+      Vector<double> mask, mode;
+      mode_mask(mask);
+      const double smallest = solvers::smallest_eigenvalue(*this, mask, mode, 50);
+      record_state(report, s);
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t
+           << "  Newton " << std::setw(2) << report.newton_iterations << "  Psi = "
+           << std::setprecision(8) << s.energy << "  neg.eig. " << s.n_negative
+           << "  min|eig| " << std::setprecision(3) << smallest << "  strains (";
+      for (unsigned int k = 0; k < 6; ++k)
+        line << (k ? ", " : "") << std::setprecision(6) << s.strains[k];
+      line << ")";
+      say(line.str());
+      if (!write_output)
+        return;
+      std::vector<double> row = {double(report.step), double(report.branch), report.t,
+                                 double(report.newton_iterations), report.residual_norm, s.energy};
+      row.insert(row.end(), s.strains.begin(), s.strains.end());
+      row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+      for (unsigned int k = 0; k < 6; ++k)
+        row.push_back(s.stiffness(k, k));
+      row.push_back(s.n_negative);
+      row.push_back(smallest);
+      steps_table.add_row(row);
+      steps_table.write(output_directory + "/steps.csv");
+      write_section(output_directory + "/section-" + Utilities::int_to_string(report.step, 4) +
+                      ".vtu",
+                    solution);
+      write_piece(output_directory + "/strip-" + Utilities::int_to_string(report.step, 4) +
+                  ".vtu");
+    }
+
+    void
+    StripProblem::write_piece(const std::string &file) const
+    {
+      // A piece of the strip in 3D: the mid-surface phi(eta, s) = r(s) + R(s)
+      // y(eta) swept along the helix of the current strains, over one turn or
+      // three widths (whichever is shorter), 24 slices; fields eta, s and the
+      // director d = R q.
+      const auto                   e = strains_of(solution);
+      const kinematics::RodStrains strains(e);
+      const double                 k = strains.kappa.norm();
+      const double                 L = k > 0 ? std::min(2 * M_PI / k, 3 * strip_width) : 3 * strip_width;
+      const unsigned int           n_slices = 24;
+      std::vector<Point<1>>        unit;
+      for (unsigned int i = 0; i <= degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      const Quadrature<1>         nodes(unit);
+      FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
+      Vector<double>              field(solution.begin(), solution.begin() + n_field);
+      std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
+      std::vector<DataOutBase::Patch<2, 3>> patches;
+      const unsigned int                    np = degree + 1;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(field, values);
+          for (unsigned int slice = 0; slice < n_slices; ++slice)
+            {
+              DataOutBase::Patch<2, 3> patch;
+              patch.n_subdivisions       = degree;
+              patch.reference_cell       = ReferenceCells::Quadrilateral;
+              patch.points_are_available = true;
+              patch.data.reinit(5 + 3, np * np);
+              for (unsigned int j = 0; j < np; ++j)
+                {
+                  const double X3 = L * (slice + double(j) / degree) / n_slices;
+                  const auto   R  = kinematics::helix_rotation(strains.kappa, X3);
+                  const auto   r  = kinematics::helix_position(strains.nu, strains.kappa, X3);
+                  for (unsigned int i = 0; i < np; ++i)
+                    {
+                      const unsigned int   pt  = j * np + i;
+                      const double         eta = fev.quadrature_point(i)[0];
+                      Tensor<1, 3, double> theta;
+                      theta[0]                = values[i][3];
+                      theta[2]                = values[i][4];
+                      const auto         Q    = kinematics::rotation_exp(theta);
+                      const Tensor<1, 3> y({eta + values[i][0], values[i][1], values[i][2]});
+                      const Tensor<1, 3> q({Q[0][1], Q[1][1], Q[2][1]});
+                      const Tensor<1, 3> x = r + R * y, d = R * q;
+                      patch.data(0, pt)    = eta;
+                      patch.data(1, pt)    = X3;
+                      for (unsigned int c = 0; c < 3; ++c)
+                        {
+                          patch.data(2 + c, pt) = d[c];
+                          patch.data(5 + c, pt) = x[c];
+                        }
+                    }
+                }
+              for (unsigned int v = 0; v < 4; ++v)
+                {
+                  const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
+                  patch.vertices[v] =
+                    Point<3>(patch.data(5, pt), patch.data(6, pt), patch.data(7, pt));
+                }
+              patch.patch_index = patches.size();
+              patches.push_back(std::move(patch));
+            }
+        }
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{2, 4, "director", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, {"eta", "arc_length", "director", "director", "director"},
+                               vectors, flags, o);
+      });
+    }
+
+    double
+    StripProblem::mode_parity(const Vector<double> &mode) const
+    {
+      // The out-of-plane displacement u2 (component 1) alone: a mesh not
+      // symmetric about eta = 0 has no parity (NaN).
+      return geometry::reflection_parity(
+        dof_handler, geometry::mirror_dofs(MappingQ1<1>(), dof_handler, 0, strip_width), mode,
+        {0., 1.});
+    }
+
+    std::vector<double>
+    StripProblem::classify_critical_mode(const Vector<double> &mode) const
+    {
+      // +1 symmetric, -1 antisymmetric about the centre line, 0 mixed
+      const double p = mode_parity(mode);
+      return {p > 0.5 ? 1. : p < -0.5 ? -1. : std::isfinite(p) ? 0. : NAN};
+    }
+
+    std::string
+    StripProblem::symmetry_name(const double parity)
+    {
+      return parity > 0.5 ? "symmetric" : parity < -0.5 ? "antisymmetric" : "mixed";
+    }
+
+    void
+    StripProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
+    {
+      ReducedRodProblem::located_event(e, U, mode);
+      event_parities.push_back(mode ? mode_parity(*mode) : NAN);
+      if (mode)
+        {
+          std::ostringstream m;
+          m << "  mode " << symmetry_name(event_parities.back())
+            << " about the centre line (parity " << std::setprecision(3) << event_parities.back()
+            << ")";
+          say(m.str());
+        }
+      if (!write_output)
+        return;
+      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
+      write_section(output_directory + "/event-" + tag + ".vtu", U);
+      if (mode)
+        {
+          // The mode as a perturbation of the state at the event, scaled to
+          // a tenth of the width, so that its shape can be seen.
+          Vector<double> V = U;
+          double         m = 0;
+          for (unsigned int i = 0; i < n_field; ++i)
+            m = std::max(m, std::abs((*mode)[i]));
+          if (m > 0)
+            V.add(0.1 * strip_width / m, *mode);
+          write_section(output_directory + "/event-" + tag + "-mode.vtu", V);
+        }
+    }
+
+    void
+    StripProblem::write_section(const std::string &file, const Vector<double> &U) const
+    {
+      // The deformed cross-section curve y(eta) in the director frame, with
+      // the thickness-line director q as a vector field: line cells.
+      const QGauss<1> points(degree + 1); // any points along each cell
+      std::vector<Point<1>> unit;
+      for (unsigned int i = 0; i <= degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      const Quadrature<1>         nodes(unit);
+      FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
+      Vector<double>              field(U.begin(), U.begin() + n_field);
+      std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
+      std::vector<DataOutBase::Patch<1, 3>> patches;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(field, values);
+          DataOutBase::Patch<1, 3> patch;
+          patch.n_subdivisions       = degree;
+          patch.reference_cell       = ReferenceCells::Line;
+          patch.points_are_available = true;
+          patch.data.reinit(4 + 3, nodes.size());
+          for (unsigned int k = 0; k < nodes.size(); ++k)
+            {
+              const double         eta = fev.quadrature_point(k)[0];
+              Tensor<1, 3, double> theta;
+              theta[0]             = values[k][3];
+              theta[2]             = values[k][4];
+              const auto R         = kinematics::rotation_exp(theta);
+              patch.data(0, k)     = eta;
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(1 + c, k) = R[c][1];
+              patch.data(4, k) = eta + values[k][0];
+              patch.data(5, k) = values[k][1];
+              patch.data(6, k) = values[k][2];
+            }
+          for (unsigned int v = 0; v < 2; ++v)
+            {
+              const unsigned int k = v == 0 ? 0 : degree;
+              patch.vertices[v] = Point<3>(patch.data(4, k), patch.data(5, k), patch.data(6, k));
+            }
+          patch.patch_index = patches.size();
+          patches.push_back(std::move(patch));
+        }
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors = {{1, 3, "director", DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      io::write_file_atomically(file, [&](std::ostream &o) {
+        DataOutBase::write_vtu(patches, {"eta", "director", "director", "director"}, vectors,
+                               flags, o);
+      });
+    }
+  } // namespace strip
+} // namespace cosmo
