@@ -4,6 +4,7 @@
 
 #include "test_tools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -90,6 +91,16 @@ main()
     const auto fp200 = analysis::first_planar(q, 200);
     check_close("slender rim: planar first over n <= 200 is n = 66", fp200.n, 66, 0);
     check_close("slender rim: planar first mismatch vs python", fp200.mismatch, -1.411654757759e-01, 1e-9);
+    // A sector pi/3 admits n = 3, 6, ...: its first planar mode is the best multiple of 3,
+    // found by the same scan (n_step) the application's closed forms use.
+    const auto fp3 = analysis::first_planar(q, 200, 3);
+    double     best = -1e300;
+    for (unsigned int n = 3; n <= 200; n += 3)
+      best = std::max(best, analysis::planar_critical_mismatch(q, n));
+    check("sector pi/3: planar first among multiples of 3", fp3.n % 3 == 0 && fp3.mismatch == best);
+    check("sector pi/3: no better than the full disc", fp3.mismatch <= fp200.mismatch);
+    const auto fo2 = analysis::first_out_of_plane(q, 12, 2);
+    check("sector pi/2: out-of-plane n = 2 first (as the full disc)", fo2.n == 2 && fo2.mismatch == fo.mismatch);
   }
   // Rod 100x stiffer: the saddle stays first.
   {

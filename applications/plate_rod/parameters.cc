@@ -94,6 +94,79 @@ namespace cosmo
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      /**
+       * The 6x6 "stiffness" of a rod_cross_section summary.json, row by row;
+       * io::InputError naming 'Rim rod / Stiffness file' if the file is not
+       * one or the matrix is not 6x6 of finite numbers.
+       */
+      std::vector<double>
+      read_section_stiffness(const std::string &file)
+      {
+        std::ifstream in(file);
+        if (!in)
+          throw io::InputError("Rim rod", "Stiffness file", file,
+                               "a readable rod_cross_section summary.json (cannot open it)");
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        std::vector<double> K; // the finite numbers of "stiffness", row by row
+        std::size_t         rows = 0, non_square = 0;
+        try
+          {
+            const io::JSON  summary = io::JSON::parse(buffer.str());
+            const io::JSON *k       = summary.find("stiffness");
+            if (k && k->is_array())
+              for (rows = 0; rows < k->size(); ++rows)
+                {
+                  non_square += k->at(rows).size() != 6;
+                  for (std::size_t b = 0; b < k->at(rows).size(); ++b)
+                    if (std::isfinite(k->at(rows).at(b).as_number()))
+                      K.push_back(k->at(rows).at(b).as_number());
+                }
+          }
+        catch (std::runtime_error &e)
+          {
+            throw io::InputError("Rim rod", "Stiffness file", file,
+                                 "a rod_cross_section summary.json (" + std::string(e.what()) + ")");
+          }
+        if (K.size() != 36 || rows != 6 || non_square > 0)
+          throw io::InputError("Rim rod", "Stiffness file", file,
+                               "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
+                               "finite numbers (found " + std::to_string(K.size()) +
+                                 " numbers in " + std::to_string(rows) + " rows)");
+        return K;
+      }
+    } // namespace
+
+    void
+    PlateRodProblem::check_rim_stiffness(const std::string &text) const
+    {
+      // The rim against the plate: beyond 1e8 times the plate's own stiffness
+      // the coupled Hessian loses every digit of the plate's contribution in
+      // double precision (the rigid limit is reached to 1e-8 long before).
+      const double Eh = plate_law.young * thickness;
+      const double D  = plate_law.bending_stiffness();
+      const char * names[6] = {"GA1", "GA2", "EA", "EI1", "EI2", "GJ"};
+      for (unsigned int i = 0; i < 6; ++i)
+        {
+          const double scale = i < 3 ? Eh * radius : D * radius;
+          if (!(rod_stiffness[i] > 0))
+            throw io::InputError("Rim rod", "Stiffnesses", text,
+                                 std::string("every stiffness must be positive (") + names[i] +
+                                   " is not)");
+          if (rod_stiffness[i] > 1e8 * scale)
+            {
+              std::ostringstream m;
+              m << names[i] << " = " << rod_stiffness[i] << " is " << rod_stiffness[i] / scale
+                << " times the plate's " << (i < 3 ? "E h R" : "D R")
+                << ": stiffer than representable next to the plate in double precision (at "
+                   "most 1e8 times); a rim 1e6 times stiffer is already rigid to 1e-6";
+              throw io::InputError("Rim rod", "Stiffnesses", text, m.str());
+            }
+        }
+    }
+
     void
     PlateRodProblem::parse_parameters(ParameterHandler &prm)
     {
@@ -117,39 +190,8 @@ namespace cosmo
       stiffness_file = prm.get("Stiffness file");
       if (!stiffness_file.empty())
         {
-          // The part-1 summary.json: "stiffness": [[6 numbers], ... 6 rows].
-          std::ifstream in(stiffness_file);
-          if (!in)
-            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                 "a readable rod_cross_section summary.json (cannot open it)");
-          std::stringstream buffer;
-          buffer << in.rdbuf();
-          std::vector<double> K; // the finite numbers of "stiffness", row by row
-          std::size_t         rows = 0, non_square = 0;
-          try
-            {
-              const io::JSON  summary = io::JSON::parse(buffer.str());
-              const io::JSON *k       = summary.find("stiffness");
-              if (k && k->is_array())
-                for (rows = 0; rows < k->size(); ++rows)
-                  {
-                    non_square += k->at(rows).size() != 6;
-                    for (std::size_t b = 0; b < k->at(rows).size(); ++b)
-                      if (std::isfinite(k->at(rows).at(b).as_number()))
-                        K.push_back(k->at(rows).at(b).as_number());
-                  }
-            }
-          catch (std::runtime_error &e)
-            {
-              throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                   "a rod_cross_section summary.json (" + std::string(e.what()) +
-                                     ")");
-            }
-          if (K.size() != 36 || rows != 6 || non_square > 0)
-            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
-                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
-                                 "finite numbers (found " + std::to_string(K.size()) +
-                                 " numbers in " + std::to_string(rows) + " rows)");
+          const auto K = read_section_stiffness(stiffness_file);
+          // The diagonal; how much the off-diagonal couplings dropped weigh.
           double coupling = 0;
           for (unsigned int a = 0; a < 6; ++a)
             {
@@ -165,29 +207,7 @@ namespace cosmo
       if (!(rod_growth > 0))
         throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
                              "must be positive");
-      // The rim against the plate: beyond 1e8 times the plate's own stiffness
-      // the coupled Hessian loses every digit of the plate's contribution in
-      // double precision (the rigid limit is reached to 1e-8 long before).
-      const double Eh = plate_law.young * thickness;
-      const double D  = Eh * thickness * thickness / (12 * (1 - plate_law.poisson * plate_law.poisson));
-      const char * names[6] = {"GA1", "GA2", "EA", "EI1", "EI2", "GJ"};
-      for (unsigned int i = 0; i < 6; ++i)
-        {
-          const double scale = i < 3 ? Eh * radius : D * radius;
-          if (!(rod_stiffness[i] > 0))
-            throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"),
-                                 std::string("every stiffness must be positive (") + names[i] +
-                                   " is not)");
-          if (rod_stiffness[i] > 1e8 * scale)
-            {
-              std::ostringstream m;
-              m << names[i] << " = " << rod_stiffness[i] << " is " << rod_stiffness[i] / scale
-                << " times the plate's " << (i < 3 ? "E h R" : "D R")
-                << ": stiffer than representable next to the plate in double precision (at "
-                   "most 1e8 times); a rim 1e6 times stiffer is already rigid to 1e-6";
-              throw io::InputError("Rim rod", "Stiffnesses", prm.get("Stiffnesses"), m.str());
-            }
-        }
+      check_rim_stiffness(prm.get("Stiffnesses"));
       prm.leave_subsection();
 
       prm.enter_subsection("Model");
@@ -235,21 +255,7 @@ namespace cosmo
       prm.leave_subsection();
 
       // Growth must stay positive along the path.
-      prm.enter_subsection("Plate growth");
-      const std::string radial_text = prm.get("Radial growth factor"),
-                        circumferential_text = prm.get("Circumferential growth factor");
-      prm.leave_subsection();
-      for (const double t : {0., 1.})
-        for (unsigned int i = 0; i <= 20; ++i)
-          {
-            const auto g = plate_growth.factors(radius * i / 20., t);
-            if (!(g[0] > 0) || !(g[1] > 0))
-              throw io::InputError("Plate growth",
-                                   g[0] > 0 ? "Circumferential growth factor" : "Radial growth factor",
-                                   g[0] > 0 ? circumferential_text : radial_text,
-                                   "growth factors must be positive for 0 <= r <= R (not at r = " +
-                                     std::to_string(radius * i / 20.) + ")");
-          }
+      plate_growth.check_positive(radius);
     }
   } // namespace plate_rod
 } // namespace cosmo

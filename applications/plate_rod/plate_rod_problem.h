@@ -308,6 +308,10 @@ namespace cosmo
       }
       materials::QuadraticRodLaw
       rod_law() const;
+      /// io::InputError (entry 'Rim rod / Stiffnesses' = text) unless every rim stiffness is
+      /// positive and at most 1e8 times the plate's.
+      void
+      check_rim_stiffness(const std::string &text) const;
       void
       say(const std::string &line) const
       {

@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/vtu_patches.h>
 
 #include "plate_rod_problem.h"
 
@@ -232,19 +233,15 @@ namespace cosmo
                       update_values | update_gradients | update_quadrature_points);
       std::vector<Vector<double>>              values(nodes.size(), Vector<double>(6));
       std::vector<std::vector<Tensor<1, 2>>>   grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
-      std::vector<DataOutBase::Patch<2, 3>>    patches;
-      const unsigned int                       np = degree + 1;
-      const unsigned int                       n_data = 3 + 3 + 2 + 3 + 3;
+      io::VTUPatches<2> vtu({{"displacement", 3}, {"director", 3}, {"growth_radial", 1},
+                             {"growth_circumferential", 1}, {"N_rr", 1}, {"N_tt", 1}, {"N_rt", 1},
+                             {"M_rr", 1}, {"M_tt", 1}, {"M_rt", 1}});
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fev.reinit(cell);
           fev.get_function_values(U, values);
           fev.get_function_gradients(U, grads);
-          DataOutBase::Patch<2, 3> patch;
-          patch.n_subdivisions       = degree;
-          patch.reference_cell       = ReferenceCells::Quadrilateral;
-          patch.points_are_available = true;
-          patch.data.reinit(n_data + 3, np * np);
+          vtu.begin_patch(degree);
           for (unsigned int k = 0; k < nodes.size(); ++k)
             {
               const Point<2>               X = fev.quadrature_point(k);
@@ -275,43 +272,13 @@ namespace cosmo
               const auto N  = polar(plate_law.membrane_force(st.membrane));
               const auto M  = polar(plate_law.bending_moment(st.bending));
               const auto gf = plate_growth.factors(r, load_parameter);
-              unsigned int col = 0;
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = values[k][c];
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = d[c];
-              patch.data(col++, k) = gf[0];
-              patch.data(col++, k) = gf[1];
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = N[c];
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(col++, k) = M[c];
-              patch.data(n_data + 0, k) = X[0] + values[k][0];
-              patch.data(n_data + 1, k) = X[1] + values[k][1];
-              patch.data(n_data + 2, k) = values[k][2];
+              vtu.set_values(k, {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
+                                 gf[1], N[0], N[1], N[2], M[0], M[1], M[2]});
+              vtu.set_position(k, Point<3>(X[0] + values[k][0], X[1] + values[k][1], values[k][2]));
             }
-          for (unsigned int v = 0; v < 4; ++v)
-            {
-              const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
-              patch.vertices[v] =
-                Point<3>(patch.data(n_data, pt), patch.data(n_data + 1, pt), patch.data(n_data + 2, pt));
-            }
-          patch.patch_index = patches.size();
-          patches.push_back(std::move(patch));
+          vtu.end_patch();
         }
-      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
-                                              "director",     "director",     "director",
-                                              "growth_radial", "growth_circumferential",
-                                              "N_rr",         "N_tt",         "N_rt",
-                                              "M_rr",         "M_tt",         "M_rt"};
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
-                   {3, 5, "director", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, names, vectors, flags, o);
-      });
+      vtu.write(file);
     }
 
     void
@@ -328,10 +295,11 @@ namespace cosmo
                             update_normal_vectors);
       std::vector<Vector<double>>            values(nodes.size(), Vector<double>(6));
       std::vector<std::vector<Tensor<1, 2>>> grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
-      std::vector<DataOutBase::Patch<1, 3>>  patches;
-      const auto                             rod   = rod_law();
-      const double                           g_rod = rod_growth_at(load_parameter);
-      const unsigned int                     n_data = 9 + 6 + 6;
+      const auto        rod   = rod_law();
+      const double      g_rod = rod_growth_at(load_parameter);
+      io::VTUPatches<1> vtu({{"d1", 3}, {"d2", 3}, {"d3", 3}, {"nu1", 1}, {"nu2", 1}, {"nu3", 1},
+                             {"kappa1", 1}, {"kappa2", 1}, {"kappa3", 1}, {"n1", 1}, {"n2", 1},
+                             {"n3", 1}, {"m1", 1}, {"m2", 1}, {"m3", 1}});
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
@@ -339,11 +307,7 @@ namespace cosmo
               fev.reinit(cell, f);
               fev.get_function_values(U, values);
               fev.get_function_gradients(U, grads);
-              DataOutBase::Patch<1, 3> patch;
-              patch.n_subdivisions       = degree;
-              patch.reference_cell       = ReferenceCells::Line;
-              patch.points_are_available = true;
-              patch.data.reinit(n_data + 3, nodes.size());
+              vtu.begin_patch(degree);
               for (unsigned int k = 0; k < nodes.size(); ++k)
                 {
                   const Point<2> X     = fev.quadrature_point(k);
@@ -365,45 +329,21 @@ namespace cosmo
                   law.reference_strains = kinematics::rim_reference_strains(X, frame);
                   const auto e          = model->rim_strains(
                     z, frame, {{law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}});
-                  // Frame: Lambda = exp(theta) exp(alpha E3) Lambda0.
-                  Tensor<1, 3, double> th, al;
-                  th[0] = z[6], th[1] = z[7], al[2] = z[10];
-                  const Tensor<2, 3> L =
-                    kinematics::rotation_exp(th) * kinematics::rotation_exp(al) * frame.Lambda0;
-                  unsigned int col = 0;
+                  const Tensor<2, 3> L = kinematics::rim_rotation(z[6], z[7], z[10], frame.Lambda0);
+                  unsigned int       col = 0;
                   for (unsigned int j = 0; j < 3; ++j)
                     for (unsigned int i = 0; i < 3; ++i)
-                      patch.data(col++, k) = L[i][j];
+                      vtu.set_value(col++, k, L[i][j]);
                   const auto resultants = law.resultants(e, g_rod);
                   for (unsigned int j = 0; j < 6; ++j)
-                    patch.data(col++, k) = e[j];
+                    vtu.set_value(col++, k, e[j]);
                   for (unsigned int j = 0; j < 6; ++j)
-                    patch.data(col++, k) = resultants[j];
-                  patch.data(n_data + 0, k) = X[0] + values[k][0];
-                  patch.data(n_data + 1, k) = X[1] + values[k][1];
-                  patch.data(n_data + 2, k) = values[k][2];
+                    vtu.set_value(col++, k, resultants[j]);
+                  vtu.set_position(k, Point<3>(X[0] + values[k][0], X[1] + values[k][1], values[k][2]));
                 }
-              for (unsigned int v = 0; v < 2; ++v)
-                {
-                  const unsigned int k = v == 0 ? 0 : degree;
-                  patch.vertices[v] = Point<3>(patch.data(n_data, k), patch.data(n_data + 1, k),
-                                               patch.data(n_data + 2, k));
-                }
-              patch.patch_index = patches.size();
-              patches.push_back(std::move(patch));
+              vtu.end_patch();
             }
-      std::vector<std::string> names = {"d1", "d1", "d1", "d2", "d2", "d2", "d3", "d3", "d3",
-                                        "nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3",
-                                        "n1", "n2", "n3", "m1", "m2", "m3"};
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{0, 2, "d1", DataComponentInterpretation::component_is_part_of_vector},
-                   {3, 5, "d2", DataComponentInterpretation::component_is_part_of_vector},
-                   {6, 8, "d3", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, names, vectors, flags, o);
-      });
+      vtu.write(file);
     }
 
     io::JSON
@@ -441,25 +381,20 @@ namespace cosmo
           // The lobed families, over the mode numbers the domain admits (a sector pi/n keeps
           // the multiples of n).
           const unsigned int step = domain == "sector" ? sector_n : 1;
-          const unsigned int n0   = step >= 2 ? step : 2;
-          double             best_out = -1e300, best_planar = -1e300;
-          unsigned int       n_out = 0, n_planar = 0;
+          const unsigned int n0    = step >= 2 ? step : 2;
+          const unsigned int n_max = std::max(12u, n0 + 4 * step);
           c << "  closed forms (Kirchhoff, small strain), out-of-plane lobes:";
-          for (unsigned int n = n0; n <= std::max(12u, n0 + 4 * step); n += step)
+          for (unsigned int n = n0; n <= n_max; n += step)
             {
               const double D = analysis::out_of_plane_critical_mismatch(p, n);
               closed["out_of_plane"].push_back(entry(n, D));
               if (n <= n0 + 3 * step)
                 c << " n = " << n << ": Delta = " << D << " (t = " << t_of(D) << ")";
-              if (D > best_out)
-                best_out = D, n_out = n;
             }
-          for (unsigned int n = n0; n <= 200; n += step)
-            {
-              const double D = analysis::planar_critical_mismatch(p, n);
-              if (D > best_planar)
-                best_planar = D, n_planar = n;
-            }
+          const auto         out      = analysis::first_out_of_plane(p, n_max, step);
+          const auto         planar   = analysis::first_planar(p, 200, step);
+          const double       best_out = out.mismatch, best_planar = planar.mismatch;
+          const unsigned int n_out = out.n, n_planar = planar.n;
           closed["first_out_of_plane"] = entry(n_out, best_out);
           closed["first_planar"]       = entry(n_planar, best_planar);
           first_mismatch               = std::max(best_out, best_planar);

@@ -300,6 +300,23 @@ namespace cosmo
         double                               min_J      = 0;
         bool                                 admissible = true;
       };
+
+      /// The strains and what the derivatives of Fbar need of them: [kappa]x and e_m x e_c.
+      struct HelicalStrainTerms
+      {
+        explicit HelicalStrainTerms(const std::array<double, 6> &e)
+          : nu({e[0], e[1], e[2]})
+          , kappa({e[3], e[4], e[5]})
+          , Kx(kinematics::skew(kappa))
+        {
+          for (unsigned int m = 0; m < 3; ++m)
+            for (unsigned int c = 0; c < 3; ++c)
+              e_x_e[m][c] = kinematics::axial_column_mixed_derivative(m, c);
+        }
+        Tensor<1, 3> nu, kappa;
+        Tensor<2, 3> Kx;
+        Tensor<1, 3> e_x_e[3][3];
+      };
     } // namespace
 
     int
@@ -312,13 +329,25 @@ namespace cosmo
     {
       if (!update_growth_cache())
         return 1; // growth inadmissible at this trial load
-      const Tensor<1, 3> nu({e[0], e[1], e[2]});
-      const Tensor<1, 3> kappa({e[3], e[4], e[5]});
-      const Tensor<2, 3> Kx = kinematics::skew(kappa);
-      Tensor<1, 3>       e_x_e[3][3];
-      for (unsigned int m = 0; m < 3; ++m)
-        for (unsigned int c = 0; c < 3; ++c)
-          e_x_e[m][c] = kinematics::axial_column_mixed_derivative(m, c);
+      if (!assemble_bulk(U, e, R, jacobian, E, results))
+        return 1; // recoverable: Newton's line search or the driver cuts back
+      if (!surface_faces.empty())
+        assemble_surface_layers(U, e, R, jacobian, E, results);
+      return 0;
+    }
+
+    bool
+    CrossSectionProblem::assemble_bulk(const Vector<double> &       U,
+                                       const std::array<double, 6> &e,
+                                       Vector<double> *             R,
+                                       const bool                   jacobian,
+                                       FullMatrix<double> &         E,
+                                       FieldIntegrals &             results)
+    {
+      const HelicalStrainTerms strain_terms(e);
+      const Tensor<1, 3> &     nu = strain_terms.nu, &kappa = strain_terms.kappa;
+      const Tensor<2, 3> &     Kx    = strain_terms.Kx;
+      const auto &             e_x_e = strain_terms.e_x_e;
 
       const QGauss<2>    quadrature(degree + 1);
       const unsigned int nq  = quadrature.size();
@@ -456,128 +485,143 @@ namespace cosmo
       WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
                       AssemblyScratch(*mapping, *fe, quadrature), CellContribution(dpc));
       if (!admissible)
-        return 1; // recoverable: Newton's line search or the driver cuts back
-
-      // Surface layers on boundary faces. Few faces: serial, in face order.
-      if (!surface_faces.empty())
-        {
-          const QGauss<1>    face_quadrature(degree + 1);
-          const unsigned int nqf = face_quadrature.size();
-          FEFaceValues<2>    ffv(*mapping, *fe, face_quadrature,
-                              update_values | update_gradients | update_quadrature_points |
-                                update_JxW_values | update_normal_vectors);
-          CellContribution                   out(dpc);
-          std::vector<double>                U_local(dpc);
-          std::vector<std::array<double, 6>> dF(dpc), CdF(dpc);
-          std::array<std::array<double, 6>, n_strains> D, CD;
-          materials::SurfaceEnergyDerivatives          d;
-          auto dot6 = [](const std::array<double, 6> &a, const std::array<double, 6> &b) {
-            double r = 0;
-            for (unsigned int z = 0; z < 6; ++z)
-              r += a[z] * b[z];
-            return r;
-          };
-          auto apply6 = [](const std::array<double, 36> &C, const std::array<double, 6> &a,
-                           std::array<double, 6> &b) {
-            for (unsigned int x = 0; x < 6; ++x)
-              {
-                double v = 0;
-                for (unsigned int z = 0; z < 6; ++z)
-                  v += C[6 * x + z] * a[z];
-                b[x] = v;
-              }
-          };
-          for (unsigned int f = 0; f < surface_faces.size(); ++f)
-            {
-              const auto &sf    = surface_faces[f];
-              const auto &layer = surface_layers.layers()[sf.layer];
-              ffv.reinit(sf.cell, sf.face);
-              sf.cell->get_dof_indices(out.idx);
-              for (unsigned int i = 0; i < dpc; ++i)
-                U_local[i] = U[out.idx[i]];
-              out.r = 0;
-              if (jacobian)
-                {
-                  out.K = 0;
-                  out.B = 0;
-                  out.E = 0;
-                }
-              for (unsigned int q = 0; q < nqf; ++q)
-                {
-                  const double        dS = ffv.JxW(q);
-                  const Point<2>      X  = ffv.quadrature_point(q);
-                  const Tensor<1, 2> &Nn = ffv.normal_vector(q);
-                  // Unit tangent of the boundary curve (counterclockwise on the
-                  // outer boundary; the energy is even in T).
-                  const Tensor<1, 2> T = kinematics::boundary_tangent(Nn);
-                  Tensor<1, 3>       u, du_dS;
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    {
-                      const auto g = ffv.shape_grad(i, q);
-                      u[comp[i]] += U_local[i] * ffv.shape_value(i, q);
-                      du_dS[comp[i]] += U_local[i] * (g * T);
-                    }
-                  const Tensor<1, 3> w  = kinematics::section_placement(X, u);
-                  const auto Fs = kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa);
-                  layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
-                                 jacobian, d);
-                  energy += d.energy * dS;
-
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    {
-                      const unsigned int c = comp[i];
-                      const double       N = ffv.shape_value(i, q);
-                      dF[i].fill(0.);
-                      dF[i][2 * c] = ffv.shape_grad(i, q) * T;
-                      for (unsigned int r = 0; r < 3; ++r)
-                        dF[i][2 * r + 1] += Kx[r][c] * N;
-                      out.r[i] += dot6(dF[i], d.P) * dS;
-                    }
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    {
-                      D[k].fill(0.);
-                      const Tensor<1, 3> db = kinematics::axial_column_strain_derivative(k, w);
-                      for (unsigned int r = 0; r < 3; ++r)
-                        D[k][2 * r + 1] = db[r];
-                      resultants[k] += dot6(D[k], d.P) * dS;
-                    }
-                  if (!jacobian)
-                    continue;
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    apply6(d.C, dF[i], CdF[i]);
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    apply6(d.C, D[k], CD[k]);
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    {
-                      for (unsigned int j = 0; j < dpc; ++j)
-                        out.K(i, j) += dot6(dF[j], CdF[i]) * dS;
-                      const double       N = ffv.shape_value(i, q);
-                      const unsigned int c = comp[i];
-                      for (unsigned int k = 0; k < n_strains; ++k)
-                        {
-                          double bik = dot6(D[k], CdF[i]);
-                          if (k >= 3) // Ps : d2 Fs / dU_i dkappa_k (second column)
-                            {
-                              const Tensor<1, 3> &ex = e_x_e[k - 3][c];
-                              for (unsigned int r = 0; r < 3; ++r)
-                                bik += d.P[2 * r + 1] * ex[r] * N;
-                            }
-                          out.B(i, k) += bik * dS;
-                        }
-                    }
-                  for (unsigned int k = 0; k < n_strains; ++k)
-                    for (unsigned int l = 0; l < n_strains; ++l)
-                      E(k, l) += dot6(D[l], CD[k]) * dS;
-                }
-              // The 6x6 block of the surface went into E point by point.
-              add_local_contribution(out.idx, out.r, out.K, out.B, nullptr, R, jacobian, E);
-            }
-        }
-
+        return false;
       results.energy        = energy;
       results.min_elastic_J = minJ;
       results.resultants    = resultants;
-      return 0;
+      return true;
+    }
+
+    void
+    CrossSectionProblem::assemble_surface_layers(const Vector<double> &       U,
+                                                 const std::array<double, 6> &e,
+                                                 Vector<double> *             R,
+                                                 const bool                   jacobian,
+                                                 FullMatrix<double> &         E,
+                                                 FieldIntegrals &             results)
+    {
+      // Few faces: serial, in face order.
+      const HelicalStrainTerms strain_terms(e);
+      const Tensor<1, 3> &     nu = strain_terms.nu, &kappa = strain_terms.kappa;
+      const Tensor<2, 3> &     Kx    = strain_terms.Kx;
+      const auto &             e_x_e = strain_terms.e_x_e;
+
+      const unsigned int dpc = fe->n_dofs_per_cell();
+      std::vector<unsigned int> comp(dpc);
+      for (unsigned int i = 0; i < dpc; ++i)
+        comp[i] = fe->system_to_component_index(i).first;
+
+      const QGauss<1>    face_quadrature(degree + 1);
+      const unsigned int nqf = face_quadrature.size();
+      FEFaceValues<2>    ffv(*mapping, *fe, face_quadrature,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_JxW_values | update_normal_vectors);
+      CellContribution                   out(dpc);
+      std::vector<double>                U_local(dpc);
+      std::vector<std::array<double, 6>> dF(dpc), CdF(dpc);
+      std::array<std::array<double, 6>, n_strains> D, CD;
+      materials::SurfaceEnergyDerivatives          d;
+      auto dot6 = [](const std::array<double, 6> &a, const std::array<double, 6> &b) {
+        double r = 0;
+        for (unsigned int z = 0; z < 6; ++z)
+          r += a[z] * b[z];
+        return r;
+      };
+      auto apply6 = [](const std::array<double, 36> &C, const std::array<double, 6> &a,
+                       std::array<double, 6> &b) {
+        for (unsigned int x = 0; x < 6; ++x)
+          {
+            double v = 0;
+            for (unsigned int z = 0; z < 6; ++z)
+              v += C[6 * x + z] * a[z];
+            b[x] = v;
+          }
+      };
+      for (unsigned int f = 0; f < surface_faces.size(); ++f)
+        {
+          const auto &sf    = surface_faces[f];
+          const auto &layer = surface_layers.layers()[sf.layer];
+          ffv.reinit(sf.cell, sf.face);
+          sf.cell->get_dof_indices(out.idx);
+          for (unsigned int i = 0; i < dpc; ++i)
+            U_local[i] = U[out.idx[i]];
+          out.r = 0;
+          if (jacobian)
+            {
+              out.K = 0;
+              out.B = 0;
+              out.E = 0;
+            }
+          for (unsigned int q = 0; q < nqf; ++q)
+            {
+              const double        dS = ffv.JxW(q);
+              const Point<2>      X  = ffv.quadrature_point(q);
+              const Tensor<1, 2> &Nn = ffv.normal_vector(q);
+              // Unit tangent of the boundary curve (counterclockwise on the
+              // outer boundary; the energy is even in T).
+              const Tensor<1, 2> T = kinematics::boundary_tangent(Nn);
+              Tensor<1, 3>       u, du_dS;
+              for (unsigned int i = 0; i < dpc; ++i)
+                {
+                  const auto g = ffv.shape_grad(i, q);
+                  u[comp[i]] += U_local[i] * ffv.shape_value(i, q);
+                  du_dS[comp[i]] += U_local[i] * (g * T);
+                }
+              const Tensor<1, 3> w  = kinematics::section_placement(X, u);
+              const auto Fs = kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa);
+              layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
+                             jacobian, d);
+              results.energy += d.energy * dS;
+
+              for (unsigned int i = 0; i < dpc; ++i)
+                {
+                  const unsigned int c = comp[i];
+                  const double       N = ffv.shape_value(i, q);
+                  dF[i].fill(0.);
+                  dF[i][2 * c] = ffv.shape_grad(i, q) * T;
+                  for (unsigned int r = 0; r < 3; ++r)
+                    dF[i][2 * r + 1] += Kx[r][c] * N;
+                  out.r[i] += dot6(dF[i], d.P) * dS;
+                }
+              for (unsigned int k = 0; k < n_strains; ++k)
+                {
+                  D[k].fill(0.);
+                  const Tensor<1, 3> db = kinematics::axial_column_strain_derivative(k, w);
+                  for (unsigned int r = 0; r < 3; ++r)
+                    D[k][2 * r + 1] = db[r];
+                  results.resultants[k] += dot6(D[k], d.P) * dS;
+                }
+              if (!jacobian)
+                continue;
+              for (unsigned int i = 0; i < dpc; ++i)
+                apply6(d.C, dF[i], CdF[i]);
+              for (unsigned int k = 0; k < n_strains; ++k)
+                apply6(d.C, D[k], CD[k]);
+              for (unsigned int i = 0; i < dpc; ++i)
+                {
+                  for (unsigned int j = 0; j < dpc; ++j)
+                    out.K(i, j) += dot6(dF[j], CdF[i]) * dS;
+                  const double       N = ffv.shape_value(i, q);
+                  const unsigned int c = comp[i];
+                  for (unsigned int k = 0; k < n_strains; ++k)
+                    {
+                      double bik = dot6(D[k], CdF[i]);
+                      if (k >= 3) // Ps : d2 Fs / dU_i dkappa_k (second column)
+                        {
+                          const Tensor<1, 3> &ex = e_x_e[k - 3][c];
+                          for (unsigned int r = 0; r < 3; ++r)
+                            bik += d.P[2 * r + 1] * ex[r] * N;
+                        }
+                      out.B(i, k) += bik * dS;
+                    }
+                }
+              for (unsigned int k = 0; k < n_strains; ++k)
+                for (unsigned int l = 0; l < n_strains; ++l)
+                  E(k, l) += dot6(D[l], CD[k]) * dS;
+            }
+          // The 6x6 block of the surface went into E point by point.
+          add_local_contribution(out.idx, out.r, out.K, out.B, nullptr, R, jacobian, E);
+        }
     }
 
     void

@@ -179,6 +179,22 @@ namespace cosmo
                      FieldIntegrals &             out) override;
       void
       residual_scales(double &force, double &length) const override;
+      /// The section's bulk: false if growth or the state is inadmissible somewhere.
+      bool
+      assemble_bulk(const Vector<double> &       U,
+                    const std::array<double, 6> &e,
+                    Vector<double> *             R,
+                    bool                         jacobian,
+                    FullMatrix<double> &         border_block,
+                    FieldIntegrals &             out);
+      /// The surface layers on their boundary faces, added to the bulk's.
+      void
+      assemble_surface_layers(const Vector<double> &       U,
+                              const std::array<double, 6> &e,
+                              Vector<double> *             R,
+                              bool                         jacobian,
+                              FullMatrix<double> &         border_block,
+                              FieldIntegrals &             out);
 
       void
       write_vtu(unsigned int step, double t);

@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/section.h>
 
@@ -197,28 +198,23 @@ namespace cosmo
         // lift the patches into 3D space (points (X1, X2, 0)), where VTU
         // vectors have three components and ParaView can warp the section
         // by the displacement.
-        const std::vector<std::string> names = {
-          "displacement", "displacement", "displacement", "position", "position", "position",
-          "traction_E3", "traction_E3", "traction_E3", "von_Mises_stress", "mean_stress",
-          "growth_J", "elastic_J", "energy_density", "region"};
-        const unsigned int n_data = names.size();
-        std::vector<DataOutBase::Patch<2, 3>> patches;
+        io::VTUPatches<2> vtu({{"displacement", 3}, {"position", 3}, {"traction_E3", 3},
+                               {"von_Mises_stress", 1}, {"mean_stress", 1}, {"growth_J", 1},
+                               {"elastic_J", 1}, {"energy_density", 1}, {"region", 1}});
+        // The columns of DataOut's patches: the displacement, then the postprocessor's.
+        const unsigned int n_data = vtu.n_columns();
+        AssertThrow(data_out.get_patches().empty() ||
+                      data_out.get_patches()[0].data.n_rows() >= n_data + (data_out.get_patches()[0].points_are_available ? 2 : 0),
+                    ExcInternalError());
         for (const auto &p2 : data_out.get_patches())
           {
-            DataOutBase::Patch<2, 3> p3;
-            p3.n_subdivisions       = p2.n_subdivisions;
-            p3.reference_cell       = p2.reference_cell;
-            p3.patch_index          = p2.patch_index;
-            p3.points_are_available = true;
-            for (unsigned int v = 0; v < 4; ++v)
-              p3.vertices[v] = Point<3>(p2.vertices[v][0], p2.vertices[v][1], 0);
+            vtu.begin_patch(p2.n_subdivisions);
             const unsigned int n_points = p2.data.n_cols();
             const unsigned int np       = p2.n_subdivisions + 1;
-            p3.data.reinit(n_data + 3, n_points);
             for (unsigned int k = 0; k < n_points; ++k)
               {
                 for (unsigned int r = 0; r < n_data; ++r)
-                  p3.data(r, k) = p2.data(r, k);
+                  vtu.set_value(r, k, p2.data(r, k));
                 Point<2> x;
                 if (p2.points_are_available)
                   x = Point<2>(p2.data(n_data, k), p2.data(n_data + 1, k));
@@ -229,22 +225,11 @@ namespace cosmo
                     x = (1 - xi) * (1 - eta) * p2.vertices[0] + xi * (1 - eta) * p2.vertices[1] +
                         (1 - xi) * eta * p2.vertices[2] + xi * eta * p2.vertices[3];
                   }
-                p3.data(n_data, k)     = x[0];
-                p3.data(n_data + 1, k) = x[1];
-                p3.data(n_data + 2, k) = 0;
+                vtu.set_position(k, Point<3>(x[0], x[1], 0));
               }
-            patches.push_back(std::move(p3));
+            vtu.end_patch();
           }
-        std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                               DataComponentInterpretation::DataComponentInterpretation>>
-          vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector},
-                     {3, 5, "position", DataComponentInterpretation::component_is_part_of_vector},
-                     {6, 8, "traction_E3", DataComponentInterpretation::component_is_part_of_vector}};
-        DataOutBase::VtkFlags flags;
-        flags.write_higher_order_cells = false;
-        io::write_file_atomically(output_directory + "/" + name, [&](std::ostream &out) {
-          DataOutBase::write_vtu(patches, names, vectors, flags, out);
-        });
+        vtu.write(output_directory + "/" + name);
       }
       pvd->add(t, name);
       const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
@@ -276,21 +261,15 @@ namespace cosmo
       Vector<double>                   u(solution.begin(), solution.begin() + n_u());
       std::vector<Vector<double>>      u_values(p + 1, Vector<double>(3));
       std::vector<std::vector<Tensor<1, 2>>> u_grads(p + 1, std::vector<Tensor<1, 2>>(3));
-      const std::vector<std::string> names = {"displacement", "displacement", "displacement",
-                                              "growth_T", "growth_3", "stress_TT", "stress_33",
-                                              "stress_T3", "layer"};
-      std::vector<DataOutBase::Patch<1, 3>> patches;
+      io::VTUPatches<1> vtu({{"displacement", 3}, {"growth_T", 1}, {"growth_3", 1},
+                             {"stress_TT", 1}, {"stress_33", 1}, {"stress_T3", 1}, {"layer", 1}});
       for (const auto &sf : surface_faces)
         {
           const auto &layer = surface_layers.layers()[sf.layer];
           ffv.reinit(sf.cell, sf.face);
           ffv.get_function_values(u, u_values);
           ffv.get_function_gradients(u, u_grads);
-          DataOutBase::Patch<1, 3> patch;
-          patch.n_subdivisions       = p;
-          patch.reference_cell       = ReferenceCells::Line;
-          patch.points_are_available = true;
-          patch.data.reinit(names.size() + 3, p + 1);
+          vtu.begin_patch(p);
           for (unsigned int k = 0; k <= p; ++k)
             {
               const Point<2> &   X  = ffv.quadrature_point(k);
@@ -304,27 +283,13 @@ namespace cosmo
               const auto         g  = layer.growth(X, t);
               const auto         S  = layer.stress(
                 kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa), g, t);
-              const std::vector<double> v = {u_values[k][0], u_values[k][1], u_values[k][2],
-                                             g[0], g[1], S[0], S[1], S[2], double(sf.layer + 1)};
-              for (unsigned int r = 0; r < v.size(); ++r)
-                patch.data(r, k) = v[r];
-              patch.data(names.size(), k)     = X[0];
-              patch.data(names.size() + 1, k) = X[1];
-              patch.data(names.size() + 2, k) = 0;
+              vtu.set_values(k, {u_values[k][0], u_values[k][1], u_values[k][2], g[0], g[1], S[0],
+                                 S[1], S[2], double(sf.layer + 1)});
+              vtu.set_position(k, Point<3>(X[0], X[1], 0));
             }
-          patch.vertices[0] = Point<3>(patch.data(names.size(), 0), patch.data(names.size() + 1, 0), 0);
-          patch.vertices[1] = Point<3>(patch.data(names.size(), p), patch.data(names.size() + 1, p), 0);
-          patch.patch_index = patches.size();
-          patches.push_back(std::move(patch));
+          vtu.end_patch();
         }
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{0, 2, "displacement", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      flags.write_higher_order_cells = false;
-      io::write_file_atomically(file, [&](std::ostream &out) {
-        DataOutBase::write_vtu(patches, names, vectors, flags, out);
-      });
+      vtu.write(file);
     }
 
     void
@@ -352,56 +317,33 @@ namespace cosmo
       Vector<double>              u(solution.begin(), solution.begin() + n_u());
       std::vector<Vector<double>> u_values(unit_points.size(), Vector<double>(3));
 
-      std::vector<DataOutBase::Patch<3, 3>> patches;
-      const unsigned int                    n_slices = rod_piece_slices;
+      io::VTUPatches<3>  vtu({{"arc_length", 1}, {"region", 1}});
+      const unsigned int n_slices = rod_piece_slices;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fev.reinit(cell);
           fev.get_function_values(u, u_values);
           for (unsigned int s = 0; s < n_slices; ++s)
             {
-              DataOutBase::Patch<3, 3> patch;
-              patch.n_subdivisions       = p;
-              patch.reference_cell       = ReferenceCells::Hexahedron;
-              patch.points_are_available = true;
-              const unsigned int n_points = np * np * np;
-              patch.data.reinit(2 + 3, n_points);
+              vtu.begin_patch(p);
               for (unsigned int k = 0; k < np; ++k)
                 {
-                  const double X3 = L * (s + double(k) / p) / n_slices;
-                  const Tensor<2, 3> R = kinematics::helix_rotation(strains.kappa, X3);
-                  const Tensor<1, 3> r = kinematics::helix_position(strains.nu, strains.kappa, X3);
+                  const double                     X3 = L * (s + double(k) / p) / n_slices;
+                  const kinematics::HelixPlacement helix(strains, X3);
                   for (unsigned int ij = 0; ij < np * np; ++ij)
                     {
-                      const Point<2> &X = fev.quadrature_point(ij);
-                      const Tensor<1, 3> w({X[0] + u_values[ij][0], X[1] + u_values[ij][1],
-                                            u_values[ij][2]});
-                      const Tensor<1, 3> x = r + R * w;
+                      const Tensor<1, 3> w = kinematics::section_placement(
+                        fev.quadrature_point(ij),
+                        Tensor<1, 3>({u_values[ij][0], u_values[ij][1], u_values[ij][2]}));
                       const unsigned int pt = k * np * np + ij;
-                      patch.data(0, pt) = X3;
-                      patch.data(1, pt) = cell->material_id();
-                      for (unsigned int c = 0; c < 3; ++c)
-                        patch.data(2 + c, pt) = x[c];
+                      vtu.set_values(pt, {X3, double(cell->material_id())});
+                      vtu.set_position(pt, Point<3>(helix.place(w)));
                     }
                 }
-              // Corner vertices (used by some writers for bounding boxes).
-              for (unsigned int v = 0; v < 8; ++v)
-                {
-                  const unsigned int i = (v & 1) ? p : 0, j = (v & 2) ? p : 0,
-                                     k = (v & 4) ? p : 0;
-                  const unsigned int pt = k * np * np + j * np + i;
-                  patch.vertices[v] =
-                    Point<3>(patch.data(2, pt), patch.data(3, pt), patch.data(4, pt));
-                }
-              patch.patch_index = patches.size();
-              patches.push_back(std::move(patch));
+              vtu.end_patch();
             }
         }
-      DataOutBase::VtkFlags flags;
-      flags.write_higher_order_cells = false;
-      io::write_file_atomically(file, [&](std::ostream &out) {
-        DataOutBase::write_vtu(patches, {"arc_length", "region"}, {}, flags, out);
-      });
+      vtu.write(file);
     }
 
     void

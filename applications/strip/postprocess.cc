@@ -7,6 +7,8 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/vtu_patches.h>
+#include <cosmo/kinematics/strip.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/rotation.h>
@@ -82,62 +84,33 @@ namespace cosmo
       FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
       Vector<double>              field(solution.begin(), solution.begin() + n_field);
       std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
-      std::vector<DataOutBase::Patch<2, 3>> patches;
-      const unsigned int                    np = degree + 1;
+      io::VTUPatches<2> vtu({{"eta", 1}, {"arc_length", 1}, {"director", 3}});
+      const unsigned int np = degree + 1;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fev.reinit(cell);
           fev.get_function_values(field, values);
           for (unsigned int slice = 0; slice < n_slices; ++slice)
             {
-              DataOutBase::Patch<2, 3> patch;
-              patch.n_subdivisions       = degree;
-              patch.reference_cell       = ReferenceCells::Quadrilateral;
-              patch.points_are_available = true;
-              patch.data.reinit(5 + 3, np * np);
+              vtu.begin_patch(degree);
               for (unsigned int j = 0; j < np; ++j)
                 {
-                  const double X3 = L * (slice + double(j) / degree) / n_slices;
-                  const auto   R  = kinematics::helix_rotation(strains.kappa, X3);
-                  const auto   r  = kinematics::helix_position(strains.nu, strains.kappa, X3);
+                  const double                     X3 = L * (slice + double(j) / degree) / n_slices;
+                  const kinematics::HelixPlacement helix(strains, X3);
                   for (unsigned int i = 0; i < np; ++i)
                     {
-                      const unsigned int   pt  = j * np + i;
-                      const double         eta = fev.quadrature_point(i)[0];
-                      Tensor<1, 3, double> theta;
-                      theta[0]                = values[i][3];
-                      theta[2]                = values[i][4];
-                      const auto         Q    = kinematics::rotation_exp(theta);
+                      const double       eta = fev.quadrature_point(i)[0];
+                      const Tensor<1, 3> q   = kinematics::strip_director(values[i][3], values[i][4]);
                       const Tensor<1, 3> y({eta + values[i][0], values[i][1], values[i][2]});
-                      const Tensor<1, 3> q({Q[0][1], Q[1][1], Q[2][1]});
-                      const Tensor<1, 3> x = r + R * y, d = R * q;
-                      patch.data(0, pt)    = eta;
-                      patch.data(1, pt)    = X3;
-                      for (unsigned int c = 0; c < 3; ++c)
-                        {
-                          patch.data(2 + c, pt) = d[c];
-                          patch.data(5 + c, pt) = x[c];
-                        }
+                      const Tensor<1, 3> d = helix.R * q;
+                      vtu.set_values(j * np + i, {eta, X3, d[0], d[1], d[2]});
+                      vtu.set_position(j * np + i, Point<3>(helix.place(y)));
                     }
                 }
-              for (unsigned int v = 0; v < 4; ++v)
-                {
-                  const unsigned int pt = ((v & 2) ? degree * np : 0) + ((v & 1) ? degree : 0);
-                  patch.vertices[v] =
-                    Point<3>(patch.data(5, pt), patch.data(6, pt), patch.data(7, pt));
-                }
-              patch.patch_index = patches.size();
-              patches.push_back(std::move(patch));
+              vtu.end_patch();
             }
         }
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{2, 4, "director", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, {"eta", "arc_length", "director", "director", "director"},
-                               vectors, flags, o);
-      });
+      vtu.write(file);
     }
 
     double
@@ -208,46 +181,22 @@ namespace cosmo
       FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
       Vector<double>              field(U.begin(), U.begin() + n_field);
       std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
-      std::vector<DataOutBase::Patch<1, 3>> patches;
+      io::VTUPatches<1> vtu({{"eta", 1}, {"director", 3}});
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fev.reinit(cell);
           fev.get_function_values(field, values);
-          DataOutBase::Patch<1, 3> patch;
-          patch.n_subdivisions       = degree;
-          patch.reference_cell       = ReferenceCells::Line;
-          patch.points_are_available = true;
-          patch.data.reinit(4 + 3, nodes.size());
+          vtu.begin_patch(degree);
           for (unsigned int k = 0; k < nodes.size(); ++k)
             {
-              const double         eta = fev.quadrature_point(k)[0];
-              Tensor<1, 3, double> theta;
-              theta[0]             = values[k][3];
-              theta[2]             = values[k][4];
-              const auto R         = kinematics::rotation_exp(theta);
-              patch.data(0, k)     = eta;
-              for (unsigned int c = 0; c < 3; ++c)
-                patch.data(1 + c, k) = R[c][1];
-              patch.data(4, k) = eta + values[k][0];
-              patch.data(5, k) = values[k][1];
-              patch.data(6, k) = values[k][2];
+              const double       eta = fev.quadrature_point(k)[0];
+              const Tensor<1, 3> q   = kinematics::strip_director(values[k][3], values[k][4]);
+              vtu.set_values(k, {eta, q[0], q[1], q[2]});
+              vtu.set_position(k, Point<3>(eta + values[k][0], values[k][1], values[k][2]));
             }
-          for (unsigned int v = 0; v < 2; ++v)
-            {
-              const unsigned int k = v == 0 ? 0 : degree;
-              patch.vertices[v] = Point<3>(patch.data(4, k), patch.data(5, k), patch.data(6, k));
-            }
-          patch.patch_index = patches.size();
-          patches.push_back(std::move(patch));
+          vtu.end_patch();
         }
-      std::vector<std::tuple<unsigned int, unsigned int, std::string,
-                             DataComponentInterpretation::DataComponentInterpretation>>
-        vectors = {{1, 3, "director", DataComponentInterpretation::component_is_part_of_vector}};
-      DataOutBase::VtkFlags flags;
-      io::write_file_atomically(file, [&](std::ostream &o) {
-        DataOutBase::write_vtu(patches, {"eta", "director", "director", "director"}, vectors,
-                               flags, o);
-      });
+      vtu.write(file);
     }
   } // namespace strip
 } // namespace cosmo

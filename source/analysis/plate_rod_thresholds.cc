@@ -250,31 +250,31 @@ namespace cosmo
     }
 
     LobedThreshold
-    first_planar(const PlateRod &p, const unsigned int n_max)
+    first_planar(const PlateRod &p, const unsigned int n_max, const unsigned int n_step)
     {
-      if (n_max < 2)
-        throw std::invalid_argument("n_max >= 2");
+      if (n_max < 2 || n_step < 1)
+        throw std::invalid_argument("n_max >= 2, n_step >= 1");
       LobedThreshold first{0, -std::numeric_limits<double>::infinity(), false};
-      for (unsigned int n = 2; n <= n_max; ++n)
+      for (unsigned int n = std::max(2u, n_step); n <= n_max; n += n_step)
         {
           const double d = planar_critical_mismatch(p, n);
           if (d > first.mismatch)
-            first = {n, d, n == n_max};
+            first = {n, d, n + n_step > n_max};
         }
       return first;
     }
 
     LobedThreshold
-    first_out_of_plane(const PlateRod &p, const unsigned int n_max)
+    first_out_of_plane(const PlateRod &p, const unsigned int n_max, const unsigned int n_step)
     {
-      if (n_max < 2)
-        throw std::invalid_argument("n_max >= 2");
+      if (n_max < 2 || n_step < 1)
+        throw std::invalid_argument("n_max >= 2, n_step >= 1");
       LobedThreshold first{0, -std::numeric_limits<double>::infinity(), false};
-      for (unsigned int n = 2; n <= n_max; ++n)
+      for (unsigned int n = std::max(2u, n_step); n <= n_max; n += n_step)
         {
           const double d = out_of_plane_critical_mismatch(p, n);
           if (d > first.mismatch)
-            first = {n, d, n == n_max};
+            first = {n, d, n + n_step > n_max};
         }
       return first;
     }

@@ -56,8 +56,26 @@ namespace cosmo
       prm.enter_subsection("Plate growth");
       auto l = plugins::Registry<PlateGrowthLaw>::create(prm.get("Kind"));
       l->parse_parameters(prm);
-      law = std::move(l);
+      law                  = std::move(l);
+      radial_text          = prm.get("Radial growth factor");
+      circumferential_text = prm.get("Circumferential growth factor");
       prm.leave_subsection();
+    }
+
+    void
+    PlateGrowth::check_positive(const double radius) const
+    {
+      for (const double t : {0., 1.})
+        for (unsigned int i = 0; i <= 20; ++i)
+          {
+            const auto g = factors(radius * i / 20., t);
+            if (!(g[0] > 0) || !(g[1] > 0))
+              throw io::InputError("Plate growth",
+                                   g[0] > 0 ? "Circumferential growth factor" : "Radial growth factor",
+                                   g[0] > 0 ? circumferential_text : radial_text,
+                                   "growth factors must be positive for 0 <= r <= R (not at r = " +
+                                     std::to_string(radius * i / 20.) + ")");
+          }
     }
 
     std::array<double, 2>

@@ -147,6 +147,8 @@ namespace cosmo
 
     /**
      * The first mode of a family over n = 2..n_max: the mismatch closest to 0.
+     * With n_step > 1 only the multiples of n_step (from max(2, n_step)):
+     * the mode numbers a sector pi/n_step admits.
      * at_n_max is set when that is n = n_max: the family's minimum may lie
      * beyond (planar lobes of an extensible rim on a stiff plate wrinkle at
      * high n, n ~ R (E h / EI2)^{1/3}; see the doc), search further.
@@ -158,9 +160,9 @@ namespace cosmo
       bool         at_n_max = false;
     };
     LobedThreshold
-    first_planar(const PlateRod &p, unsigned int n_max = 12);
+    first_planar(const PlateRod &p, unsigned int n_max = 12, unsigned int n_step = 1);
     LobedThreshold
-    first_out_of_plane(const PlateRod &p, unsigned int n_max = 12);
+    first_out_of_plane(const PlateRod &p, unsigned int n_max = 12, unsigned int n_step = 1);
   } // namespace analysis
 } // namespace cosmo
 

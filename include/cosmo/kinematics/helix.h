@@ -73,6 +73,27 @@ namespace cosmo
     }
 
     /**
+     * The rod's placement at X3 on the reference axis: x = r(X3) + R(X3) w
+     * for a point w of the (deformed) section in the director frame, the
+     * section swept along the helix (output of parts 1 and 2).
+     */
+    struct HelixPlacement
+    {
+      Tensor<2, 3> R;
+      Tensor<1, 3> r;
+      HelixPlacement(const RodStrains &strains, const double X3)
+        : R(helix_rotation(strains.kappa, X3))
+        , r(helix_position(strains.nu, strains.kappa, X3))
+      {}
+      /// x = r + R w.
+      Tensor<1, 3>
+      place(const Tensor<1, 3> &w) const
+      {
+        return r + R * w;
+      }
+    };
+
+    /**
      * Geometry of the helix traced by the centreline: its axis is the
      * spatial angular velocity R kappa (constant), the centreline turns about
      * it at |kappa| per unit reference length, advancing nu.k per unit

@@ -204,6 +204,23 @@ namespace cosmo
     }
 
     /**
+     * The rim's frame Lambda = exp([theta]x) exp(alpha [E3]x) Lambda0,
+     * theta = (theta1, theta2, 0) (the plate's rotation at the weld) and
+     * alpha the rim's own rotation about the plate normal (columns d1, d2,
+     * d3; exact_rim_strains uses the same factors without forming it).
+     */
+    inline Tensor<2, 3>
+    rim_rotation(const double theta1, const double theta2, const double alpha,
+                 const Tensor<2, 3> &Lambda0)
+    {
+      Tensor<1, 3> theta, a;
+      theta[0] = theta1;
+      theta[1] = theta2;
+      a[2]     = alpha;
+      return rotation_exp(theta) * rotation_exp(a) * Lambda0;
+    }
+
+    /**
      * The reference strains of the discrete rim at X on it (so that the
      * reference ring is stress free, whatever the polygon of the mesh):
      * nu0 = Lambda0^T t, kappa0 = (0, t.e_theta / r, 0).

@@ -22,6 +22,17 @@ namespace cosmo
     /// y = eta E1 + u, q = exp([theta]x) E2 with theta = (theta1, 0, theta3).
     constexpr int strip_local_variables = 16;
 
+    /// The director q = exp([theta]x) E2 of the thickness line, theta = (theta1, 0, theta3).
+    inline Tensor<1, 3>
+    strip_director(const double theta1, const double theta3)
+    {
+      Tensor<1, 3> theta;
+      theta[0]            = theta1;
+      theta[2]            = theta3;
+      const Tensor<2, 3> Q = rotation_exp(theta);
+      return Tensor<1, 3>({Q[0][1], Q[1][1], Q[2][1]});
+    }
+
     /**
        * The plate energy density at one point of the width line, as a
        * function of the local variables z (doc/specification/strip.md, helical Cauchy-Born

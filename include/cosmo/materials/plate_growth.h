@@ -66,8 +66,17 @@ namespace cosmo
       std::array<double, 2>
       factors(double r, double t) const;
 
+      /**
+       * io::InputError naming the factor's entry unless both factors are
+       * positive at 21 radii in [0, R], at t = 0 and t = 1 (the ramp is
+       * linear in t, so positive at both ends means positive between).
+       */
+      void
+      check_positive(double radius) const;
+
     private:
       std::shared_ptr<const PlateGrowthLaw> law;
+      std::string                           radial_text, circumferential_text;
     };
   } // namespace materials
 } // namespace cosmo

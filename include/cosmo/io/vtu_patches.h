@@ -1,0 +1,75 @@
+#ifndef cosmo_io_vtu_patches_h
+#define cosmo_io_vtu_patches_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+/**
+ * VTU output built point by point, for what DataOut cannot give directly:
+ * a field on a curve or a surface in 3D (the rim, a strip, a surface layer),
+ * a section swept along its helix, a 2D section lifted into 3D so that its
+ * 3-vectors stay 3-vectors. Each patch is a Q_p cell with (p + 1)^dim points
+ * in lexicographic order (first index fastest), each with a position in 3D
+ * and the values of the fields; scalars and 3-vectors (named once, written
+ * as VTU vectors) in the order given. Written atomically (io::write_file_atomically).
+ */
+namespace cosmo
+{
+  namespace io
+  {
+    using namespace dealii;
+
+    template <int dim>
+    class VTUPatches
+    {
+    public:
+      /// The fields: (name, 1) for a scalar, (name, 3) for a vector.
+      explicit VTUPatches(const std::vector<std::pair<std::string, unsigned int>> &fields);
+
+      /// Start a patch of n_subdivisions per direction (the element degree).
+      void
+      begin_patch(unsigned int n_subdivisions);
+
+      /// Point k of the current patch: its position.
+      void
+      set_position(unsigned int k, const Point<3> &x);
+
+      /// Point k of the current patch: the value of column `column` (a vector's components are consecutive columns).
+      void
+      set_value(unsigned int column, unsigned int k, double v);
+
+      /// Point k of the current patch: all columns at once, in order.
+      void
+      set_values(unsigned int k, const std::vector<double> &values);
+
+      /// Close the current patch (its corner vertices are its corner points).
+      void
+      end_patch();
+
+      /// The number of data columns (scalars count one, vectors three).
+      unsigned int
+      n_columns() const
+      {
+        return names.size();
+      }
+
+      /// Write all patches to `file` (.vtu), atomically.
+      void
+      write(const std::string &file) const;
+
+    private:
+      std::vector<std::string> names;
+      std::vector<std::tuple<unsigned int, unsigned int, std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+                                             vectors;
+      std::vector<DataOutBase::Patch<dim, 3>> patches;
+      bool                                    open = false;
+    };
+  } // namespace io
+} // namespace cosmo
+
+#endif

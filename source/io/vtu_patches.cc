@@ -1,0 +1,104 @@
+#include <deal.II/base/exceptions.h>
+
+#include <cosmo/io/output.h>
+#include <cosmo/io/vtu_patches.h>
+
+namespace cosmo
+{
+  namespace io
+  {
+    template <int dim>
+    VTUPatches<dim>::VTUPatches(const std::vector<std::pair<std::string, unsigned int>> &fields)
+    {
+      for (const auto &f : fields)
+        {
+          AssertThrow(f.second == 1 || f.second == 3,
+                      ExcMessage("a VTU field is a scalar or a 3-vector: " + f.first));
+          if (f.second == 3)
+            vectors.emplace_back(names.size(), names.size() + 2, f.first,
+                                 DataComponentInterpretation::component_is_part_of_vector);
+          for (unsigned int c = 0; c < f.second; ++c)
+            names.push_back(f.first);
+        }
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::begin_patch(const unsigned int n_subdivisions)
+    {
+      AssertThrow(!open, ExcMessage("begin_patch() before end_patch()"));
+      DataOutBase::Patch<dim, 3> patch;
+      patch.n_subdivisions       = n_subdivisions;
+      patch.reference_cell       = ReferenceCells::get_hypercube<dim>();
+      patch.points_are_available = true;
+      unsigned int n_points      = 1;
+      for (int d = 0; d < dim; ++d)
+        n_points *= n_subdivisions + 1;
+      // Data rows, then the three coordinates of the points.
+      patch.data.reinit(names.size() + 3, n_points);
+      patches.push_back(std::move(patch));
+      open = true;
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::set_position(const unsigned int k, const Point<3> &x)
+    {
+      auto &data = patches.back().data;
+      for (unsigned int c = 0; c < 3; ++c)
+        data(names.size() + c, k) = x[c];
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::set_value(const unsigned int column, const unsigned int k, const double v)
+    {
+      patches.back().data(column, k) = v;
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::set_values(const unsigned int k, const std::vector<double> &values)
+    {
+      AssertThrow(values.size() == names.size(),
+                  ExcMessage("set_values() needs " + std::to_string(names.size()) + " values"));
+      for (unsigned int c = 0; c < values.size(); ++c)
+        patches.back().data(c, k) = values[c];
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::end_patch()
+    {
+      auto &             patch = patches.back();
+      const unsigned int p = patch.n_subdivisions, np = p + 1, n = names.size();
+      // Corner v has the index bits (i, j, k) = (v & 1, v & 2, v & 4).
+      for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+        {
+          unsigned int pt = 0, stride = 1;
+          for (int d = 0; d < dim; ++d, stride *= np)
+            if (v & (1u << d))
+              pt += p * stride;
+          patch.vertices[v] = Point<3>(patch.data(n, pt), patch.data(n + 1, pt), patch.data(n + 2, pt));
+        }
+      patch.patch_index = patches.size() - 1;
+      open              = false;
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::write(const std::string &file) const
+    {
+      AssertThrow(!open, ExcMessage("write() before end_patch()"));
+      DataOutBase::VtkFlags flags;
+      flags.write_higher_order_cells = false;
+      write_file_atomically(file, [&](std::ostream &out) {
+        DataOutBase::write_vtu(patches, names, vectors, flags, out);
+      });
+    }
+
+    template class VTUPatches<1>;
+    template class VTUPatches<2>;
+    template class VTUPatches<3>;
+  } // namespace io
+} // namespace cosmo
