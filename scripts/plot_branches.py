@@ -64,7 +64,7 @@ def plot_run(plt, run_dir):
                 start = end + 1
     for e in summary.get("events", []):
         for ax in axes:
-            ax.axvline(e.get("lambda", math.nan), color="gray", lw=0.6, ls=":")
+            ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
     for ax, name in zip(axes, (resultant, order)):
         ax.set_xlabel("load parameter t (%s prescribed)" % driven)
         ax.set_ylabel(name)

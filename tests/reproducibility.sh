@@ -49,7 +49,7 @@ bad = 0
 for name, ev in runs.items():
     assert len(ev) == len(ref), "%s: %d events, threads1: %d" % (name, len(ev), len(ref))
     for k, (a, b) in enumerate(zip(ref, ev)):
-        la, lb = a.get("t", a.get("lambda")), b.get("t", b.get("lambda"))
+        la, lb = a["t"], b["t"]
         assert a["kind"] == b["kind"] and a["branch"] == b["branch"], (name, k)
         # the tolerance is the reference run's resolution; a rerun that
         # resolves its load more than 4x worse is itself a failure

@@ -92,7 +92,7 @@ if "helix" in s:
 # Located events (strip): their load, resolved to ~1e-11 (the events'
 # "resolution" in summary.json), far below numdiff's 1e-6.
 for e in s.get("events", []):
-    print("event", e["kind"], "branch", e["branch"], "lambda", e["lambda"])
+    print("event", e["kind"], "branch", e["branch"], "lambda", e["t"])
 PY
 fi
 if [ ! -f "$ref" ]; then

@@ -264,7 +264,7 @@ namespace cosmo
           const auto &e          = located_events[k];
           JSON        x          = JSON::object();
           x["kind"]              = e.name();
-          x["lambda"]            = e.lambda;
+          x["t"]                 = e.lambda; // the load parameter, as in steps.csv (all applications)
           x["branch"]            = e.branch;
           x["n_negative_before"] = e.n_negative_before;
           x["n_negative_after"]  = e.n_negative_after;
