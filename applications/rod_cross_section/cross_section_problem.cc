@@ -301,6 +301,16 @@ namespace cosmo
         bool                                 admissible = true;
       };
 
+      /// The component of each DoF of a cell.
+      std::vector<unsigned int>
+      dof_components(const FiniteElement<2> &fe)
+      {
+        std::vector<unsigned int> comp(fe.n_dofs_per_cell());
+        for (unsigned int i = 0; i < comp.size(); ++i)
+          comp[i] = fe.system_to_component_index(i).first;
+        return comp;
+      }
+
       /// The strains and what the derivatives of Fbar need of them: [kappa]x and e_m x e_c.
       struct HelicalStrainTerms
       {
@@ -344,17 +354,12 @@ namespace cosmo
                                        FullMatrix<double> &         E,
                                        FieldIntegrals &             results)
     {
-      const HelicalStrainTerms strain_terms(e);
-      const Tensor<1, 3> &     nu = strain_terms.nu, &kappa = strain_terms.kappa;
-      const Tensor<2, 3> &     Kx    = strain_terms.Kx;
-      const auto &             e_x_e = strain_terms.e_x_e;
+      const HelicalStrainTerms h(e);
 
       const QGauss<2>    quadrature(degree + 1);
       const unsigned int nq  = quadrature.size();
-      const unsigned int dpc = fe->n_dofs_per_cell();
-      std::vector<unsigned int> comp(dpc);
-      for (unsigned int i = 0; i < dpc; ++i)
-        comp[i] = fe->system_to_component_index(i).first;
+      const unsigned int              dpc  = fe->n_dofs_per_cell();
+      const std::vector<unsigned int> comp = dof_components(*fe);
 
       // Cells are independent: the worker runs on all cores, the copier adds
       // the contributions in cell order (so sums are reproducible).
@@ -396,7 +401,7 @@ namespace cosmo
                 grad_u[comp[i]][1] += scratch.U_local[i] * g[1];
               }
             const Tensor<1, 3> w = kinematics::section_placement(X, u);
-            const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, nu, kappa);
+            const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, h.nu, h.kappa);
 
             const Tensor<2, 3> &Fg = growth_at_qp[cell->active_cell_index() * nq + q];
             material.evaluate(F, Fg, jacobian, d);
@@ -418,7 +423,7 @@ namespace cosmo
                 B[i].add(3 * c, g[0]);
                 B[i].add(3 * c + 1, g[1]);
                 for (unsigned int r = 0; r < 3; ++r)
-                  B[i].add(3 * r + 2, Kx[r][c] * N);
+                  B[i].add(3 * r + 2, h.Kx[r][c] * N);
                 out.r[i] += B[i].dot(P) * dA;
               }
             // dFbar/d(strain k): only the third column depends on the strains.
@@ -451,7 +456,7 @@ namespace cosmo
                     double bik = D[k].dot(CBi);
                     if (k >= 3) // P : d2 Fbar / dU_i dkappa_k, column 3 = e_k x e_c N
                       {
-                        const Tensor<1, 3> &ex = e_x_e[k - 3][c];
+                        const Tensor<1, 3> &ex = h.e_x_e[k - 3][c];
                         for (unsigned int r = 0; r < 3; ++r)
                           bik += P[3 * r + 2] * ex[r] * N;
                       }
@@ -501,15 +506,10 @@ namespace cosmo
                                                  FieldIntegrals &             results)
     {
       // Few faces: serial, in face order.
-      const HelicalStrainTerms strain_terms(e);
-      const Tensor<1, 3> &     nu = strain_terms.nu, &kappa = strain_terms.kappa;
-      const Tensor<2, 3> &     Kx    = strain_terms.Kx;
-      const auto &             e_x_e = strain_terms.e_x_e;
+      const HelicalStrainTerms h(e);
 
-      const unsigned int dpc = fe->n_dofs_per_cell();
-      std::vector<unsigned int> comp(dpc);
-      for (unsigned int i = 0; i < dpc; ++i)
-        comp[i] = fe->system_to_component_index(i).first;
+      const unsigned int              dpc  = fe->n_dofs_per_cell();
+      const std::vector<unsigned int> comp = dof_components(*fe);
 
       const QGauss<1>    face_quadrature(degree + 1);
       const unsigned int nqf = face_quadrature.size();
@@ -568,7 +568,7 @@ namespace cosmo
                   du_dS[comp[i]] += U_local[i] * (g * T);
                 }
               const Tensor<1, 3> w  = kinematics::section_placement(X, u);
-              const auto Fs = kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa);
+              const auto Fs = kinematics::surface_deformation_gradient(w, du_dS, T, h.nu, h.kappa);
               layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
                              jacobian, d);
               results.energy += d.energy * dS;
@@ -580,7 +580,7 @@ namespace cosmo
                   dF[i].fill(0.);
                   dF[i][2 * c] = ffv.shape_grad(i, q) * T;
                   for (unsigned int r = 0; r < 3; ++r)
-                    dF[i][2 * r + 1] += Kx[r][c] * N;
+                    dF[i][2 * r + 1] += h.Kx[r][c] * N;
                   out.r[i] += dot6(dF[i], d.P) * dS;
                 }
               for (unsigned int k = 0; k < n_strains; ++k)
@@ -608,7 +608,7 @@ namespace cosmo
                       double bik = dot6(D[k], CdF[i]);
                       if (k >= 3) // Ps : d2 Fs / dU_i dkappa_k (second column)
                         {
-                          const Tensor<1, 3> &ex = e_x_e[k - 3][c];
+                          const Tensor<1, 3> &ex = h.e_x_e[k - 3][c];
                           for (unsigned int r = 0; r < 3; ++r)
                             bik += d.P[2 * r + 1] * ex[r] * N;
                         }
