@@ -27,14 +27,6 @@ namespace cosmo
     {
       constexpr unsigned int n_strains = assembly::ReducedRodProblem::n_strains;
       constexpr unsigned int n_gauge   = assembly::ReducedRodProblem::n_gauge;
-
-      std::string
-      fixed(const double v, const int precision = 6)
-      {
-        std::ostringstream s;
-        s << std::setprecision(precision) << v;
-        return s.str();
-      }
     } // namespace
 
     CrossSectionProblem::CrossSectionProblem() = default;
@@ -712,13 +704,13 @@ namespace cosmo
       if (!geometry.meshing_summary.empty())
         say("  " + geometry.meshing_summary);
       if (geometry.applied_shift.norm() > 0)
-        say("  mesh shifted by (" + fixed(geometry.applied_shift[0]) + ", " +
-            fixed(geometry.applied_shift[1]) + ") to put its centroid at the origin");
+        say("  mesh shifted by (" + io::format_significant(geometry.applied_shift[0]) + ", " +
+            io::format_significant(geometry.applied_shift[1]) + ") to put its centroid at the origin");
       for (const auto &m : materials.descriptions())
         say("  " + m);
       for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
         say("  " + surface_layers.layers()[l].description() + " (arc length " +
-            fixed(surface_length[l]) + ")");
+            io::format_significant(surface_length[l]) + ")");
 
       steps_table = io::CSVTable();
       for (const auto &c : {"step", "branch", "t", "newton_iterations", "residual", "cutbacks"})
@@ -833,7 +825,7 @@ namespace cosmo
               row.push_back(s.n_negative);
               line << "  strains (";
               for (unsigned int i = 0; i < 6; ++i)
-                line << (i ? ", " : "") << fixed(s.strains[i], 6);
+                line << (i ? ", " : "") << io::format_significant(s.strains[i], 6);
               line << ")  " << h.description();
             }
           catch (io::RunFailure &e)

@@ -26,17 +26,6 @@ namespace cosmo
   {
     namespace
     {
-      std::string
-      fixed(const double v, const int precision = 6)
-      {
-        std::ostringstream s;
-        s << std::setprecision(precision) << v;
-        return s.str();
-      }
-    } // namespace
-
-    namespace
-    {
       /// Stresses and growth at output points of the deformed section.
       class SectionPostprocessor : public DataPostprocessor<2>
       {
@@ -145,15 +134,15 @@ namespace cosmo
 
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8)
-           << fixed(report.t, 5) << "  Newton " << std::setw(2) << report.newton_iterations
+           << io::format_significant(report.t, 5) << "  Newton " << std::setw(2) << report.newton_iterations
            << "  |R| " << std::scientific << std::setprecision(1) << report.residual_norm
-           << std::defaultfloat << "  Psi = " << fixed(s.energy, 8) << "  neg.eig. "
+           << std::defaultfloat << "  Psi = " << io::format_significant(s.energy, 8) << "  neg.eig. "
            << s.n_negative;
       if (std::any_of(strain_is_free.begin(), strain_is_free.end(), [](bool b) { return b; }))
         {
           line << "  strains (";
           for (unsigned int k = 0; k < 6; ++k)
-            line << (k ? ", " : "") << fixed(s.strains[k], 6);
+            line << (k ? ", " : "") << io::format_significant(s.strains[k], 6);
           line << ")";
         }
       say(line.str());
@@ -396,30 +385,30 @@ namespace cosmo
     {
       const auto &s = last_state;
       say("");
-      say("Result at t = " + fixed(s.t) + ":");
+      say("Result at t = " + io::format_significant(s.t) + ":");
       std::ostringstream out;
-      out << "  energy per unit length  " << fixed(s.energy, 10) << "\n  strains    ";
+      out << "  energy per unit length  " << io::format_significant(s.energy, 10) << "\n  strains    ";
       for (unsigned int k = 0; k < 6; ++k)
-        out << " " << kinematics::strain_names[k] << " = " << fixed(s.strains[k], 10);
+        out << " " << kinematics::strain_names[k] << " = " << io::format_significant(s.strains[k], 10);
       out << "\n  resultants ";
       for (unsigned int k = 0; k < 6; ++k)
-        out << " " << kinematics::resultant_names[k] << " = " << fixed(s.resultants[k], 6);
+        out << " " << kinematics::resultant_names[k] << " = " << io::format_significant(s.resultants[k], 6);
       out << "\n  multipliers";
       for (unsigned int k = 0; k < 6; ++k)
-        out << " " << fixed(s.multipliers[k], 3);
+        out << " " << io::format_significant(s.multipliers[k], 3);
       out << "\n  stiffness (nu1, nu2, nu3, kappa1, kappa2, kappa3):\n";
       for (unsigned int a = 0; a < 6; ++a)
         {
           out << "   ";
           for (unsigned int b = 0; b < 6; ++b)
-            out << std::setw(14) << fixed(s.stiffness(a, b), 6);
+            out << std::setw(14) << io::format_significant(s.stiffness(a, b), 6);
           out << "\n";
         }
       out << "  natural/current centreline: "
           << kinematics::helix_geometry(kinematics::RodStrains(s.strains)).description() << "\n";
       out << "  timings [s]:";
       for (const auto &p : timer.phases())
-        out << "  " << p << " " << fixed(timer.seconds(p), 3);
+        out << "  " << p << " " << io::format_significant(timer.seconds(p), 3);
       say(out.str());
     }
   } // namespace rod

@@ -45,6 +45,14 @@ namespace cosmo
     }
 
     std::string
+    format_significant(const double v, const int precision)
+    {
+      std::ostringstream s;
+      s << std::setprecision(precision) << v;
+      return s.str();
+    }
+
+    std::string
     format_number(const double v)
     {
       if (std::isnan(v))

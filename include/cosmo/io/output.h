@@ -198,6 +198,10 @@ namespace cosmo
     /// Shortest round-trip text of a double for tables.
     std::string
     format_number(double v);
+
+    /// A double with `precision` significant digits, for progress lines and logs.
+    std::string
+    format_significant(double v, int precision = 6);
   } // namespace io
 } // namespace cosmo
 
