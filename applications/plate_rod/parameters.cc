@@ -61,6 +61,15 @@ namespace cosmo
       prm.declare_entry("Shear stabilization", "0.03", Patterns::Double(0),
                         "alpha of the stabilized shear integration (0.03: the smallest "
                         "threshold errors on coarse meshes, doc/theory-plate-rod.md).");
+      prm.declare_entry("Deformation", "full", Patterns::Selection("full|in-plane only"),
+                        "full: the plate and the rim deform in 3D. in-plane only: the "
+                        "out-of-plane displacement u3 and the plate's rotations theta1, "
+                        "theta2 are held at 0 everywhere (the rim keeps its in-plane "
+                        "rotation alpha), so that planar lobing is studied by itself: at "
+                        "the flat state the in-plane and out-of-plane problems decouple "
+                        "(reflection through the plate's plane), so the planar critical "
+                        "points are those of the full model, and the out-of-plane ones "
+                        "are absent.");
       prm.leave_subsection();
       prm.enter_subsection("Mesh");
       prm.declare_entry("Domain", "full disc", Patterns::Selection("full disc|sector"),
@@ -218,6 +227,7 @@ namespace cosmo
                          (prm.get("Shear integration") == "automatic" &&
                           !model->automatic_reduced_shear());
       shear_stabilization = prm.get_double("Shear stabilization");
+      in_plane_only       = prm.get("Deformation") == "in-plane only";
       prm.leave_subsection();
 
       prm.enter_subsection("Mesh");

@@ -164,6 +164,16 @@ namespace cosmo
     {
       constraints.clear();
       const bool sector = domain == "sector";
+      // In-plane only: u3, theta1, theta2 = 0 everywhere, first (the mirror
+      // conditions below then find those DoFs constrained already).
+      if (in_plane_only)
+        {
+          ComponentMask out_of_plane(6, false);
+          for (const unsigned int c : {2u, 3u, 4u})
+            out_of_plane.set(c, true);
+          for (const auto i : DoFTools::extract_dofs(dof_handler, out_of_plane))
+            constraints.add_line(i);
+        }
       // The apex: no translation, director E3 (the gauge of the full disc; on a sector with
       // n >= 2 the mirrors imply all but u3 = 0, the one gauge left there).
       for (const auto &cell : dof_handler.active_cell_iterators())

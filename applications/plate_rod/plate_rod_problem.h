@@ -224,6 +224,8 @@ namespace cosmo
       /// The registered plate model named by 'Model / Model' (kinematics/plate_model.h).
       std::unique_ptr<kinematics::PlateModel> model;
       bool                           stabilized_shear    = true;
+      /// 'Model / Deformation = in-plane only': u3, theta1, theta2 held at 0.
+      bool                           in_plane_only       = false;
       double                         shear_stabilization = 0.03;
       materials::NaghdiPlateLaw      plate_law;
       materials::PlateGrowth         plate_growth;

@@ -372,9 +372,10 @@ namespace cosmo
           const double D                     = analysis::axisymmetric_critical_mismatch(p);
           closed["axisymmetric"]["mismatch"] = D;
           closed["axisymmetric"]["t"]        = t_of(D);
-          first_mismatch                     = D;
+          // In-plane only, the dome (out of plane) is absent: no first threshold.
+          first_mismatch                     = in_plane_only ? NAN : D;
           c << "  closed form (Kirchhoff, small strain): axisymmetric buckling at Delta = " << D
-            << ", t = " << t_of(D);
+            << ", t = " << t_of(D) << (in_plane_only ? " (out of plane: absent here)" : "");
         }
       else
         {
@@ -397,7 +398,8 @@ namespace cosmo
           const unsigned int n_out = out.n, n_planar = planar.n;
           closed["first_out_of_plane"] = entry(n_out, best_out);
           closed["first_planar"]       = entry(n_planar, best_planar);
-          first_mismatch               = std::max(best_out, best_planar);
+          // In-plane only, the out-of-plane family is absent.
+          first_mismatch = in_plane_only ? best_planar : std::max(best_out, best_planar);
           c << "\n  first out-of-plane mode n = " << n_out << " at Delta = " << best_out
             << "; first planar mode n = " << n_planar << " at Delta = " << best_planar << " (t = "
             << t_of(best_planar) << ")";
