@@ -20,6 +20,14 @@ end
 PRM
 }
 expect "missing file" "cannot open the parameter file 'nope.prm'" nope.prm
+{ base; echo "include self.prm"; } > self.prm
+expect "a parameter file that includes itself" "include cycle in parameter files: 'self.prm' includes 'self.prm' again" self.prm
+{ base; echo "include b.prm"; } > a.prm; echo "include a.prm" > b.prm
+expect "an include cycle through two files" "'a.prm' includes 'b.prm' includes 'a.prm' again" a.prm
+mkdir -p a_directory.prm
+expect "a directory as the parameter file" "'a_directory.prm' is not a regular file (a directory)" a_directory.prm
+{ base; echo "include ."; } > include_dir.prm
+expect "an include of a directory" "'.' (included from 'include_dir.prm') is not a regular file" include_dir.prm
 { base; echo "set Undeclared entry = 3"; } > undeclared.prm
 expect "undeclared entry" "Undeclared entry" undeclared.prm
 { base; printf 'subsection Cross-section\n set Shape = hexagon\nend\n'; } > shape.prm

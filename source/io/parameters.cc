@@ -5,9 +5,11 @@
 #include <cosmo/config.h>
 #include <cosmo/io/parameters.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 namespace cosmo
 {
@@ -21,6 +23,51 @@ namespace cosmo
                            value + "': " + allowed)
     {}
 
+    namespace
+    {
+      /**
+       * The parameter file and every file it includes ('include name' lines
+       * of a .prm, names relative to the working directory as deal.II reads
+       * them) are regular files, and no file includes itself through a
+       * chain: std::runtime_error naming the file, the line and the chain.
+       */
+      void
+      check_includes(const std::string &file, std::vector<std::string> chain)
+      {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec))
+          throw std::runtime_error(
+            "the parameter file '" + file + "'" +
+            (chain.empty() ? std::string() : " (included from '" + chain.back() + "')") +
+            " is not a regular file" + (fs::is_directory(file, ec) ? " (a directory)" : "") +
+            ": give a .prm, .json or .xml file");
+        const std::string id = fs::weakly_canonical(file, ec).string();
+        for (const auto &c : chain)
+          if (fs::weakly_canonical(c, ec).string() == id)
+            {
+              std::string path;
+              for (const auto &x : chain)
+                path += "'" + x + "' includes ";
+              throw std::runtime_error("include cycle in parameter files: " + path + "'" + file +
+                                       "' again");
+            }
+        chain.push_back(file);
+        const std::string ext = fs::path(file).extension().string();
+        if (ext == ".json" || ext == ".xml")
+          return; // no include directive in these formats
+        std::ifstream in(file);
+        std::string   line;
+        while (std::getline(in, line))
+          {
+            line = line.substr(0, line.find('#'));
+            line = Utilities::trim(line);
+            if (line.rfind("include ", 0) == 0 || line.rfind("include\t", 0) == 0)
+              check_includes(Utilities::trim(line.substr(8)), chain);
+          }
+      }
+    } // namespace
+
     void
     parse_parameter_file(ParameterHandler &prm, const std::string &file)
     {
@@ -29,6 +76,10 @@ namespace cosmo
         if (!in)
           throw std::runtime_error("cannot open the parameter file '" + file + "'");
       }
+      // deal.II follows 'include' lines itself, without a guard: a file that
+      // includes itself recurses until the stack overflows, and a directory
+      // opens as an empty file (all defaults). Check both first.
+      check_includes(file, {});
       // deal.II's own messages name the file, line, entry and pattern; keep
       // only that part, not the assertion boilerplate around it.
       try
