@@ -235,9 +235,10 @@ namespace
   {
     const double h = 0.01, D = plate_D(h);
     std::vector<double> errors, resolutions; // at rho = 1, refinements 1, 2, 3
+    std::vector<double> thresholds; // at rho = 1
     for (const double rho : {1e-3, 1e3, 1.})
       for (const unsigned int k : rho == 1. ? std::vector<unsigned int>{1, 2, 3} :
-                                              std::vector<unsigned int>{2})
+                                              std::vector<unsigned int>{3})
         {
           Setup s;
           s.EI1          = rho * R * D;
@@ -254,18 +255,26 @@ namespace
                                   solvers::event_resolution(p->events().front().event) / e.first;
           std::ostringstream what;
           what << "rho = " << rho << ", " << p->n_dofs() << " DoFs: critical mismatch";
-          // k = 3: the discretization extrapolated from k = 1, 2 (2.1e-3,
-          // 3.7e-4: a factor 5.7 per refinement, so 6.5e-5) and the
-          // penalty's r/p (2e-5); measured 2e-6 to 8.5e-6 (1 vs 2 BLAS
-          // threads). k <= 2: the discretization at k = 1; plus twice the
-          // resolution.
-          check_close(what.str(), e.second, exact, (k == 3 ? 1e-4 : 3e-3) + 2 * resolution);
+          // The assumed-strain element (MITC9) on 12 cells (k = 1) is
+          // pre-asymptotic for the penalized plate, whose effective
+          // thickness is h/sqrt(p): it is checked only for convergence below.
+          // rho = 1, k = 3: the discretization extrapolated at order 2 (the
+          // least the successive differences must show below) from the
+          // k = 2 error (6e-4 measured, so 1.5e-4) plus the penalty's r/p
+          // (2e-5): 2e-4; rho = 1e-3, 1e3 at k = 3 and rho = 1 at k = 2: the
+          // k = 2 error at rho = 1e3, 6.3e-3 (the rim's EI1 = 1e3 R D puts the
+          // plate's curvature into a rim boundary layer), over 2: 3e-3. Plus
+          // twice the resolution.
+          if (k >= 2)
+            check_close(what.str(), e.second, exact,
+                        (rho == 1. && k == 3 ? 2e-4 : 3e-3) + 2 * resolution);
           if (rho == 1.)
             {
               errors.push_back(std::abs(e.second / exact - 1));
               resolutions.push_back(resolution);
+              thresholds.push_back(e.second / exact);
             }
-          if (!p->events().empty() && k == 2)
+          if (!p->events().empty() && k == 3)
             {
               Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
               const auto c = p->classify_mode(mode);
@@ -277,6 +286,15 @@ namespace
               << ", " << resolutions[2] << "\n";
     check("the threshold converges under refinement, by more than its resolution",
           errors[2] + 2 * resolutions[2] < errors[1] && errors[1] + 2 * resolutions[1] < errors[0]);
+    // At least second order (issue: the Kirchhoff model converges at its
+    // element's order): each refinement divides the successive difference by
+    // 4 or more, beyond the resolutions (measured: a factor 11.5).
+    const double d01 = std::abs(thresholds[1] - thresholds[0]),
+                 d12 = std::abs(thresholds[2] - thresholds[1]);
+    std::cout << "  successive differences " << d01 << ", " << d12 << ": ratio " << d01 / d12
+              << "\n";
+    check("second order or better: d(1, 2) < d(0, 1)/4 beyond the resolutions",
+          d12 < d01 / 4 - 2 * (resolutions[0] + 2 * resolutions[1] + resolutions[2]));
   }
 
   // Anchor 2: Cosserat against Kirchhoff, a difference of order (h/R)^2,
@@ -287,16 +305,14 @@ namespace
   // shear terms of J are k G h. The comparison model is the Kirchhoff
   // penalty p = 10 (not 100: its R is p times Cosserat's), so Mindlin's
   // relation for the pair is N_C/N_K = (1 + r/p)/(1 + r), i.e.
-  // Cosserat/Kirchhoff - 1 = -(1 - 1/p) r/(1 + r), r = N_K/(ks G h). The
-  // Cosserat shear is integrated 'reduced' (the stabilized shear's consistency
-  // error, O(alpha h_K^2/h^2) of the shear compliance, is 9 % of the
-  // difference at h/R = 0.02 and grows like (h_K/h)^2), on the sector pi/4
-  // with 3 refinements (4902 DoFs: on finer meshes 'reduced' meets its
-  // spurious transverse mode, section 7 of doc/theory-plate-rod.md).
-  // Tolerance per thickness: 6 % (Mindlin's relation is first order in r and
-  // the threshold has the O(Delta) of the prestressed state; the discretization
-  // is ~1 % at h/R = 0.02) plus the two thresholds' resolutions relative to
-  // the difference. The (h/R)^2 scaling is tested on consecutive thicknesses
+  // Cosserat/Kirchhoff - 1 = -(1 - 1/p) r/(1 + r), r = N_K/(ks G h). Both
+  // models use the default assumed-strain shear (MITC9), on the sector pi/4
+  // with 3 refinements (4902 DoFs, converged to ~1e-5 of the threshold,
+  // doc/theory-plate-rod.md section 7). Tolerance per thickness: 2 % of the
+  // difference (Mindlin's relation is first order in r, r <= 3e-3 here, and
+  // the threshold carries the O(Delta) of the prestressed state on both
+  // models alike) plus the two thresholds' resolutions relative to the
+  // difference. The (h/R)^2 scaling is tested on consecutive thicknesses
   // whose differences are resolved to 10 % (R_C + R_K < 0.1 |difference| t).
   void
   cosserat_vs_kirchhoff()
@@ -312,7 +328,7 @@ namespace
         s.plate_growth = growth_for_threshold(s);
         s.t_max        = 0.6;
         s.refinements  = 3;
-        const auto m   = cosserat_and_kirchhoff(s, "subsection Model\n set Shear integration = reduced\nend\n",
+        const auto m   = cosserat_and_kirchhoff(s, "",
                                               "subsection Model\n set Shear penalty factor = 10\nend\n");
         if (m.kirchhoff->events().empty() || m.cosserat->events().empty())
           {
@@ -343,7 +359,7 @@ namespace
         // check within the resolution could not fail, so it is only printed.
         if (resolution < 0.5 * std::abs(difference))
           check_close("h/R = " + std::to_string(h) + ": Cosserat/Kirchhoff - 1 = -(1 - 1/p) r/(1 + r)",
-                      difference, expected, 0, 0.06 * std::abs(expected) + resolution);
+                      difference, expected, 0, 0.02 * std::abs(expected) + resolution);
         else
           std::cout << "  h/R = " << h << ": the difference is below the resolution of the two "
                     << "thresholds; not compared\n";
@@ -391,6 +407,8 @@ namespace
     for (const std::string domain : {"full disc", "sector"})
       {
         s.domain = domain;
+        // As many cells per quarter on both (sector_vs_full_disc).
+        s.refinements = domain == "sector" ? 2 : 3;
         auto p   = make(s);
         p->solve_flat_state(0.);
         p->follow_branches();
@@ -464,8 +482,15 @@ namespace
     std::vector<std::pair<double, double>> result; // threshold, |dome| at t = 0.75
     for (const std::string domain : {"full disc", "sector"})
       {
-        s.domain      = domain;
-        s.refinements = 2;
+        // The assumed-strain element's error at 2 refinements of the sector
+        // (48 cells in the quarter) is ~2e-4 of the threshold; the full disc
+        // (5 coarse cells) needs one refinement more for as many cells per
+        // quarter. The model is the cosserat one: the symmetry reduction
+        // does not depend on it, and the Kirchhoff penalty makes the plate
+        // effectively ten times thinner, where coarse meshes converge later.
+        s.domain       = domain;
+        s.model        = "cosserat";
+        s.refinements  = domain == "sector" ? 2 : 3;
         s.sector_angle = 90;
         auto p        = make(s);
         const auto e  = first_event(*p);

@@ -11,6 +11,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <cosmo/assembly/assumed_shear.h>
 #include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
@@ -66,25 +67,40 @@ namespace cosmo
                 const FiniteElement<2> &fe,
                 const Quadrature<2> &   full,
                 const Quadrature<2> &   reduced,
-                const Quadrature<1> &   face)
+                const Quadrature<1> &   face,
+                const Quadrature<2> &   tying)
           : fev_full(mapping, fe, full,
-                     update_values | update_gradients | update_quadrature_points | update_JxW_values)
+                     update_values | update_gradients | update_quadrature_points |
+                       update_JxW_values | update_inverse_jacobians)
           , fev_reduced(mapping, fe, reduced,
                         update_values | update_gradients | update_quadrature_points |
                           update_JxW_values)
           , fev_face(mapping, fe, face,
                      update_values | update_gradients | update_quadrature_points |
                        update_JxW_values | update_normal_vectors)
+          , fev_tying(mapping, fe, tying, update_values | update_gradients | update_jacobians)
           , U_local(fe.n_dofs_per_cell())
         {}
         Scratch(const Scratch &o)
           : Scratch(o.fev_full.get_mapping(), o.fev_full.get_fe(), o.fev_full.get_quadrature(),
-                    o.fev_reduced.get_quadrature(), o.fev_face.get_quadrature())
+                    o.fev_reduced.get_quadrature(), o.fev_face.get_quadrature(),
+                    o.fev_tying.get_quadrature())
         {}
         FEValues<2>         fev_full, fev_reduced;
         FEFaceValues<2>     fev_face;
+        FEValues<2>         fev_tying;
         std::vector<double> U_local;
         std::vector<Drive>  drives;
+        /// Assumed shear: per tying point its drives, the covariant strain and its derivatives
+        /// in the local variables; V(i, k) = d e_k / d U_i; the energy's derivatives in the e_k.
+        std::vector<std::vector<Drive>>                                    tying_drives;
+        std::vector<double>                                                tying_strain;
+        std::vector<std::array<double, kinematics::plate_local_variables>> tying_gradient;
+        std::vector<std::array<double, kinematics::plate_local_variables *
+                                         kinematics::plate_local_variables>>
+                           tying_hessian;
+        FullMatrix<double> V, M, VM;
+        std::vector<double> mu;
       };
 
       struct Copy
@@ -340,10 +356,103 @@ namespace cosmo
         comp[i] = fe->system_to_component_index(i).first;
       const QGauss<2> full(degree + 1), reduced(degree);
       const QGauss<1> face(degree);
+      // The assumed shear's tying points and their weights at the full quadrature.
+      const assembly::AssumedShear assumed_shear(degree);
+      const FullMatrix<double>     tying_weights = assumed_shear.interpolation(full);
+      const unsigned int           n_tying       = assumed_shear.n_tying_points();
       const double    t            = load_parameter;
       const double    g_rod        = rod_growth_at(t);
       const auto      rod          = rod_law();
       const double    shear_scale  = model->shear_scale();
+
+      // The transverse shear of one cell with assumed covariant strains (fev_full reinit on it):
+      // the energy E = sum_q W_q(e(q)) JxW_q, e(q) = sum_k N_qk e_k, depends on the DoFs through
+      // the tying points' strains e_k only, so its gradient is sum_k mu_k de_k/dU and its Hessian
+      // V M V^T + sum_k mu_k d2e_k/dU2, with mu_k = dE/de_k, M_kl = d2E/de_k de_l, V = de/dU.
+      auto assumed_shear_of_cell = [&](Scratch &sc, Copy &c, const bool jacobian) {
+        sc.fev_tying.reinit(sc.fev_full.get_cell());
+        sc.tying_drives.resize(n_tying);
+        sc.tying_strain.resize(n_tying);
+        sc.tying_gradient.resize(n_tying);
+        sc.tying_hessian.resize(n_tying);
+        sc.V.reinit(dpc, n_tying);
+        sc.mu.assign(n_tying, 0.);
+        if (jacobian)
+          {
+            sc.M.reinit(n_tying, n_tying);
+            sc.VM.reinit(dpc, n_tying);
+          }
+        std::array<double, n_plate> z;
+        for (unsigned int k = 0; k < n_tying; ++k)
+          {
+            auto &drives = sc.tying_drives[k];
+            drives.resize(dpc);
+            for (unsigned int i = 0; i < dpc; ++i)
+              drives[i] = plate_drive(comp[i], sc.fev_tying.shape_value(i, k),
+                                      sc.fev_tying.shape_grad(i, k));
+            z.fill(0.);
+            assembly::gather_local_variables<n_plate>(drives, sc.U_local, z);
+            const Tensor<2, 2> J    = sc.fev_tying.jacobian(k);
+            const unsigned int comp_k = assumed_shear.component(k);
+            // The shear depends on du/dX and theta: local variables 3 to 10.
+            materials::internal::differentiate_subset<8>(
+              z, 3,
+              [&](const auto &x) {
+                using Number = std::decay_t<decltype(x[0])>;
+                std::array<Number, n_plate> y;
+                for (unsigned int m = 0; m < n_plate; ++m)
+                  y[m] = m >= 3 && m < 11 ? x[m - 3] : Number(z[m]);
+                return kinematics::covariant_shear_strain(y, *model, J, comp_k);
+              },
+              jacobian, sc.tying_strain[k], sc.tying_gradient[k], sc.tying_hessian[k]);
+            for (unsigned int i = 0; i < dpc; ++i)
+              {
+                double v = 0;
+                for (unsigned int p = 0; p < drives[i].n; ++p)
+                  v += drives[i].w[p] * sc.tying_gradient[k][drives[i].var[p]];
+                sc.V(i, k) = v;
+              }
+          }
+        double energy = 0;
+        const FEValues<2> &fev = sc.fev_full;
+        for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
+          {
+            std::array<double, 2> e{{0., 0.}};
+            for (unsigned int k = 0; k < n_tying; ++k)
+              e[assumed_shear.component(k)] += tying_weights(q, k) * sc.tying_strain[k];
+            const auto         gr   = growth_at(fev.quadrature_point(q), t);
+            const Tensor<2, 2> Kinv = fev.inverse_jacobian(q);
+            double                W = 0;
+            std::array<double, 2> dW;
+            std::array<double, 4> ddW;
+            materials::internal::differentiate<2>(
+              e,
+              [&](const auto &x) {
+                return kinematics::assumed_shear_energy(x, Kinv, gr, plate_law, shear_scale);
+              },
+              jacobian, W, dW, ddW);
+            energy += W * fev.JxW(q);
+            for (unsigned int k = 0; k < n_tying; ++k)
+              {
+                const double a = fev.JxW(q) * tying_weights(q, k);
+                sc.mu[k] += a * dW[assumed_shear.component(k)];
+                if (jacobian)
+                  for (unsigned int l = 0; l < n_tying; ++l)
+                    sc.M(k, l) += a * tying_weights(q, l) *
+                                  ddW[2 * assumed_shear.component(k) + assumed_shear.component(l)];
+              }
+          }
+        // sum_k mu_k (de_k/dU, d2e_k/dU2) through the tying points' drives, then V M V^T.
+        for (unsigned int k = 0; k < n_tying; ++k)
+          assembly::add_point<n_plate>(sc.tying_drives[k], sc.tying_gradient[k],
+                                       sc.tying_hessian[k], sc.mu[k], jacobian, c.r, c.K);
+        if (jacobian)
+          {
+            sc.V.mmult(sc.VM, sc.M);
+            sc.VM.mTmult(c.K, sc.V, true);
+          }
+        return energy;
+      };
 
       auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
                         Scratch &                                           sc,
@@ -359,8 +468,14 @@ namespace cosmo
         sc.drives.resize(dpc);
         std::array<double, n_plate>           z, g;
         std::array<double, n_plate * n_plate> H;
+        const bool stabilized_shear = shear_integration == ShearIntegration::stabilized;
         for (const bool membrane_bending : {true, false})
           {
+            if (!membrane_bending && shear_integration == ShearIntegration::assumed_strain)
+              {
+                c.plate_energy += assumed_shear_of_cell(sc, c, jacobian);
+                continue;
+              }
             FEValues<2> &fev =
               membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
             const double cell_shear_scale =
@@ -444,7 +559,8 @@ namespace cosmo
           constraints.distribute_local_to_global(c.K, c.idx, matrix);
       };
       WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
-                      Scratch(*mapping, *fe, full, reduced, face), Copy(dpc));
+                      Scratch(*mapping, *fe, full, reduced, face, assumed_shear.tying_points()),
+                      Copy(dpc));
       // Every assembly evaluates the energy: keep it with its state, so that the
       // output of a converged step need not assemble once more.
       assembled_at       = U;

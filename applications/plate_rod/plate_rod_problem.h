@@ -223,7 +223,14 @@ namespace cosmo
       unsigned int                   refinements = 3, degree = 2;
       /// The registered plate model named by 'Model / Model' (kinematics/plate_model.h).
       std::unique_ptr<kinematics::PlateModel> model;
-      bool                           stabilized_shear    = true;
+      /// 'Model / Shear integration' (assumed strain: assembly/assumed_shear.h).
+      enum class ShearIntegration
+      {
+        assumed_strain,
+        stabilized,
+        reduced
+      };
+      ShearIntegration               shear_integration = ShearIntegration::assumed_strain;
       /// 'Model / Deformation = in-plane only': u3, theta1, theta2 held at 0.
       bool                           in_plane_only       = false;
       double                         shear_stabilization = 0.03;

@@ -17,7 +17,7 @@
  * A model of the plate bounded by a rod (doc/specification/plate-rod.md
  * "Models"): the strain measures of the plate and of the rim rod in terms of
  * the shared local variables (plate_rod.h), the factor on the transverse
- * shear stiffnesses, and what 'Shear integration = automatic' means for it.
+ * shear stiffnesses.
  * Implementations register themselves by name (COSMO_REGISTER_PLUGIN,
  * base/plugins.h), one file each in source/kinematics/plate_models/
  * (cosserat, kirchhoff, von karman); the names are the values of plate_rod's
@@ -93,13 +93,6 @@ namespace cosmo
       {
         return 1.;
       }
-      /// Whether 'Shear integration = automatic' means reduced integration
-      /// (true) or the stabilized shear (false).
-      virtual bool
-      automatic_reduced_shear() const
-      {
-        return false;
-      }
       /// The plate's director d at a point (for output).
       virtual Tensor<1, 3>
       director(const std::array<double, plate_local_variables> &z) const = 0;
@@ -161,6 +154,57 @@ namespace cosmo
       const auto s = model.plate_strains(z, g);
       return g.det_G * (membrane_bending ? law.membrane_bending_energy(s) :
                                            Number(shear_scale * law.shear_energy(s)));
+    }
+
+    /**
+     * The covariant transverse shear strain e_c = (dX/dxi_c) . gamma at a
+     * point of a cell (the tying points of the assumed shear,
+     * assembly/assumed_shear.h): gamma the model's shear strain in the
+     * reference coordinates (growth is applied where the energy is
+     * integrated), jacobian[b][c] = dX_b/dxi_c.
+     */
+    template <typename Number>
+    Number
+    covariant_shear_strain(const std::array<Number, plate_local_variables> &z,
+                           const PlateModel &                              model,
+                           const Tensor<2, 2> &                            jacobian,
+                           const unsigned int                              c)
+    {
+      const auto s = model.plate_strains(z, PlateGrowthAtPoint());
+      Number     e = jacobian[0][c] * s.shear[0];
+      e += jacobian[1][c] * s.shear[1];
+      return e;
+    }
+
+    /**
+     * The plate's transverse shear energy per reference area from assumed
+     * covariant shear strains e (assembly/assumed_shear.h): gamma = J^-T e
+     * (inverse_jacobian[c][b] = dxi_c/dX_b), the growth's pull-back and det G
+     * as in plate_energy, times shear_scale (the model's shear_scale()).
+     */
+    template <typename Number>
+    Number
+    assumed_shear_energy(const std::array<Number, 2> &     e,
+                         const Tensor<2, 2> &              inverse_jacobian,
+                         const PlateGrowthAtPoint &        g,
+                         const materials::NaghdiPlateLaw & law,
+                         const double                      shear_scale)
+    {
+      std::array<Number, 2> gamma;
+      for (unsigned int b = 0; b < 2; ++b)
+        {
+          gamma[b] = inverse_jacobian[0][b] * e[0];
+          gamma[b] += inverse_jacobian[1][b] * e[1];
+        }
+      materials::PlateStrains<Number> s;
+      s.membrane.fill(Number(0.));
+      s.bending.fill(Number(0.));
+      for (unsigned int a = 0; a < 2; ++a)
+        {
+          s.shear[a] = g.G_inv[0][a] * gamma[0];
+          s.shear[a] += g.G_inv[1][a] * gamma[1];
+        }
+      return g.det_G * shear_scale * law.shear_energy(s);
     }
 
     /// Rim rod energy per reference length: the quadratic law with axial growth.

@@ -31,14 +31,6 @@ namespace cosmo
       {
         return penalty;
       }
-      /// The penalty keeps the spurious mode of reduced integration far away
-      /// (doc/theory-plate-rod.md).
-      bool
-      automatic_reduced_shear() const override
-      {
-        return true;
-      }
-
     private:
       double penalty = 100;
     };
