@@ -32,4 +32,14 @@ expect "a stiffness file without a 6x6 stiffness" "found 4 numbers" small.prm
 printf '{"stiffness": [[1, 0], [0, 1]\n' > broken.json
 { base; printf 'subsection Rim rod\n set Stiffness file = broken.json\nend\n'; } > broken.prm
 expect "a stiffness file that is not JSON (names where)" "not JSON at character" broken.prm
+{ base; printf 'subsection Plate\n set Thickness profile = 1 - 2*r^2\nend\n'; } > profile.prm
+expect "a thickness profile negative near the rim" "the thickness must be positive and finite at the quadrature points" profile.prm
+{ base; printf 'subsection Plate\n set Thickness profile = 1 + q\nend\n'; } > profile_parse.prm
+expect "a thickness profile that does not parse (names the entry)" "Thickness profile" profile_parse.prm
+{ base; printf 'subsection Plate growth\n set Natural curvature = 0.1; sqrt(0.3 - r); 0\nend\n'; } > curvature.prm
+expect "a natural curvature that is NaN on part of the plate" "must be finite on the plate" curvature.prm
+{ base; printf 'subsection Plate growth\n set Natural curvature = 0.1; 0.1\nend\n'; } > curvature2.prm
+expect "two natural curvature components instead of three" "3 muparser expression(s)" curvature2.prm
+{ base; printf 'subsection Rim rod\n set Natural curvature = 0.1, nan, 0\nend\n'; } > rimcurv.prm
+expect "a NaN in the rim's natural curvature" "Natural curvature" rimcurv.prm
 exit $fail

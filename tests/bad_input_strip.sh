@@ -23,6 +23,8 @@ expect "zero Young's modulus" "Young's modulus" young.prm
 expect "a path that asks for a strain twice (free and prescribed)" "either prescribed or free" twice.prm
 { strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Path = 0, 0, 1; 1\nend\n'; } > path.prm
 expect "a path waypoint that is not six numbers" "not six numbers" path.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Path = 0, 0, 1, nan, 0, 0\nend\n'; } > nan_path.prm
+expect "a NaN in a path waypoint" "six finite numbers" nan_path.prm
 { strip ' set Width = 1'; printf 'subsection Constitutive table\n set Enabled = true\n set First strain = kappa3\n set Second strain = kappa3\nend\n'; } > table.prm
 expect "a table that asks for a strain twice" "a strain other than the first" table.prm
 { strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = kappa3\nend\nsubsection Constitutive table\n set Enabled = true\nend\n'; } > tablefree.prm

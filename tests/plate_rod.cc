@@ -166,9 +166,56 @@ namespace
         }
   }
 
+  // Growth through the thickness, linear limit: a free plate (rim
+  // stiffnesses 1e-12) with the isotropic natural curvature c I takes it
+  // without moments, w = c r^2/2, whatever its thickness profile (M = D(r)
+  // (k - c I) = 0 is in equilibrium and free at the edge). Dome height
+  // |w(R) - w(0)| = c R^2/2 for c = 1e-4, h/R = 0.01, to 1e-3: the
+  // membrane coupling is of relative order (c R^2/h)^2 = 1e-4 and Q2 on the
+  // curved mesh interpolates r^2 to ~1e-5 (2 refinements).
+  void
+  natural_curvature_cap()
+  {
+    const double c = 1e-4;
+    for (const std::string model : {"cosserat", "kirchhoff", "von karman"})
+      for (const std::string profile : {"1", "1 - 0.5*r^2"})
+        {
+          Setup s;
+          s.model        = model;
+          s.refinements  = 2;
+          s.sector_angle = 90;
+          s.EA = s.GA = s.EI1 = s.EI2 = s.GJ = 1e-12;
+          std::ostringstream extra;
+          extra << std::setprecision(17) << "subsection Plate growth\n set Natural curvature = " << c
+                << "; " << c << "; 0\nend\nsubsection Plate\n set Thickness profile = " << profile
+                << "\nend\n";
+          s.extra      = extra.str();
+          s.t_max        = 1.2;
+          s.initial_step = 0.25;
+          s.maximum_step = 0.25;
+          auto p         = make(s);
+          // Along the path (the moments are ~D c = 1e-11: KINSOL's scaled
+          // stopping test on the residual alone would stop short), then
+          // interpolated linearly to t = 1 (the state is linear in t to
+          // O(c R^2/h)^2).
+          first_event(*p);
+          double dome = NAN;
+          const auto &path = p->path();
+          for (unsigned int i = 1; i < path.size(); ++i)
+            if (path[i - 1].t < 1 && path[i].t >= 1)
+              {
+                const double f = (1 - path[i - 1].t) / (path[i].t - path[i - 1].t);
+                dome           = (1 - f) * path[i - 1].w_centre + f * path[i].w_centre;
+              }
+          check_close(model + ", thickness profile " + profile + ": dome height = c R^2/2",
+                      std::abs(dome), c * R * R / 2, 1e-3);
+        }
+  }
+
   // The AD Hessian against central differences of the AD residual, and its
   // symmetry, for the three models at a general state (polar plate growth,
-  // rim growth, finite rotations).
+  // natural curvature of plate and rim, variable thickness, rim growth,
+  // finite rotations).
   void
   tangent_fd()
   {
@@ -180,7 +227,10 @@ namespace
         s.refinements = 1;
         s.rod_growth  = 0.97;
         s.extra = "subsection Plate growth\n set Kind = polar\n set Radial growth factor = 1.05\n"
-                  " set Circumferential growth factor = 1 + 0.1*r^2\nend\n";
+                  " set Circumferential growth factor = 1 + 0.1*r^2\n"
+                  " set Natural curvature = 0.3*x; 0.1 - 0.2*y; 0.05*r\nend\n"
+                  "subsection Plate\n set Thickness profile = 1 - 0.5*r^2 + 0.1*x\nend\n"
+                  "subsection Rim rod\n set Natural curvature = 0.2, -0.1, 0.3\nend\n";
         auto p = make(s);
         p->set_load_parameter(1.);
         const unsigned int n = p->n_unknowns();
@@ -893,6 +943,53 @@ namespace
         }
   }
 
+  // Growth through the natural metric: circumferential growth 1 + t a r^2
+  // gives the natural Gauss curvature K ~ -6 t a; a free disc buckles into a
+  // saddle (n = 2, out of plane) once the stretching it would need exceeds
+  // what bending costs, at |K| ~ (h/R)^2: the threshold t_cr must scale like
+  // h^2. Tolerance on t_cr(h)/t_cr(h/2) = 4: 5e-3, above the discretization of
+  // either threshold at 3 refinements (successive differences 1.6e-3, 4.0e-4
+  // over 2 -> 3 -> 4 refinements at h/R = 0.01, so ~1.3e-4 left) and the
+  // corrections of relative order |K| R^2 = 1e-3 (finite strain) and
+  // (h/R)^2 (transverse shear). Measured: 3.9974.
+  void
+  gauss_curvature_saddle()
+  {
+    std::vector<double> t_cr;
+    for (const double h : {0.01, 0.005})
+      {
+        Setup s;
+        s.model        = "cosserat";
+        s.h            = h;
+        s.sector_angle = 90;
+        s.refinements  = 3;
+        s.EA = s.GA = s.EI1 = s.EI2 = s.GJ = 1e-12; // a free edge
+        s.t_max        = 0.1;
+        s.initial_step = 0.001;
+        s.maximum_step = 0.01;
+        s.extra = stop_at_first_event +
+                  "subsection Plate growth\n set Kind = polar\n set Radial growth factor = 1\n"
+                  " set Circumferential growth factor = 1 + 0.01*r^2\nend\n"
+                  "subsection Arclength continuation\n set Event tolerance = 1e-10\nend\n";
+        auto       p = make(s);
+        const auto e = first_event(*p);
+        if (p->events().empty())
+          {
+            check("h/R = " + std::to_string(h) + ": a threshold", false);
+            return;
+          }
+        Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
+        const auto     c = p->classify_mode(mode);
+        std::cout << "  h/R = " << h << ", " << p->n_dofs() << " DoFs: t_cr = " << std::setprecision(10)
+                  << e.first << ", mode n = " << c.first << (c.second ? " out of plane" : " planar")
+                  << "\n";
+        check("h/R = " + std::to_string(h) + ": a saddle (n = 2, out of plane)",
+              c.first == 2 && c.second);
+        t_cr.push_back(e.first);
+      }
+    check_close("t_cr(h)/t_cr(h/2) = 4 (|K|_cr ~ (h/R)^2)", t_cr[0] / t_cr[1], 4, 5e-3);
+  }
+
   // A moderately thick plate (h/R = 0.05) on a fine quarter disc (h_K ~ 3 h):
   // with reduced integration of the shear, Q2 has a spurious transverse mode
   // that the membrane compression destabilized at t = 0.0917 instead of
@@ -943,6 +1040,8 @@ main(int argc, char **argv)
                              {"in_plane_only", in_plane_only},
                              {"stiffness_file", stiffness_file},
                              {"thick_plate", thick_plate},
-                             {"shear_convergence", shear_convergence}};
+                             {"shear_convergence", shear_convergence},
+                             {"gauss_curvature_saddle", gauss_curvature_saddle},
+                             {"natural_curvature_cap", natural_curvature_cap}};
   return cosmo_test::run_case("test_plate_rod", "", cases, argc, argv, 2, 2);
 }

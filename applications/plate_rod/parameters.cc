@@ -22,7 +22,13 @@ namespace cosmo
       prm.enter_subsection("Plate");
       prm.declare_entry("Radius", "1", Patterns::Double(0), "Radius R of the disc.");
       prm.declare_entry("Thickness", "0.01", Patterns::Double(0),
-                        "Thickness h of the plate (h < R).");
+                        "Thickness h of the plate (h < R); with a Thickness profile, its "
+                        "reference value h0.");
+      prm.declare_entry("Thickness profile", "1", Patterns::Anything(),
+                        "The thickness is h0 f(x, y, r): f a muparser expression of the "
+                        "position (x, y) and the radius r (and pi), positive at every "
+                        "quadrature point of the plate, e.g. '1 - r^2' for a lenticular disc. "
+                        "The closed forms assume f = 1.");
       prm.leave_subsection();
       materials::NaghdiPlateLaw::declare_parameters(prm);
       materials::PlateGrowth::declare_parameters(prm);
@@ -38,6 +44,12 @@ namespace cosmo
                         "the rim's stiffnesses (its diagonal; the section's X1 is the rim's "
                         "radial axis d1, X2 the plate normal d2); replaces 'Stiffnesses'. The "
                         "largest dropped off-diagonal coupling is logged.");
+      prm.declare_entry("Natural curvature", "0, 0, 0", Patterns::Anything(),
+                        "Change of the rim's stress-free curvature reached at t = 1 (ramped as "
+                        "t dk) from the rim's own growth through its section: dk1, dk2, dk3 in "
+                        "the rim's frame d1 = e_r, d2 = E3, d3 = -e_theta (dk1 bends the rim "
+                        "out of the plate's plane, dk2 changes its in-plane curvature, dk3 is "
+                        "a natural twist), per unit length.");
       prm.declare_entry("Growth factor", "1", Patterns::Double(0),
                         "Axial growth g of the rim at t = 1 (ramped as 1 + t (g - 1)); the "
                         "stress-free rim is a ring of radius g R.");
@@ -192,6 +204,12 @@ namespace cosmo
         throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
                              "must be positive and smaller than the radius " +
                                prm.get("Radius"));
+      thickness_profile_text = prm.get("Thickness profile");
+      thickness_profile =
+        thickness_profile_text == "1" ?
+          nullptr :
+          materials::parse_expression_of_position(thickness_profile_text, "Plate",
+                                                  "Thickness profile", 1);
       prm.leave_subsection();
       plate_law.parse_parameters(prm);
       plate_law.thickness = thickness;
@@ -216,6 +234,11 @@ namespace cosmo
             }
           stiffness_coupling = coupling;
         }
+      {
+        const auto k = io::get_double_list(prm, "Natural curvature", 3, "Rim rod");
+        for (unsigned int i = 0; i < 3; ++i)
+          rod_natural_curvature[i] = k[i];
+      }
       rod_growth = prm.get_double("Growth factor");
       if (!(rod_growth > 0))
         throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),

@@ -298,6 +298,7 @@ namespace cosmo
             dof_component[idx[i]] = fe->system_to_component_index(i).first;
         }
       make_reflection();
+      check_plate_fields();
     }
 
     void
@@ -330,7 +331,42 @@ namespace cosmo
     kinematics::PlateGrowthAtPoint
     PlateRodProblem::growth_at(const Point<2> &X, const double t) const
     {
-      return kinematics::PlateGrowthAtPoint::of(plate_growth.value(X, t));
+      auto g              = kinematics::PlateGrowthAtPoint::of(plate_growth.value(X, t));
+      g.natural_curvature = plate_growth.natural_curvature(X, t);
+      return g;
+    }
+
+    double
+    PlateRodProblem::thickness_at(const Point<2> &X) const
+    {
+      return thickness_profile ? thickness * thickness_profile->value(Point<3>(X[0], X[1], X.norm())) :
+                                 thickness;
+    }
+
+    void
+    PlateRodProblem::check_plate_fields() const
+    {
+      // Where the energy is evaluated: the Gauss points of every cell (the assumed shear's tying
+      // points lie between them).
+      const QGauss<2>       quadrature(degree + 1);
+      FEValues<2>           fev(*mapping, *fe, quadrature, update_quadrature_points);
+      std::vector<Point<2>> points;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          for (const auto &X : fev.get_quadrature_points())
+            {
+              points.push_back(X);
+              const double h = thickness_at(X);
+              if (!(h > 0) || !std::isfinite(h))
+                throw io::InputError("Plate", "Thickness profile", thickness_profile_text,
+                                     "the thickness must be positive and finite at the "
+                                     "quadrature points of the plate (it is " +
+                                       std::to_string(h) + " at x = " + std::to_string(X[0]) +
+                                       ", y = " + std::to_string(X[1]) + ")");
+            }
+        }
+      plate_growth.check_natural_curvature(points);
     }
 
     materials::QuadraticRodLaw
@@ -363,6 +399,8 @@ namespace cosmo
       const double    t            = load_parameter;
       const double    g_rod        = rod_growth_at(t);
       const auto      rod          = rod_law();
+      const std::array<double, 3> rim_natural_curvature = {
+        {t * rod_natural_curvature[0], t * rod_natural_curvature[1], t * rod_natural_curvature[2]}};
       const double    shear_scale  = model->shear_scale();
 
       // The transverse shear of one cell with assumed covariant strains (fev_full reinit on it):
@@ -422,13 +460,14 @@ namespace cosmo
               e[assumed_shear.component(k)] += tying_weights(q, k) * sc.tying_strain[k];
             const auto         gr   = growth_at(fev.quadrature_point(q), t);
             const Tensor<2, 2> Kinv = fev.inverse_jacobian(q);
+            const auto         law  = plate_law_at(fev.quadrature_point(q));
             double                W = 0;
             std::array<double, 2> dW;
             std::array<double, 4> ddW;
             materials::internal::differentiate<2>(
               e,
               [&](const auto &x) {
-                return kinematics::assumed_shear_energy(x, Kinv, gr, plate_law, shear_scale);
+                return kinematics::assumed_shear_energy(x, Kinv, gr, law, shear_scale);
               },
               jacobian, W, dW, ddW);
             energy += W * fev.JxW(q);
@@ -480,7 +519,8 @@ namespace cosmo
               membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
             const double cell_shear_scale =
               !membrane_bending && stabilized_shear ?
-                kinematics::stabilized_shear_scale(thickness, shear_scale, shear_stabilization,
+                kinematics::stabilized_shear_scale(thickness_at(cell->center()), shear_scale,
+                                                   shear_stabilization,
                                                    cell->diameter()) :
                 shear_scale;
             fev.reinit(cell);
@@ -490,8 +530,9 @@ namespace cosmo
                 for (unsigned int i = 0; i < dpc; ++i)
                   sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
                 assembly::gather_local_variables<n_plate>(sc.drives, sc.U_local, z);
-                const auto gr = growth_at(fev.quadrature_point(q), t);
-                double     W  = 0;
+                const auto gr  = growth_at(fev.quadrature_point(q), t);
+                const auto law = plate_law_at(fev.quadrature_point(q));
+                double     W   = 0;
                 // The plate energy depends on the gradients of u, on theta and (membrane and
                 // bending only) on its gradients: 12 resp. 8 of the 15 local variables are
                 // differentiated (the cost of nested AD grows like the square).
@@ -500,7 +541,7 @@ namespace cosmo
                   std::array<Number, n_plate> y;
                   for (unsigned int k = 0; k < n_plate; ++k)
                     y[k] = k >= 3 && k < 3 + x.size() ? x[k - 3] : Number(z[k]);
-                  return kinematics::plate_energy(y, gr, plate_law, *model, membrane_bending,
+                  return kinematics::plate_energy(y, gr, law, *model, membrane_bending,
                                                   cell_shear_scale);
                 };
                 if (membrane_bending)
@@ -533,7 +574,10 @@ namespace cosmo
                   double W              = 0;
                   materials::internal::differentiate<n_rim>(
                     zr,
-                    [&](const auto &x) { return kinematics::rim_rod_energy(x, frame, law, g_rod, *model); },
+                    [&](const auto &x) {
+                      return kinematics::rim_rod_energy(x, frame, law, g_rod, *model,
+                                                        rim_natural_curvature);
+                    },
                     jacobian, W, gr, Hr);
                   c.rod_energy += W * sc.fev_face.JxW(q);
                   assembly::add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian, c.r, c.K);

@@ -1,6 +1,7 @@
 #ifndef cosmo_applications_plate_rod_problem_h
 #define cosmo_applications_plate_rod_problem_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -218,6 +219,9 @@ namespace cosmo
     private:
       // Parameters
       double                         radius = 1, thickness = 0.01;
+      /// 'Plate / Thickness profile': h(X) = thickness f(x, y, r); null when f = 1.
+      std::shared_ptr<FunctionParser<3>> thickness_profile;
+      std::string                        thickness_profile_text = "1";
       std::string                    domain = "full disc";
       unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
       unsigned int                   refinements = 3, degree = 2;
@@ -238,6 +242,8 @@ namespace cosmo
       materials::PlateGrowth         plate_growth;
       std::array<double, 6>          rod_stiffness{{0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6}};
       double                         rod_growth = 1;
+      /// 'Rim rod / Natural curvature' (reached at t = 1).
+      std::array<double, 3>          rod_natural_curvature{{0., 0., 0.}};
       std::string                    stiffness_file;
       double                         stiffness_coupling = 0;
       double                         path_start = 0;
@@ -310,6 +316,21 @@ namespace cosmo
       assemble(const Vector<double> &U, Vector<double> *R, bool jacobian, double *energy = nullptr);
       kinematics::PlateGrowthAtPoint
       growth_at(const Point<2> &X, double t) const;
+      /// The plate's thickness at X ('Thickness' times 'Thickness profile').
+      double
+      thickness_at(const Point<2> &X) const;
+      /// The plate law with the thickness at X.
+      materials::NaghdiPlateLaw
+      plate_law_at(const Point<2> &X) const
+      {
+        materials::NaghdiPlateLaw law = plate_law;
+        law.thickness                 = thickness_at(X);
+        return law;
+      }
+      /// io::InputError unless the thickness profile and the natural curvature are finite at
+      /// every quadrature point of the mesh and the thickness positive there.
+      void
+      check_plate_fields() const;
       double
       rod_growth_at(double t) const
       {

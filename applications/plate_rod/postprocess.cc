@@ -259,7 +259,7 @@ namespace cosmo
                   z[13 + c] = grads[k][3 + c][1];
                 }
               const auto gr = growth_at(X, load_parameter);
-              const auto st = model->plate_strains(z, gr);
+              const auto st = kinematics::elastic_plate_strains(z, gr, *model);
               const Tensor<1, 3> d = model->director(z);
               const double r = X.norm(), ca = r > 0 ? X[0] / r : 1, sa = r > 0 ? X[1] / r : 0;
               // Polar components of a symmetric (11, 22, 12) tensor.
@@ -269,8 +269,9 @@ namespace cosmo
                 const double rt = -ca * sa * a[0] + ca * sa * a[1] + (ca * ca - sa * sa) * a[2];
                 return std::array<double, 3>{{rr, tt, rt}};
               };
-              const auto N  = polar(plate_law.membrane_force(st.membrane));
-              const auto M  = polar(plate_law.bending_moment(st.bending));
+              const auto law = plate_law_at(X);
+              const auto N   = polar(law.membrane_force(st.membrane));
+              const auto M   = polar(law.bending_moment(st.bending));
               const auto gf = plate_growth.factors(r, load_parameter);
               vtu.set_values(k, {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
                                  gf[1], N[0], N[1], N[2], M[0], M[1], M[2]});
@@ -334,6 +335,9 @@ namespace cosmo
                   for (unsigned int j = 0; j < 3; ++j)
                     for (unsigned int i = 0; i < 3; ++i)
                       vtu.set_value(col++, k, L[i][j]);
+                  // The stress-free curvature includes the rim's natural curvature (assembly).
+                  for (unsigned int j = 0; j < 3; ++j)
+                    law.reference_strains[3 + j] += load_parameter * rod_natural_curvature[j];
                   const auto resultants = law.resultants(e, g_rod);
                   for (unsigned int j = 0; j < 6; ++j)
                     vtu.set_value(col++, k, e[j]);
@@ -352,8 +356,15 @@ namespace cosmo
       io::JSON     closed = io::JSON::object();
       const double Delta1 = mismatch(1.);
       first_mismatch      = NAN;
-      if (!std::isfinite(Delta1) || Delta1 == 0)
-        return closed;
+      // The closed forms are for a flat plate of uniform thickness on a naturally circular rim.
+      const bool natural_curvature = plate_growth.has_natural_curvature() ||
+                                     rod_natural_curvature != std::array<double, 3>{{0., 0., 0.}};
+      if (!std::isfinite(Delta1) || Delta1 == 0 || thickness_profile || natural_curvature)
+        {
+          if (thickness_profile || natural_curvature)
+            text = "  no closed form: it assumes a uniform thickness and no natural curvature\n";
+          return closed;
+        }
       const auto p = closed_form_setting();
       // t at which the mismatch reaches Delta (linear ramps).
       const double a = plate_growth.factors(0, 1.)[0] - 1, b = rod_growth - 1;

@@ -78,6 +78,11 @@ namespace cosmo
             throw io::InputError("Rod strains", "Path", path_text,
                                  "waypoints of six numbers separated by ';' ('" + point +
                                    "' is not six numbers)");
+          for (const double x : v)
+            if (!std::isfinite(x))
+              throw io::InputError("Rod strains", "Path", path_text,
+                                   "waypoints of six finite numbers ('" + point +
+                                     "' has nan or inf)");
           waypoints.push_back({{v[0], v[1], v[2], v[3], v[4], v[5]}});
         }
       if (!waypoints.empty())

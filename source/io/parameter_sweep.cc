@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
 
@@ -86,6 +87,10 @@ namespace cosmo
       curve         = prm.get_bool("Critical curve");
       const std::string values_text = prm.get("Values");
       values = Utilities::string_to_double(Utilities::split_string_list(values_text, ','));
+      for (const double v : values)
+        if (!std::isfinite(v))
+          throw InputError("Parameter sweep", "Values", values_text,
+                           "finite numbers separated by ',' (not nan or inf)");
       if (values.empty())
         {
           const auto r = get_double_list(prm, "Range", 3, "Parameter sweep");

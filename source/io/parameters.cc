@@ -6,6 +6,7 @@
 #include <cosmo/io/parameters.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -130,6 +131,11 @@ namespace cosmo
       if (v.size() != n)
         throw InputError(section, entry, text, "expected " + std::to_string(n) +
                                                  " numbers separated by ','");
+      for (const double x : v)
+        if (!std::isfinite(x))
+          throw InputError(section, entry, text, "expected " + std::to_string(n) +
+                                                   " finite numbers separated by ',' (not nan or "
+                                                   "inf)");
       return v;
     }
 

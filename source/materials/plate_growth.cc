@@ -2,6 +2,8 @@
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -26,8 +28,64 @@ namespace cosmo
                         "g_r (or g, isotropic) as a muparser expression of the radius r.");
       prm.declare_entry("Circumferential growth factor", "1", Patterns::Anything(),
                         "g_t as a muparser expression of the radius r (polar growth).");
+      prm.declare_entry("Natural curvature", "0; 0; 0", Patterns::Anything(),
+                        "Natural (target) curvature of the plate reached at t = 1 (ramped as "
+                        "t k0): three muparser expressions k11; k22; k12 of x, y and r, "
+                        "separated by ';', in the plate's axes, per unit grown length. The "
+                        "bending strain is measured from it, in every model: a plate whose "
+                        "growth (or temperature) varies through the thickness, e.g. "
+                        "'c; c; 0' for the isotropic curvature c of a heated bilayer disc.");
       Laws::declare_parameters(prm);
       prm.leave_subsection();
+    }
+
+    std::shared_ptr<FunctionParser<3>>
+    parse_expression_of_position(const std::string &text,
+                                 const std::string &section,
+                                 const std::string &entry,
+                                 const unsigned int n_components)
+    {
+      auto f = std::make_shared<FunctionParser<3>>(n_components);
+      try
+        {
+          f->initialize("x,y,r", text, {{"pi", M_PI}});
+          Vector<double> v(n_components);
+          f->vector_value(Point<3>(0.1, 0.2, 0.3), v);
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          throw io::InputError(section, entry, text,
+                               std::to_string(n_components) +
+                                 " muparser expression(s) of x, y, r (and pi), separated by "
+                                 "';'; the parser said: " +
+                                 info.str());
+        }
+      return f;
+    }
+
+    std::array<double, 3>
+    PlateGrowth::natural_curvature(const Point<2> &X, const double t) const
+    {
+      if (!curvature)
+        return {{0., 0., 0.}};
+      Vector<double> v(3);
+      curvature->vector_value(Point<3>(X[0], X[1], X.norm()), v);
+      return {{t * v[0], t * v[1], t * v[2]}};
+    }
+
+    void
+    PlateGrowth::check_natural_curvature(const std::vector<Point<2>> &points) const
+    {
+      for (const auto &X : points)
+        {
+          const auto k = natural_curvature(X, 1.);
+          if (!std::isfinite(k[0]) || !std::isfinite(k[1]) || !std::isfinite(k[2]))
+            throw io::InputError("Plate growth", "Natural curvature", curvature_text,
+                                 "must be finite on the plate (not at x = " +
+                                   std::to_string(X[0]) + ", y = " + std::to_string(X[1]) + ")");
+        }
     }
 
     std::shared_ptr<FunctionParser<1>>
@@ -59,6 +117,21 @@ namespace cosmo
       law                  = std::move(l);
       radial_text          = prm.get("Radial growth factor");
       circumferential_text = prm.get("Circumferential growth factor");
+      curvature_text       = prm.get("Natural curvature");
+      curvature            = parse_expression_of_position(curvature_text, "Plate growth",
+                                                 "Natural curvature", 3);
+      {
+        // The default (all three zero) costs nothing per point.
+        Vector<double> v(3);
+        bool           zero = true;
+        for (const Point<3> p : {Point<3>(0.1, 0.2, 0.3), Point<3>(-0.7, 0.3, 0.5), Point<3>()})
+          {
+            curvature->vector_value(p, v);
+            zero = zero && v.l2_norm() == 0;
+          }
+        if (zero && curvature_text.find_first_not_of("0; .") == std::string::npos)
+          curvature.reset();
+      }
       prm.leave_subsection();
     }
 

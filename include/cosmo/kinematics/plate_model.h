@@ -137,6 +137,23 @@ namespace cosmo
 #undef COSMO_OVERRIDE
 
     /**
+     * The model's plate strains with the natural curvature taken off the
+     * bending strain (the elastic measures the law sees; growth through the
+     * thickness, doc/theory-plate-rod.md section 6.3).
+     */
+    template <typename Number>
+    materials::PlateStrains<Number>
+    elastic_plate_strains(const std::array<Number, plate_local_variables> &z,
+                          const PlateGrowthAtPoint &                      g,
+                          const PlateModel &                              model)
+    {
+      auto s = model.plate_strains(z, g);
+      for (unsigned int i = 0; i < 3; ++i)
+        s.bending[i] -= g.natural_curvature[i];
+      return s;
+    }
+
+    /**
      * Plate energy per reference area: det G times the plate law's membrane
      * and bending part (membrane_bending) or its transverse shear part times
      * shear_scale (the model's shear_scale(), possibly reduced further by the
@@ -151,7 +168,7 @@ namespace cosmo
                  const bool                                      membrane_bending,
                  const double                                    shear_scale)
     {
-      const auto s = model.plate_strains(z, g);
+      const auto s = elastic_plate_strains(z, g, model);
       return g.det_G * (membrane_bending ? law.membrane_bending_energy(s) :
                                            Number(shear_scale * law.shear_energy(s)));
     }
@@ -207,18 +224,30 @@ namespace cosmo
       return g.det_G * shear_scale * law.shear_energy(s);
     }
 
-    /// Rim rod energy per reference length: the quadratic law with axial growth.
+    /**
+     * Rim rod energy per reference length: the quadratic law with axial
+     * growth. The law's reference curvature is the discrete ring's
+     * (rim_reference_strains); natural_curvature (the rim's own growth
+     * through its section, ramped by the caller) is added to the stress-free
+     * curvature only, not to the ring's geometry.
+     */
     template <typename Number>
     Number
     rim_rod_energy(const std::array<Number, rim_local_variables> &z,
                    const RimFrame &                              f,
                    const materials::QuadraticRodLaw &            law,
                    const double                                  growth,
-                   const PlateModel &                            model)
+                   const PlateModel &                            model,
+                   const std::array<double, 3> &natural_curvature = {{0., 0., 0.}})
     {
       const std::array<double, 3> kappa0 = {
         {law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}};
-      return law.energy(model.rim_strains(z, f, kappa0), growth);
+      if (natural_curvature == std::array<double, 3>{{0., 0., 0.}})
+        return law.energy(model.rim_strains(z, f, kappa0), growth);
+      auto stress_free = law;
+      for (unsigned int k = 0; k < 3; ++k)
+        stress_free.reference_strains[3 + k] += natural_curvature[k];
+      return stress_free.energy(model.rim_strains(z, f, kappa0), growth);
     }
   } // namespace kinematics
 

@@ -57,11 +57,13 @@ namespace cosmo
     /// (8, 9), alpha (10), dalpha/dS (11).
     constexpr int rim_local_variables = 12;
 
-    /// In-plane growth at a point: G^-1 (2x2) and det G.
+    /// In-plane growth at a point: G^-1 (2x2) and det G; and the natural curvature
+    /// (k11, k22, k12) from which the bending strain is measured (growth through the thickness).
     struct PlateGrowthAtPoint
     {
       std::array<std::array<double, 2>, 2> G_inv{{{{1, 0}}, {{0, 1}}}};
       double                               det_G = 1;
+      std::array<double, 3>                natural_curvature{{0, 0, 0}};
 
       /// From the growth tensor G (2x2, in-plane, G[i][j]).
       static PlateGrowthAtPoint

@@ -8,6 +8,7 @@
 #include <cosmo/base/plugins.h>
 
 #include <array>
+#include <vector>
 #include <memory>
 #include <string>
 
@@ -49,6 +50,18 @@ namespace cosmo
     std::shared_ptr<FunctionParser<1>>
     parse_expression_of_r(const std::string &text, const std::string &entry);
 
+    /**
+     * n_components muparser expressions (separated by ';') of the position
+     * x, y and the radius r (and pi), given in entry `entry` of section
+     * `section`: evaluate at Point<3>(x, y, r). An io::InputError names
+     * both if they do not parse.
+     */
+    std::shared_ptr<FunctionParser<3>>
+    parse_expression_of_position(const std::string &text,
+                                 const std::string &section,
+                                 const std::string &entry,
+                                 unsigned int       n_components);
+
     /// The plate's growth G = g_r e_r (x) e_r + g_t e_t (x) e_t from the law 'Kind' names.
     class PlateGrowth
     {
@@ -74,9 +87,28 @@ namespace cosmo
       void
       check_positive(double radius) const;
 
+      /**
+       * The natural (target) curvature of the grown plate at X for load
+       * parameter t, (k11, k22, k12) in the plate's axes: t times 'Natural
+       * curvature', the bending strain at which the plate is free of
+       * moments (growth or heating that differs through the thickness).
+       */
+      std::array<double, 3>
+      natural_curvature(const Point<2> &X, double t) const;
+      /// Whether 'Natural curvature' is not the default 0; 0; 0.
+      bool
+      has_natural_curvature() const
+      {
+        return curvature != nullptr;
+      }
+      /// io::InputError unless 'Natural curvature' is finite at the given points.
+      void
+      check_natural_curvature(const std::vector<Point<2>> &points) const;
+
     private:
       std::shared_ptr<const PlateGrowthLaw> law;
-      std::string                           radial_text, circumferential_text;
+      std::string                           radial_text, circumferential_text, curvature_text;
+      std::shared_ptr<FunctionParser<3>>    curvature; ///< null: no natural curvature
     };
   } // namespace materials
 } // namespace cosmo
