@@ -30,6 +30,7 @@ def read_study(d):
         for k, v in r.items():
             col.setdefault(k.split(" [")[0], []).append(plot_steps.to_float(v))
     model = "?"
+    text = ""
     try:
         text = open(os.path.join(d, "parameters.prm")).read()
         m = re.search(r"^\s*set Model\s*=\s*([^#\n]+)", text, re.M)
@@ -40,7 +41,27 @@ def read_study(d):
     except OSError:
         pass
     axis = next((k for k in rows[0] if k.startswith("value")), "value") if rows else "value"
-    return col, model, axis
+    rho_scale = rim_bending_scale(text)
+    return col, model, axis, rho_scale
+
+
+def rim_bending_scale(text):
+    """R D when the study sweeps the rim's EI1 (the 4th of 'Rim rod / Stiffnesses'),
+    so that the axis can be rho = EI1/(R D); None otherwise."""
+    def entry(name, default):
+        m = re.search(r"^\s*set %s\s*=\s*([^#\n]+)" % re.escape(name), text, re.M)
+        return m.group(1).strip() if m else default
+    if entry("Entry", "") != "Rim rod/Stiffnesses":
+        return None
+    template = [t.strip() for t in entry("Template", "").split(",")]
+    if len(template) != 6 or template[3] != "{}":
+        return None
+    try:
+        R, h = float(entry("Radius", "1")), float(entry("Thickness", "0.01"))
+        E, v = float(entry("Young's modulus", "1")), float(entry("Poisson's ratio", "0.3"))
+    except ValueError:
+        return None
+    return R * E * h ** 3 / (12 * (1 - v * v))
 
 
 def main(argv):
@@ -57,9 +78,15 @@ def main(argv):
     axis_label = "value"
     closed_done = False
     markers = ["o", "s", "^", "v", "D"]
+    rho_axis = False
     for k, d in enumerate(dirs):
-        col, model, axis_label = read_study(d)
+        col, model, axis_label, rho_scale = read_study(d)
         x, y, c = col["value"], col["mismatch_critical"], col["closed_form_mismatch"]
+        if rho_scale:
+            # The dimensionless rim bending stiffness rho = EI1/(R D) (simply supported at 0,
+            # clamped as rho -> infinity).
+            x = [v / rho_scale for v in x]
+            rho_axis = True
         if not closed_done and any(math.isfinite(v) for v in c):
             axes[0].plot(x, c, "k-", lw=1, label="closed form (Kirchhoff)")
             closed_done = True
@@ -70,12 +97,15 @@ def main(argv):
         values = [v for v in read_study(dirs[0])[0]["value"] if v > 0]
         if values and max(values) / min(values) > 10:
             ax.set_xscale("log")
-        inside = axis_label.split(" [", 1)[1].rstrip("]") if " [" in axis_label else axis_label
-        ax.set_xlabel("swept value {} in: " + inside.replace(";", ","))
+        if rho_axis:
+            ax.set_xlabel(r"rim bending stiffness $\rho = EI_1/(R D)$")
+        else:
+            inside = axis_label.split(" [", 1)[1].rstrip("]") if " [" in axis_label else axis_label
+            ax.set_xlabel("swept value {} in: " + inside.replace(";", ","))
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
-    axes[0].set_ylabel("critical mismatch Delta = g_plate / g_rim - 1")
-    axes[1].set_ylabel("numerical / closed form - 1")
+    axes[0].set_ylabel(r"critical mismatch $\Delta = g_{plate}/g_{rim} - 1$")
+    axes[1].set_ylabel(r"$\Delta_{cr}$ / closed form $- 1$")
     fig.suptitle("critical growth of the flat state", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.94))
     fig.savefig(out, dpi=100)
