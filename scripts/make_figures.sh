@@ -13,8 +13,8 @@
 #   doc/figures/strip_shearing_branches.png
 #                                   output/strip_shearing/branches.png
 #   doc/figures/strip_ribbons.png   output/strip_ribbon_comparison/ribbons.png
-#   doc/figures/plate_rod_{dome,lobes}_bifurcation.png
-#                                   output/plate_rod/{dome,lobes}/bifurcation.png
+#   doc/figures/plate_rod_{dome,lobes,heated_lenticular_disc}_bifurcation.png
+#                                   output/plate_rod/{dome,lobes,heated_lenticular_disc}/bifurcation.png
 #   doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
 #                                   the three models' study (plot_plate_rod_study.py)
 #   doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
@@ -41,6 +41,7 @@ done
 [[ -f "output/$SECTION/solution.pvd" ]] || { log "missing output/$SECTION/solution.pvd" >&2; missing=1; }
 for f in output/strip_shearing/branches.png output/strip_ribbon_comparison/ribbons.png \
          output/plate_rod/dome/bifurcation.png output/plate_rod/lobes/bifurcation.png \
+         output/plate_rod/heated_lenticular_disc/bifurcation.png \
          output/plate_rod/studies/critical_growth_vs_rim_stiffness.png; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
@@ -58,7 +59,7 @@ for n in "${STEPS[@]}"; do
 done
 cp output/strip_shearing/branches.png doc/figures/strip_shearing_branches.png
 cp output/strip_ribbon_comparison/ribbons.png doc/figures/strip_ribbons.png
-for n in dome lobes; do
+for n in dome lobes heated_lenticular_disc; do
   cp "output/plate_rod/$n/bifurcation.png" "doc/figures/plate_rod_${n}_bifurcation.png"
 done
 cp output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \

@@ -895,10 +895,11 @@ namespace
 
   // Convergence of the assumed-strain shear (doc/theory-plate-rod.md
   // section 7) at h/R = 0.04, 0.01 and 0.001: the dome threshold (quarter
-  // disc, rho = 10.9, rim EA = GA = 0.1, Cosserat) and, at h/R = 0.01, the
-  // saddle n = 2 threshold and the dome height on the bifurcated branch at
-  // 1.5 times the threshold, over refinements 1, 2, 3 (366, 1302, 4902
-  // DoFs). Each refinement must divide the successive difference by 4 or
+  // disc, rho = 10.9, rim EA = GA = 0.1, Cosserat), the dome height on the
+  // bifurcated branch at 1.5 times the threshold (h/R = 0.04 and 0.01; at
+  // 0.001 the switched branch does not reach t = 0.75 with these steps: not
+  // checked) and, at h/R = 0.01, the saddle n = 2 threshold, over
+  // refinements 1, 2, 3 (366, 1302, 4902 DoFs). Each refinement must divide the successive difference by 4 or
   // more (second order; measured 16 to 22 for the thresholds at h/R = 0.04
   // and 0.01, about 10 at 0.001 where the element on the coarsest cells is
   // pre-asymptotic), beyond the thresholds' resolutions and the
@@ -917,8 +918,10 @@ namespace
             d12 < d01 / 4 - 2 * r);
     };
     for (const double h : {0.04, 0.01, 0.001})
-      for (const std::string &setting : h == 0.01 ? std::vector<std::string>{"dome", "saddle", "branch"} :
-                                                   std::vector<std::string>{"dome"})
+      for (const std::string &setting :
+           h == 0.01  ? std::vector<std::string>{"dome", "saddle", "branch"} :
+           h == 0.04  ? std::vector<std::string>{"dome", "branch"} :
+                        std::vector<std::string>{"dome"})
         {
           std::vector<double> values, resolutions;
           for (const unsigned int k : {1u, 2u, 3u})
