@@ -31,8 +31,7 @@ namespace cosmo
     } // namespace
 
     AssumedShear::AssumedShear(const unsigned int degree)
-      : degree(degree)
-      , n_per_component(degree * (degree + 1))
+      : n_per_component(degree * (degree + 1))
       , low(gauss_points(degree))
       , high(gauss_points(degree + 1))
     {

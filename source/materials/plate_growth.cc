@@ -120,18 +120,10 @@ namespace cosmo
       curvature_text       = prm.get("Natural curvature");
       curvature            = parse_expression_of_position(curvature_text, "Plate growth",
                                                  "Natural curvature", 3);
-      {
-        // The default (all three zero) costs nothing per point.
-        Vector<double> v(3);
-        bool           zero = true;
-        for (const Point<3> p : {Point<3>(0.1, 0.2, 0.3), Point<3>(-0.7, 0.3, 0.5), Point<3>()})
-          {
-            curvature->vector_value(p, v);
-            zero = zero && v.l2_norm() == 0;
-          }
-        if (zero && curvature_text.find_first_not_of("0; .") == std::string::npos)
-          curvature.reset();
-      }
+      // Only zeros, separators and blanks (the default "0; 0; 0"): no natural curvature, and
+      // no parser evaluation per point.
+      if (curvature_text.find_first_not_of("0; .") == std::string::npos)
+        curvature.reset();
       prm.leave_subsection();
     }
 

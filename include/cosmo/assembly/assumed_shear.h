@@ -67,7 +67,7 @@ namespace cosmo
       interpolation(const Quadrature<2> &q) const;
 
     private:
-      unsigned int          degree, n_per_component;
+      unsigned int          n_per_component;
       std::vector<double>   low, high; ///< the p and p + 1 Gauss points on [0, 1]
       Quadrature<2>         points;
     };
