@@ -17,6 +17,8 @@
 #                                   output/plate_rod/{dome,lobes,heated_lenticular_disc}/bifurcation.png
 #   doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
 #                                   the three models' study (plot_plate_rod_study.py)
+#   doc/figures/plate_rod_critical_growth_vs_thickness.png
+#                                   Cosserat and Kirchhoff against h/R
 #   doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
 #                                   the critical curve against the independent study
 # Exit status 1 if an expected input is missing (run run_examples.sh).
@@ -42,7 +44,8 @@ done
 for f in output/strip_shearing/branches.png output/strip_ribbon_comparison/ribbons.png \
          output/plate_rod/dome/bifurcation.png output/plate_rod/lobes/bifurcation.png \
          output/plate_rod/heated_lenticular_disc/bifurcation.png \
-         output/plate_rod/studies/critical_growth_vs_rim_stiffness.png; do
+         output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
+         output/plate_rod/studies/critical_growth_vs_thickness.png; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -62,8 +65,9 @@ cp output/strip_ribbon_comparison/ribbons.png doc/figures/strip_ribbons.png
 for n in dome lobes heated_lenticular_disc; do
   cp "output/plate_rod/$n/bifurcation.png" "doc/figures/plate_rod_${n}_bifurcation.png"
 done
-cp output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
-   doc/figures/plate_rod_critical_growth_vs_rim_stiffness.png
+for s in rim_stiffness thickness; do
+  cp "output/plate_rod/studies/critical_growth_vs_$s.png" "doc/figures/plate_rod_critical_growth_vs_$s.png"
+done
 curve=output/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat/critical_curve.png
 if [[ -f "$curve" ]]; then
   cp "$curve" doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png

@@ -42,7 +42,19 @@ def read_study(d):
         pass
     axis = next((k for k in rows[0] if k.startswith("value")), "value") if rows else "value"
     rho_scale = rim_bending_scale(text)
-    return col, model, axis, rho_scale
+    return col, model, axis, rho_scale, thickness_scale(text)
+
+
+def thickness_scale(text):
+    """R when the study sweeps 'Plate / Thickness' (the axis is then h/R); None otherwise."""
+    m = re.search(r"^\s*set Entry\s*=\s*([^#\n]+)", text, re.M)
+    if not m or m.group(1).strip() != "Plate/Thickness":
+        return None
+    m = re.search(r"^\s*set Radius\s*=\s*([^#\n]+)", text, re.M)
+    try:
+        return float(m.group(1)) if m else 1.0
+    except ValueError:
+        return None
 
 
 def rim_bending_scale(text):
@@ -78,15 +90,18 @@ def main(argv):
     axis_label = "value"
     closed_done = False
     markers = ["o", "s", "^", "v", "D"]
-    rho_axis = False
+    rho_axis = h_axis = False
     for k, d in enumerate(dirs):
-        col, model, axis_label, rho_scale = read_study(d)
+        col, model, axis_label, rho_scale, radius = read_study(d)
         x, y, c = col["value"], col["mismatch_critical"], col["closed_form_mismatch"]
         if rho_scale:
             # The dimensionless rim bending stiffness rho = EI1/(R D) (simply supported at 0,
             # clamped as rho -> infinity).
             x = [v / rho_scale for v in x]
             rho_axis = True
+        elif radius:
+            x = [v / radius for v in x]
+            h_axis = True
         if not closed_done and any(math.isfinite(v) for v in c):
             axes[0].plot(x, c, "k-", lw=1, label="closed form (Kirchhoff)")
             closed_done = True
@@ -99,11 +114,17 @@ def main(argv):
             ax.set_xscale("log")
         if rho_axis:
             ax.set_xlabel(r"rim bending stiffness $\rho = EI_1/(R D)$")
+        elif h_axis:
+            ax.set_xlabel(r"plate thickness $h/R$")
         else:
             inside = axis_label.split(" [", 1)[1].rstrip("]") if " [" in axis_label else axis_label
             ax.set_xlabel("swept value {} in: " + inside.replace(";", ","))
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
+    # Thresholds over decades (they grow as (h/R)^2 against the thickness): log scale.
+    ys = [v for line in axes[0].get_lines() for v in line.get_ydata() if math.isfinite(v)]
+    if ys and min(ys) > 0 and max(ys) / min(ys) > 100:
+        axes[0].set_yscale("log")
     axes[0].set_ylabel(r"critical mismatch $\Delta = g_{plate}/g_{rim} - 1$")
     axes[1].set_ylabel(r"$\Delta_{cr}$ / closed form $- 1$")
     fig.suptitle("critical growth of the flat state", fontsize=10)

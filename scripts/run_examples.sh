@@ -77,11 +77,12 @@ if ((${#plates[@]})); then
     [[ -f "$d/steps.csv" ]] || continue
     python3 scripts/plot_plate_rod.py "$d" || { log "plotting $d FAILED" >&2; failed=1; }
   done
-  studies_pr=(output/plate_rod/studies/critical_growth_vs_rim_stiffness_*/)
-  if ((${#studies_pr[@]})); then
-    python3 scripts/plot_plate_rod_study.py output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
-      "${studies_pr[@]}" || { log "plotting the plate_rod study FAILED" >&2; failed=1; }
-  fi
+  for s in rim_stiffness thickness; do
+    studies_pr=(output/plate_rod/studies/critical_growth_vs_${s}_*/)
+    [[ -d "${studies_pr[0]}" ]] || continue
+    python3 scripts/plot_plate_rod_study.py "output/plate_rod/studies/critical_growth_vs_$s.png" \
+      "${studies_pr[@]}" || { log "plotting the plate_rod study vs $s FAILED" >&2; failed=1; }
+  done
   curve=output/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat
   if [[ -f "$curve/critical_curve.csv" ]]; then
     python3 scripts/plot_plate_rod_study.py "$curve/critical_curve.png" "$curve" \

@@ -3,16 +3,20 @@
 
 usage: model_comparison.py COSSERAT_DIR KIRCHHOFF_DIR
 
-Both directories are the outputs of the studies
-parameter_files/plate_rod/studies/critical_growth_vs_rim_stiffness_{cosserat,kirchhoff}.prm
-(sweep.csv, parameters.prm). At every rim stiffness the Cosserat threshold
+Both directories are the outputs of a pair of studies that differ only in the
+model, e.g. parameter_files/plate_rod/studies/
+critical_growth_vs_{rim_stiffness,thickness}_{cosserat,kirchhoff}.prm
+(sweep.csv, parameters.prm). At every swept value the Cosserat threshold
 must lie below the Kirchhoff one by Mindlin's shift: with the Kirchhoff
 penalty p, Delta_C/Delta_K - 1 = -(1 - 1/p) r/(1 + r), r = P/(ks G h), P the
 critical hoop compression of the plate (section 1-2 of
 doc/theory-plate-rod.md: P = Delta k EA/(R (EA + k)), k = R E h/(1 - v)).
-Tolerance: 2 % of the shift (the relation is first order in r <= 5e-4 and
-the finite-strain offset acts on both models alike) plus the two thresholds'
-round-off resolutions relative to t, where those are below half the shift;
+Tolerance: 2 % + 2r of the shift (the relation is the first order in r: the
+next term, of relative size O(r) with a coefficient of order one (taken <= 2), is not
+zero for an elastically restrained edge; r <= 5e-4 over the rim-stiffness
+study, up to 0.04 at h/R = 0.1; the finite-strain offset acts on both
+models alike) plus the two thresholds' round-off resolutions relative to t,
+where those are below half the shift;
 where not, only the order (Cosserat below) is checked. Exit 1 on failure.
 """
 import csv
@@ -35,15 +39,19 @@ def read(d):
 
 cos, kir = read(sys.argv[1]), read(sys.argv[2])
 e = kir["entry"]
-R, h = float(e("Radius", "1")), float(e("Thickness", "0.01"))
+R = float(e("Radius", "1"))
 E, v = float(e("Young's modulus", "1")), float(e("Poisson's ratio", "0.3"))
 p = float(e("Shear penalty factor", "100"))
-EA = float(e("Template", "").split(",")[2])
-k = R * E * h / (1 - v)
-ksGh = 5.0 / 6 * E / (2 * (1 + v)) * h
+# The swept entry: the rim's stiffnesses (through a template) or the thickness.
+swept = e("Entry", "")
+rim = e("Template", "") if swept == "Rim rod/Stiffnesses" else e("Stiffnesses", "")
+EA = float(rim.split(",")[2])
 failed = 0
 for i, value in enumerate(kir["value"]):
     assert cos["value"][i] == value, "the studies sweep different values"
+    h = value if swept == "Plate/Thickness" else float(e("Thickness", "0.01"))
+    k = R * E * h / (1 - v)
+    ksGh = 5.0 / 6 * E / (2 * (1 + v)) * h
     P = kir["D"][i] * k * EA / (R * (EA + k))
     r = P / ksGh
     mindlin = -(1 - 1 / p) * r / (1 + r)
@@ -51,11 +59,11 @@ for i, value in enumerate(kir["value"]):
     res = cos["res"][i] / cos["t"][i] + kir["res"][i] / kir["t"][i]
     ok = diff < 0
     if res < 0.5 * abs(mindlin):
-        ok = ok and abs(diff - mindlin) <= 0.02 * abs(mindlin) + res
-        how = "within 2 %% + resolution %.2g" % res
+        ok = ok and abs(diff - mindlin) <= (0.02 + 2 * r) * abs(mindlin) + res
+        how = "within 2 %% + 2r = %.2g %% + resolution %.2g" % (100 * (0.02 + 2 * r), res)
     else:
         how = "order only (resolution %.2g above half the shift)" % res
-    print("%s  EI1 = %g: Cosserat/Kirchhoff - 1 = %.4e, Mindlin %.4e (%.2f %%), %s"
-          % ("ok  " if ok else "FAIL", value, diff, mindlin, 100 * abs(diff / mindlin - 1), how))
+    print("%s  %s = %g: Cosserat/Kirchhoff - 1 = %.4e, Mindlin %.4e (%.2f %%), %s"
+          % ("ok  " if ok else "FAIL", swept, value, diff, mindlin, 100 * abs(diff / mindlin - 1), how))
     failed += not ok
 sys.exit(1 if failed else 0)
