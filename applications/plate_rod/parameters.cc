@@ -112,6 +112,14 @@ namespace cosmo
       io::ParameterSweep::declare_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
+      // The growth path's own range, t from 0 (no growth) to 1 (the factors
+      // given), instead of the driver's unbounded default: a parameter file
+      // that sets nothing runs a short, bounded job.
+      prm.enter_subsection("Arclength continuation");
+      prm.declare_entry("Parameter range", "0, 1", Patterns::List(Patterns::Double(), 2, 2),
+                        "A branch ends when its load parameter t leaves [min, max] (t = 0: no "
+                        "growth, t = 1: the growth factors given).");
+      prm.leave_subsection();
       prm.enter_subsection("Output");
       prm.declare_entry("Output directory", "output/plate_rod", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, plate.pvd, "

@@ -9,6 +9,7 @@
 
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/kinematics/section.h>
 
@@ -147,13 +148,15 @@ namespace cosmo
             {
               const Tensor<2, 3> Fg =
                 material.growth.value(fev.quadrature_point(q), load_parameter);
-              if (!(determinant(Fg) > 0))
+              const double J = determinant(Fg);
+              if (!(J > 0) || !std::isfinite(J))
                 return refuse(
                   material.section, "Growth factor", material.growth.factor_expression(),
-                  "det Fg = " + std::to_string(determinant(Fg)) + " <= 0 at (" +
+                  "det Fg = " + std::to_string(J) + " at (" +
                     std::to_string(fev.quadrature_point(q)[0]) + ", " +
                     std::to_string(fev.quadrature_point(q)[1]) +
-                    ") of the section: growth must keep det Fg > 0");
+                    ") of the section (a quadrature point): growth must be finite and keep "
+                    "det Fg > 0 on the whole section");
               growth_at_qp[cell->active_cell_index() * quadrature.size() + q] = Fg;
             }
         }
@@ -171,12 +174,12 @@ namespace cosmo
             {
               const Point<2> &X = ffv.quadrature_point(q);
               const auto      g = layer.growth(X, load_parameter);
-              if (!(g[0] > 0 && g[1] > 0))
+              if (!(g[0] > 0 && g[1] > 0) || !std::isfinite(g[0]) || !std::isfinite(g[1]))
                 return refuse(
                   layer.section, "Growth factor", layer.growth_text,
                   "surface growth (gT, g3) = (" + std::to_string(g[0]) + ", " +
                     std::to_string(g[1]) + ") at boundary point (" + std::to_string(X[0]) +
-                    ", " + std::to_string(X[1]) + "): both factors must stay positive");
+                    ", " + std::to_string(X[1]) + "): both factors must stay positive and finite");
               surface_growth_at_qp[f * nqf + q] = g;
             }
         }
@@ -799,6 +802,7 @@ namespace cosmo
       std::vector<std::string> rejected;
       for (unsigned int k = 0; k < sweep.size(); ++k)
         {
+          io::check_interrupt(); // between points: sweep.csv holds every point done so far
           sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(base, k));
           io::RunOptions point_options = options;
           point_options.quiet          = true; // the point's log.txt has the details

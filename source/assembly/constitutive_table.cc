@@ -4,6 +4,7 @@
 #include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/solvers/newton.h>
 
@@ -97,6 +98,12 @@ namespace cosmo
         for (unsigned int jj = 0; jj < n2; ++jj)
           {
             const unsigned int    j = (i % 2 == 0) ? jj : n2 - 1 - jj; // serpentine
+            if (io::pending_signal() != 0)
+              {
+                // Interrupted: the rows so far as a complete (shorter) table.
+                table.write(directory + "/table.csv");
+                io::check_interrupt();
+              }
             std::array<double, 6> e = base;
             e[first]                = value(from1, to1, n1, i);
             e[second]               = value(from2, to2, n2, j);
@@ -174,6 +181,7 @@ namespace cosmo
         file.set_attribute("strain_2_name", kinematics::strain_names[second]);
       }
       std::filesystem::rename(tmp, h5);
+      io::record_output_file(h5);
       std::ostringstream m;
       m << "constitutive table: " << n1 << " x " << n2 << " points of ("
         << kinematics::strain_names[first] << ", " << kinematics::strain_names[second] << "), "

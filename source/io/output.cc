@@ -1,4 +1,7 @@
 #include <cosmo/io/output.h>
+#include <cosmo/io/run_directory.h>
+
+#include <unistd.h>
 
 #include <cctype>
 #include <cmath>
@@ -18,20 +21,33 @@ namespace cosmo
     write_file_atomically(const std::string &                        path,
                           const std::function<void(std::ostream &)> &writer)
     {
-      const std::string tmp = path + ".tmp";
-      {
-        std::ofstream out(tmp);
-        if (!out)
-          throw std::runtime_error("cannot write the file '" + tmp + "'");
-        writer(out);
-        out.flush();
-        if (!out)
-          throw std::runtime_error("writing '" + tmp + "' failed (disk full?)");
-      }
+      // The process id in the temporary name: two processes writing the
+      // same file (two runs into one directory, refused by the lock, or a
+      // file outside any run directory) cannot take each other's.
+      const std::string tmp = path + ".tmp." + std::to_string(::getpid());
       std::error_code ec;
+      try
+        {
+          std::ofstream out(tmp);
+          if (!out)
+            throw std::runtime_error("cannot write the file '" + tmp + "'");
+          writer(out);
+          out.flush();
+          if (!out)
+            throw std::runtime_error("writing '" + tmp + "' failed (disk full?)");
+        }
+      catch (...)
+        {
+          std::filesystem::remove(tmp, ec); // no partial file left behind
+          throw;
+        }
       std::filesystem::rename(tmp, path, ec);
       if (ec)
-        throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
+        {
+          std::filesystem::remove(tmp, ec);
+          throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
+        }
+      record_output_file(path);
     }
 
     void
@@ -488,6 +504,7 @@ namespace cosmo
     {
       if (!file)
         throw std::runtime_error("cannot write the log file '" + path + "'");
+      record_output_file(path);
     }
 
     void

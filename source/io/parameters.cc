@@ -4,6 +4,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_directory.h>
 
 #include <filesystem>
 #include <cmath>
@@ -104,7 +105,11 @@ namespace cosmo
                        const bool              quiet,
                        const std::string &     log_name)
     {
+      std::error_code ec;
+      const bool      existed = std::filesystem::exists(directory, ec);
       create_directory(directory);
+      // Locked for this run, the earlier run's files moved into previous/.
+      claim_run_directory(directory, !existed);
       write_file_atomically(directory + "/parameters.prm", [&](std::ostream &o) {
         prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
       });
@@ -167,6 +172,8 @@ namespace cosmo
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
       // Errors below are reported by us, not by deal.II's abort-on-exception.
       deal_II_exceptions::disable_abort_on_exception();
+      // SIGINT/SIGTERM end the run between steps, with its files complete.
+      install_signal_handlers();
 
       std::vector<std::string> args(argv + 1, argv + argc);
       RunOptions               options;
@@ -238,9 +245,19 @@ namespace cosmo
         }
       catch (InputError &e)
         {
+          // An output directory this run only began leaves as it was.
+          roll_back_unused_run_directories();
           std::cerr << "\n" << info.name << ": bad input in '" << options.parameter_file
                     << "' " << e.what() << "\n";
           return 1;
+        }
+      catch (Interrupted &e)
+        {
+          std::cerr << "\n"
+                    << info.name << ": " << e.what()
+                    << "; the files written so far are complete and summary.json (if the run "
+                       "writes one) says \"interrupted\".\n";
+          return e.exit_status();
         }
       catch (RunFailure &e)
         {

@@ -1,5 +1,8 @@
 #include <cosmo/config.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/io/run_record.h>
+
+#include <unistd.h>
 
 #include <iostream>
 
@@ -18,6 +21,12 @@ namespace cosmo
       options          = run_options;
       output_directory = directory;
       log              = open_run_directory(directory, prm, options.quiet);
+      // Whoever looks now sees a run in progress, not the last run's result.
+      JSON running  = summary();
+      running["status"] = "running";
+      running["pid"]    = static_cast<double>(::getpid());
+      write_file_atomically(output_directory + "/summary.json",
+                            [&](std::ostream &o) { o << running.str() << "\n"; });
       say(application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
     }
 
@@ -46,6 +55,14 @@ namespace cosmo
       catch (InputError &)
         {
           throw;
+        }
+      catch (Interrupted &e)
+        {
+          // The last converged state is what was written; the summary says
+          // where the run stopped.
+          status      = "interrupted";
+          message     = e.what();
+          signal      = e.signal;
         }
       catch (std::exception &e)
         {
@@ -80,6 +97,8 @@ namespace cosmo
       summary["timings"] = timer.to_json();
       write_file_atomically(output_directory + "/summary.json",
                             [&](std::ostream &o) { o << summary.str() << "\n"; });
+      if (status == "interrupted")
+        throw Interrupted(signal);
       if (failed())
         throw RunFailure(message);
       say("output in " + output_directory + "/");

@@ -1,4 +1,5 @@
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point.h>
 
@@ -60,6 +61,20 @@ namespace cosmo
       return e.n_negative_after - (e.eigenvalue < 0 ? 1 : 0);
     }
 
+    namespace
+    {
+      /// Round-off leaves fewer than three digits of the located lambda.
+      bool
+      poorly_resolved(const BifurcationProblem::Event &e)
+      {
+        return e.resolution > 1e-3 * std::abs(e.lambda);
+      }
+      const char *const poorly_resolved_text =
+        "the round-off resolution exceeds 1e-3 of lambda: fewer than three digits are "
+        "significant (a badly conditioned Hessian, e.g. a very thin plate on a fine mesh: "
+        "doc/theory-plate-rod.md section 9)";
+    } // namespace
+
     void
     add_location_to_json(const BifurcationProblem::Event &e, io::JSON &event)
     {
@@ -82,6 +97,8 @@ namespace cosmo
         x["arclength_interval"] = e.arclength;
       if (!e.message.empty())
         x["message"] = e.message;
+      if (e.located_by_newton && poorly_resolved(e))
+        x["warning"] = poorly_resolved_text;
       event["location"] = x;
     }
 
@@ -721,6 +738,8 @@ namespace cosmo
               if (e.resolution >= 0)
                 m << " (round-off resolution " << e.resolution << ")";
               m << ", residual " << e.residual_norm;
+              if (poorly_resolved(e))
+                m << "; WARNING: " << poorly_resolved_text;
             }
           else
             m << "bisection of the count to arclength " << std::setprecision(3) << e.arclength
@@ -779,6 +798,7 @@ namespace cosmo
       unsigned int cutbacks = 0;
       for (unsigned int k = 0; k < settings.maximum_steps; ++k)
         {
+          io::check_interrupt(); // between steps: the last converged state is written
           if (s.lambda < settings.lambda_min || s.lambda > settings.lambda_max)
             {
               say("  branch " + std::to_string(branch) + " left the parameter range at lambda = " +
@@ -806,9 +826,15 @@ namespace cosmo
               say(m.str());
               if (ds < settings.minimum_step)
                 {
-                  say("  branch " + std::to_string(branch) +
-                      " ends: the step fell below the minimum at lambda = " +
-                      std::to_string(s.lambda));
+                  std::ostringstream m;
+                  m << "branch " << branch << " ends at lambda = " << std::setprecision(10)
+                    << s.lambda << ", before its target: the step fell below the minimum ("
+                    << settings.minimum_step << ") after " << cutbacks << " cut-backs ("
+                    << e.what() << ")";
+                  say("  " + m.str());
+                  // The path did not reach its target: the run fails at the end
+                  // (after the other branches), never "converged".
+                  incomplete.push_back(m.str());
                   return;
                 }
               --k;
@@ -923,6 +949,7 @@ namespace cosmo
       std::vector<EventRecord> events;
       std::vector<State>       switches; // grows while branches are followed
       stopped = false;
+      incomplete.clear();
       follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
              switches, step);
       if (stopped)
@@ -938,6 +965,7 @@ namespace cosmo
       std::map<std::pair<unsigned int, double>, double> plus_lambda;
       for (std::size_t q = 0; q < switches.size(); ++q)
         {
+          io::check_interrupt();
           const State start = switches[q];
           if (branch >= settings.maximum_branches)
             {
@@ -958,7 +986,10 @@ namespace cosmo
             }
           catch (NewtonFailure &e)
             {
-              say("  switch to branch " + std::to_string(branch) + " failed: " + e.what());
+              const std::string m =
+                "the switch to branch " + std::to_string(branch) + " failed: " + e.what();
+              say("  " + m);
+              incomplete.push_back(m);
               ++branch;
               continue;
             }
@@ -1009,6 +1040,16 @@ namespace cosmo
           // later branch points.
           std::rotate(switches.begin() + q + 1, switches.begin() + queued, switches.end());
           ++branch;
+        }
+      if (!incomplete.empty())
+        {
+          // Every branch followed so far has been reported (its steps and
+          // events are in the output); the run still did not do what it was
+          // asked: it fails (exit 2, "status": "failed").
+          std::string m = "the path did not reach its target: " + incomplete[0];
+          if (incomplete.size() > 1)
+            m += " (and " + std::to_string(incomplete.size() - 1) + " more, in the log)";
+          throw io::RunFailure(m);
         }
       return events;
     }

@@ -1,4 +1,5 @@
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/continuation.h>
 
 #include <cmath>
@@ -85,6 +86,7 @@ namespace cosmo
       unsigned int   cutbacks    = 0;
       while (t < settings.target - 1e-14)
         {
+          io::check_interrupt(); // between steps: the last converged state is written
           if (step >= settings.maximum_steps)
             throw io::RunFailure("the target t = " + std::to_string(settings.target) +
                                  " was not reached in " +

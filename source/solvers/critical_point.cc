@@ -1,3 +1,4 @@
+#include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point.h>
 
@@ -105,6 +106,7 @@ namespace cosmo
       for (unsigned int it = 0;; ++it)
         {
           // (before the factorization the iterate would cost)
+          io::check_interrupt();
           if (it == settings.max_iterations)
             return fail("no convergence in " + std::to_string(settings.max_iterations) +
                         " Newton iterations");

@@ -2,6 +2,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/output.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/critical_curve.h>
 #include <cosmo/solvers/critical_point_study.h>
 
@@ -168,6 +169,8 @@ namespace cosmo
       unsigned int n_without = 0; // points without a located critical point
       for (unsigned int k = 0; k < sweep.size(); ++k)
         {
+          // Between points: sweep.csv holds every point done so far.
+          io::check_interrupt();
           const auto        start = std::chrono::steady_clock::now();
           const std::string point = io::ParameterSweep::point_directory(directory, k);
           double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,

@@ -21,6 +21,9 @@
  * failure at the start, a file that cannot be written, ...) is recorded as
  * `"status": "failed"` with its message in summary.json, which is written
  * either way, and then ends the run with exit status 2 (io::RunFailure).
+ * summary.json says `"status": "running"` from open() on; a run stopped by
+ * SIGINT/SIGTERM (io::Interrupted, between steps) writes it with
+ * `"status": "interrupted"` and ends with 128 + the signal.
  */
 namespace cosmo
 {
@@ -103,6 +106,7 @@ namespace cosmo
       std::unique_ptr<RunLog> log;
       std::string             status = "converged";
       std::string             message;
+      int                     signal = 0; ///< of an interrupted run
     };
   } // namespace io
 } // namespace cosmo

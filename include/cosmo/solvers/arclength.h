@@ -296,6 +296,8 @@ namespace cosmo
       Vector<double>    mask;
       unsigned int      factorizations = 0; ///< setup_jacobian calls made by the driver
       bool              stopped = false;    ///< the first branch stopped at its first event
+      /// Branches that ended before their target (minimum step, failed switch): the run fails.
+      std::vector<std::string> incomplete;
 
       void
       say(const std::string &s) const;

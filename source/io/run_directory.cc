@@ -1,0 +1,301 @@
+#include <cosmo/io/parameters.h>
+#include <cosmo/io/run_directory.h>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace cosmo
+{
+  namespace io
+  {
+    namespace fs = std::filesystem;
+
+    namespace
+    {
+      volatile std::sig_atomic_t received = 0;
+
+      extern "C" void
+      on_signal(int s)
+      {
+        if (received != 0)
+          {
+            // The second signal: the user insists; end now.
+            std::signal(s, SIG_DFL);
+            std::raise(s);
+            return;
+          }
+        received = s;
+      }
+
+      const char *const manifest_name = ".cosmo-files";
+      const char *const lock_name     = ".cosmo-lock";
+
+      struct Claimed
+      {
+        int                      lock_fd = -1;
+        std::vector<std::string> written; // relative to the directory
+        bool                     had_previous = false;
+        bool                     created      = false; ///< by this run
+        std::string              stash; ///< the older previous/, until this run writes a result
+        std::string              old_lock; ///< the lock file's text before (a rollback restores it)
+        bool                     had_lock = false;
+      };
+
+      /// The directories this process holds, by their canonical path.
+      std::map<std::string, Claimed> &
+      claimed()
+      {
+        static std::map<std::string, Claimed> c;
+        return c;
+      }
+
+      std::string
+      canonical(const std::string &path)
+      {
+        std::error_code ec;
+        const fs::path  p = fs::weakly_canonical(fs::absolute(path), ec);
+        return ec ? path : p.string();
+      }
+
+      /// Files of a run made before manifests existed: its fixed names and outputs.
+      bool
+      is_legacy_output(const fs::directory_entry &e)
+      {
+        const std::string name = e.path().filename().string();
+        if (!e.is_regular_file())
+          return false;
+        static const std::set<std::string> names = {
+          "summary.json", "log.txt", "sweep-log.txt", "steps.csv", "sweep.csv",
+          "critical_curve.csv", "table.csv", "table.h5"};
+        const std::string ext = e.path().extension().string();
+        return names.count(name) || ext == ".vtu" || ext == ".pvtu" || ext == ".pvd" ||
+               name.find(".tmp") != std::string::npos;
+      }
+
+      /// What a run writes before its work: no result yet.
+      bool
+      is_setup_file(const std::string &f)
+      {
+        return f == "parameters.prm" || f == "log.txt" || f == "sweep-log.txt" ||
+               f == "summary.json";
+      }
+
+      void
+      move_into(const fs::path &dir, const std::string &relative, const fs::path &target_dir)
+      {
+        std::error_code ec;
+        const fs::path  from = dir / relative;
+        if (!fs::exists(from, ec))
+          return;
+        const fs::path to = target_dir / relative;
+        fs::create_directories(to.parent_path(), ec);
+        fs::rename(from, to, ec);
+      }
+    } // namespace
+
+    Interrupted::Interrupted(const int signal)
+      : std::runtime_error(std::string("interrupted by ") +
+                           (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" :
+                                                                              "signal " +
+                                                                                std::to_string(signal)))
+      , signal(signal)
+    {}
+
+    void
+    install_signal_handlers()
+    {
+      struct sigaction a;
+      std::memset(&a, 0, sizeof(a));
+      a.sa_handler = on_signal;
+      sigemptyset(&a.sa_mask);
+      a.sa_flags = SA_RESTART; // writes in progress go on
+      sigaction(SIGINT, &a, nullptr);
+      sigaction(SIGTERM, &a, nullptr);
+    }
+
+    int
+    pending_signal()
+    {
+      return received;
+    }
+
+    void
+    check_interrupt()
+    {
+      if (received != 0)
+        throw Interrupted(received);
+    }
+
+    void
+    claim_run_directory(const std::string &directory, const bool created)
+    {
+      const std::string key = canonical(directory);
+      if (claimed().count(key))
+        return;
+      const fs::path dir(key);
+      std::error_code lock_ec;
+      const bool      had_lock = fs::exists(dir / lock_name, lock_ec);
+      const int      fd = ::open((dir / lock_name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+      if (fd < 0)
+        throw InputError("Output", "Output directory", directory,
+                         "a directory where this run can write (cannot create its lock file: " +
+                           std::string(std::strerror(errno)) + ")");
+      if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+        {
+          char    buffer[64] = {0};
+          ssize_t n          = ::pread(fd, buffer, sizeof(buffer) - 1, 0);
+          ::close(fd);
+          std::string pid = n > 0 ? std::string(buffer, n) : std::string("?");
+          pid.erase(std::remove(pid.begin(), pid.end(), '\n'), pid.end());
+          throw InputError("Output", "Output directory", directory,
+                           "a directory no other run is writing to: the run with pid " + pid +
+                             " is writing there now (wait for it, or choose another directory)");
+        }
+      std::string old_lock;
+      {
+        char    buffer[64] = {0};
+        ssize_t n          = ::pread(fd, buffer, sizeof(buffer) - 1, 0);
+        if (n > 0)
+          old_lock.assign(buffer, n);
+      }
+      const std::string pid = std::to_string(::getpid()) + "\n";
+      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0)
+        { /* the pid is only for the message of a second run */
+        }
+      Claimed c;
+      c.lock_fd = fd;
+      c.created = created;
+      c.had_lock = had_lock;
+      c.old_lock = old_lock;
+
+      // The earlier run's files into previous/ (replacing an older previous/).
+      std::error_code          ec;
+      std::vector<std::string> earlier;
+      std::ifstream            manifest(dir / manifest_name);
+      if (manifest)
+        {
+          std::string line;
+          while (std::getline(manifest, line))
+            if (!line.empty() && std::find(earlier.begin(), earlier.end(), line) == earlier.end())
+              earlier.push_back(line);
+        }
+      else
+        for (const auto &e : fs::directory_iterator(dir, ec))
+          if (is_legacy_output(e))
+            earlier.push_back(e.path().filename().string());
+      for (const auto &e : fs::directory_iterator(dir, ec))
+        if (e.is_regular_file() && e.path().filename().string().find(".tmp") != std::string::npos &&
+            std::find(earlier.begin(), earlier.end(), e.path().filename().string()) == earlier.end())
+          earlier.push_back(e.path().filename().string());
+      // Stashes of older previous/ directories left by runs that ended
+      // without a result are obsolete.
+      for (const auto &e : fs::directory_iterator(dir, ec))
+        if (e.path().filename().string().rfind(".cosmo-previous-", 0) == 0)
+          fs::remove_all(e.path(), ec);
+      if (!earlier.empty())
+        {
+          const fs::path previous = dir / "previous";
+          // The older previous/ is kept aside until this run writes a
+          // result: a run rejected before that puts everything back.
+          if (fs::exists(previous, ec))
+            {
+              c.stash = ".cosmo-previous-" + std::to_string(::getpid());
+              fs::rename(previous, dir / c.stash, ec);
+              if (ec)
+                fs::remove_all(previous, ec);
+            }
+          for (const auto &f : earlier)
+            move_into(dir, f, previous);
+          move_into(dir, manifest_name, previous);
+          c.had_previous = true;
+        }
+      // A fresh manifest; a directory inside another run's (a study's
+      // point) is one of that run's outputs.
+      std::ofstream(dir / manifest_name, std::ios::trunc);
+      record_output_file(key);
+      claimed()[key] = c;
+    }
+
+    void
+    record_output_file(const std::string &path)
+    {
+      if (claimed().empty())
+        return;
+      const std::string full = canonical(path);
+      for (auto &[dir, c] : claimed())
+        if (full.size() > dir.size() && full.compare(0, dir.size(), dir) == 0 &&
+            full[dir.size()] == '/')
+          {
+            // The innermost claimed directory holds it (a study's points are
+            // runs of their own inside the study's directory).
+            bool inner = false;
+            for (const auto &[other, unused] : claimed())
+              if (other.size() > dir.size() && full.compare(0, other.size(), other) == 0 &&
+                  full[other.size()] == '/' && other.compare(0, dir.size(), dir) == 0)
+                inner = true;
+            if (inner)
+              continue;
+            const std::string relative = full.substr(dir.size() + 1);
+            if (std::find(c.written.begin(), c.written.end(), relative) != c.written.end())
+              return;
+            c.written.push_back(relative);
+            std::ofstream m(fs::path(dir) / manifest_name, std::ios::app);
+            m << relative << "\n";
+            if (!c.stash.empty() && !is_setup_file(relative))
+              {
+                std::error_code ec;
+                fs::remove_all(fs::path(dir) / c.stash, ec);
+                c.stash.clear();
+              }
+            return;
+          }
+    }
+
+    void
+    roll_back_unused_run_directories()
+    {
+      for (auto &[dir, c] : claimed())
+        {
+          const bool only_setup = std::all_of(c.written.begin(), c.written.end(), is_setup_file);
+          if (!only_setup)
+            continue;
+          std::error_code ec;
+          const fs::path  d(dir);
+          for (const auto &f : c.written)
+            fs::remove(d / f, ec);
+          fs::remove(d / manifest_name, ec);
+          if (c.had_previous)
+            {
+              const fs::path previous = d / "previous";
+              for (const auto &e : fs::directory_iterator(previous, ec))
+                fs::rename(e.path(), d / e.path().filename(), ec);
+              fs::remove(previous, ec);
+            }
+          if (!c.stash.empty())
+            fs::rename(d / c.stash, d / "previous", ec);
+          if (c.had_lock)
+            {
+              if (::ftruncate(c.lock_fd, 0) != 0 ||
+                  ::pwrite(c.lock_fd, c.old_lock.data(), c.old_lock.size(), 0) < 0)
+                { /* informational only */
+                }
+            }
+          else
+            fs::remove(d / lock_name, ec);
+          if (c.created && fs::is_empty(d, ec))
+            fs::remove(d, ec);
+        }
+    }
+  } // namespace io
+} // namespace cosmo
