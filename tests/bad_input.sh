@@ -64,6 +64,8 @@ expect "surface growth with one factor for two" "expected 2 expression(s)" stwo.
 expect "surface growth factor <= 0 somewhere" "both factors must stay positive" sneg.prm
 { base; printf 'subsection Material 1\n set Growth kind = isotropic\n set Growth factor = 1 + 1e300*1e300*x*x\nend\n'; } > ginf.prm
 expect "a growth factor that is infinite on part of the section" "growth must be finite and keep det Fg > 0" ginf.prm
+{ base; printf 'subsection Cross-section\n set Global refinements = 10\nend\nsubsection Finite element\n set Polynomial degree = 4\nend\n'; } > huge.prm
+expect "a mesh far larger than memory (refused before refining, ~200 GB estimated)" "fits in this machine's memory" huge.prm
 { base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Surface Lame modulus = -1\n set Surface shear modulus = 0.5\nend\n'; } > slame.prm
 expect "surface moduli with a negative areal modulus" "lambda_s + mu_s must be >= 0" slame.prm
 { base; printf 'subsection Parameter sweep\n set Entry = Material 1/Youngs modulus\nend\n'; } > sweep_entry.prm

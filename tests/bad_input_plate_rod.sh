@@ -42,4 +42,6 @@ expect "a natural curvature that is NaN on part of the plate" "must be finite on
 expect "two natural curvature components instead of three" "3 muparser expression(s)" curvature2.prm
 { base; printf 'subsection Rim rod\n set Natural curvature = 0.1, nan, 0\nend\n'; } > rimcurv.prm
 expect "a NaN in the rim's natural curvature" "Natural curvature" rimcurv.prm
+{ base; printf 'subsection Mesh\n set Global refinements = 8\n set Polynomial degree = 4\nend\n'; } > huge.prm
+expect "a mesh far larger than memory (refused before refining, ~500 GB estimated)" "fits in this machine's memory" huge.prm
 exit $fail

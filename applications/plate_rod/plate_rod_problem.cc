@@ -15,6 +15,7 @@
 #include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
+#include <cosmo/io/resources.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
@@ -139,7 +140,13 @@ namespace cosmo
         GridGenerator::quarter_hyper_ball(triangulation, Point<2>(), radius);
       else
         GridGenerator::hyper_ball(triangulation, Point<2>(), radius);
-      triangulation.refine_global(refinements);
+      {
+        // 6 fields of degree p: about 6 p^2 unknowns per cell.
+        const boost::signals2::scoped_connection guard(
+          io::guard_refinement(triangulation, 6. * degree * degree, degree, "Mesh",
+                               "Global refinements", std::to_string(refinements)));
+        triangulation.refine_global(refinements);
+      }
       if (sector && sector_n > 2)
         {
           // Stretch the quarter disc in angle onto [0, pi/n]: circles stay circles.

@@ -9,6 +9,7 @@
 
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
+#include <cosmo/io/resources.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/kinematics/section.h>
@@ -39,7 +40,13 @@ namespace cosmo
     void
     CrossSectionProblem::setup_system()
     {
-      geometry.create_triangulation(triangulation);
+      {
+        // 3 displacement fields of degree p: about 3 p^2 unknowns per cell.
+        const boost::signals2::scoped_connection guard(io::guard_refinement(
+          triangulation, 3. * degree * degree, degree, "Cross-section", "Global refinements",
+          std::to_string(geometry.refinements)));
+        geometry.create_triangulation(triangulation);
+      }
       materials.resolve_regions(geometry.region_ids());
       {
         std::vector<types::material_id> ids;
