@@ -44,4 +44,6 @@ expect "two natural curvature components instead of three" "3 muparser expressio
 expect "a NaN in the rim's natural curvature" "Natural curvature" rimcurv.prm
 { base; printf 'subsection Mesh\n set Global refinements = 8\n set Polynomial degree = 4\nend\n'; } > huge.prm
 expect "a mesh far larger than memory (refused before refining, ~500 GB estimated)" "fits in this machine's memory" huge.prm
+{ base; printf 'subsection Plate\n set Thickness = 1e-300\nend\n'; } > thin.prm
+expect "a plate too thin for double precision (names the thickness)" "entry 'Thickness' = '1e-300': h/R >= 1e-5" thin.prm
 exit $fail

@@ -31,4 +31,8 @@ expect "a table that asks for a strain twice" "a strain other than the first" ta
 expect "a table axis that is a free strain" "a prescribed strain: this one is free" tablefree.prm
 { strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Strains = 0, 0, 1.1, 0, 0, 0.2\n set Free strains = nu3\nend\n'; } > strainfree.prm
 expect "a strain both free and set in Strains" "is in 'Free strains' and set here" strainfree.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Strains = 0, 0, 1, 1e300, 0, 0\nend\n'; } > huge_kappa.prm
+expect "a curvature no rod has (kappa1 = 1e300; it made Newton wander)" "kappa1 = 1e+300 is not" huge_kappa.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = natural shape\n set Free strains = nu3\nend\n'; } > ignored.prm
+expect "an entry the natural-shape mode ignores (Free strains)" "entry 'Free strains' = 'nu3': nothing in 'Mode = natural shape'" ignored.prm
 exit $fail

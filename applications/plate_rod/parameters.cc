@@ -212,6 +212,14 @@ namespace cosmo
         throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
                              "must be positive and smaller than the radius " +
                                prm.get("Radius"));
+      // The stability test's round-off grows like (R/h)^3 (doc/theory-plate-rod.md
+      // section 9: at h/R = 1e-4 it is 3e-3 to 1 of the threshold, by mesh); below
+      // 1e-5 no digit of a threshold would be significant.
+      if (thickness < 1e-5 * radius)
+        throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
+                             "h/R >= 1e-5 (here " + std::to_string(thickness / radius) +
+                               "): in double precision the stability of thinner plates cannot "
+                               "be resolved (doc/theory-plate-rod.md section 9)");
       thickness_profile_text = prm.get("Thickness profile");
       thickness_profile =
         thickness_profile_text == "1" ?

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace cosmo
 {
@@ -19,7 +20,8 @@ namespace cosmo
                         Patterns::Selection("prescribed strains|natural shape"),
                         "prescribed strains: the six strains are ramped from the "
                         "reference (0,0,1,0,0,0) to 'Strains' (except 'Free strains'); "
-                        "natural shape: all six strains are free, their resultants vanish.");
+                        "natural shape: all six strains are free, their resultants vanish "
+                        "('Strains', 'Free strains' and 'Path' must then be left unset).");
       prm.declare_entry("Strains", "0, 0, 1, 0, 0, 0",
                         Patterns::List(Patterns::Double(), 6, 6),
                         "Target strains nu1, nu2, nu3, kappa1, kappa2, kappa3 in the "
@@ -44,7 +46,48 @@ namespace cosmo
     {
       prm.enter_subsection("Rod strains");
       mode         = prm.get("Mode");
+      if (mode == "natural shape")
+        {
+          // All six strains are unknowns there: what prescribes or frees a
+          // strain has no effect, and a user who set it meant something else.
+          for (const auto &[entry, unset] :
+               std::vector<std::pair<std::string, std::string>>{{"Strains", "0, 0, 1, 0, 0, 0"},
+                                                                {"Free strains", ""},
+                                                                {"Path", ""}})
+            {
+              const std::string text = prm.get(entry);
+              bool              is_unset = text == unset;
+              if (!is_unset && entry == "Strains")
+                try
+                  {
+                    is_unset = Utilities::string_to_double(Utilities::split_string_list(text, ',')) ==
+                               std::vector<double>{0, 0, 1, 0, 0, 0};
+                  }
+                catch (...)
+                  {}
+              if (!is_unset)
+                throw io::InputError("Rod strains", entry, text,
+                                     "nothing in 'Mode = natural shape' (all six strains are free "
+                                     "there and this entry is ignored): set 'Mode = prescribed "
+                                     "strains' to use it, or remove it");
+            }
+        }
       const auto e = io::get_double_list(prm, "Strains", 6, "Rod strains");
+      // A strain of a size no rod has (a shear or stretch of 100, a curvature
+      // of 100 turns per unit length) is a typing error, and would only make
+      // the nonlinear solver wander.
+      auto check_size = [&](const std::string &entry, const std::string &text,
+                            const std::array<double, 6> &v) {
+        for (unsigned int k = 0; k < 6; ++k)
+          if (std::abs(v[k]) > (k < 3 ? 100. : 200. * M_PI))
+            {
+              std::ostringstream m;
+              m << "strains of a rod: |nu| <= 100 and |kappa| <= 200 pi per unit length ("
+                << kinematics::strain_names[k] << " = " << v[k] << " is not)";
+              throw io::InputError("Rod strains", entry, text, m.str());
+            }
+      };
+      check_size("Strains", prm.get("Strains"), {{e[0], e[1], e[2], e[3], e[4], e[5]}});
       std::copy(e.begin(), e.end(), target_strains.begin());
       const auto free_names = Utilities::split_string_list(prm.get("Free strains"), ',');
       strain_is_free.fill(mode == "natural shape");
@@ -84,6 +127,7 @@ namespace cosmo
                                    "waypoints of six finite numbers ('" + point +
                                      "' has nan or inf)");
           waypoints.push_back({{v[0], v[1], v[2], v[3], v[4], v[5]}});
+          check_size("Path", path_text, waypoints.back());
         }
       if (!waypoints.empty())
         {

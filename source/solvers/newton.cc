@@ -1,5 +1,6 @@
 #include <deal.II/sundials/kinsol.h>
 
+#include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/newton.h>
 
 #include <cmath>
@@ -61,6 +62,10 @@ namespace cosmo
       kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
       kinsol.get_function_scaling = [&]() -> Vector<double> & { return weights; };
       kinsol.residual      = [&](const Vector<double> &u, Vector<double> &r) {
+        // SIGINT/SIGTERM: end this solve now (an unrecoverable error for
+        // KINSOL), then report the interruption below, not a failure.
+        if (io::pending_signal() != 0)
+          return -1;
         return system.residual(u, r);
       };
       kinsol.setup_jacobian = [&](const Vector<double> &u, const Vector<double> &) {
@@ -78,6 +83,7 @@ namespace cosmo
       catch (std::exception &e)
         {
           U = U0;
+          io::check_interrupt();
           throw NewtonFailure(std::string("KINSOL stopped: ") + e.what());
         }
 
