@@ -725,6 +725,22 @@ namespace cosmo
     {
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
+      if (write_output)
+        {
+          if (record.resuming())
+            {
+              driver.load(record.checkpoint());
+              load_progress(record.checkpoint());
+            }
+          // After every converged step: the driver's state and what is written so far.
+          driver.checkpoint = [this, &driver]() {
+            io::PhaseTimer::Scope scope(timer, "checkpoint");
+            io::CheckpointWriter  w;
+            driver.save(w);
+            save_progress(w);
+            record.write_checkpoint(w);
+          };
+        }
       return driver.run(*this, solution, load_parameter);
     }
 
@@ -802,6 +818,11 @@ namespace cosmo
       record.attempt([&]() {
         if (critical_guess)
           return locate_from_guess();
+        if (record.resuming())
+          {
+            follow_branches();
+            return;
+          }
         set_load_parameter(path_start);
         try
           {

@@ -135,6 +135,12 @@ namespace cosmo
       /// Follow the growth path by arclength continuation from the current solution.
       std::vector<solvers::EventRecord>
       follow_branches();
+      /// What the run has written and found so far, for its checkpoint (io/checkpoint.h).
+      void
+      save_progress(io::CheckpointWriter &w) const;
+      /// Restore it (and rewrite steps.csv and the PVD files as they were then).
+      void
+      load_progress(io::CheckpointReader &r);
       /// Diagnostics of a state (energies, deflections, rim Fourier amplitudes).
       PlateRodState
       analyse(const Vector<double> &U, unsigned int n_modes = PlateRodProblem::n_modes) const;

@@ -187,6 +187,66 @@ namespace cosmo
     }
 
     void
+    PlateRodProblem::save_progress(io::CheckpointWriter &w) const
+    {
+      w.put_vector(solution);
+      w.put(load_parameter);
+      w.put(std::uint64_t(states.size()));
+      for (const auto &s : states)
+        {
+          for (const double x : {s.t, s.plate_energy, s.rod_energy, s.w_centre, s.max_abs_w,
+                                 s.max_abs_inplane, s.rim_radial_strain, s.smallest_eigenvalue})
+            w.put(x);
+          w.put_vector(s.rim_w_amplitude);
+          w.put_vector(s.rim_ur_amplitude);
+          w.put(s.n_negative);
+          w.put(s.branch);
+        }
+      w.put(std::uint64_t(located_events.size()));
+      for (const auto &e : located_events)
+        e.save(w);
+      steps_table.save(w);
+      w.put(output_index);
+      plate_series->save(w);
+      rim_series->save(w);
+    }
+
+    void
+    PlateRodProblem::load_progress(io::CheckpointReader &r)
+    {
+      r.get_vector(solution);
+      load_parameter = r.get_double();
+      states.resize(r.get_size());
+      for (auto &s : states)
+        {
+          for (double *x : {&s.t, &s.plate_energy, &s.rod_energy, &s.w_centre, &s.max_abs_w,
+                            &s.max_abs_inplane, &s.rim_radial_strain, &s.smallest_eigenvalue})
+            *x = r.get_double();
+          s.rim_w_amplitude  = r.get_vector();
+          s.rim_ur_amplitude = r.get_vector();
+          s.n_negative       = r.get_int();
+          s.branch           = r.get_unsigned();
+        }
+      located_events.resize(r.get_size());
+      for (auto &e : located_events)
+        e.load(r);
+      steps_table.load(r);
+      output_index = r.get_unsigned();
+      plate_series->load(r);
+      rim_series->load(r);
+      if (!r.at_end())
+        throw std::runtime_error("the checkpoint holds more than this run reads");
+      if (solution.size() != dof_handler.n_dofs())
+        throw std::runtime_error("the checkpoint's state has another number of unknowns");
+      // The files as they were at the checkpoint (a killed run may have written past it).
+      steps_table.write(output_directory + "/steps.csv");
+      std::ostringstream m;
+      m << "  going on after step " << states.size() - 1 << " at t = " << std::setprecision(10)
+        << load_parameter << " (" << located_events.size() << " events located before)";
+      say(m.str());
+    }
+
+    void
     PlateRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
     {
       solvers::EventRecord r;

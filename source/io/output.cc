@@ -498,8 +498,8 @@ namespace cosmo
       return nullptr;
     }
 
-    RunLog::RunLog(const std::string &path, const bool quiet)
-      : file(path)
+    RunLog::RunLog(const std::string &path, const bool quiet, const bool append)
+      : file(path, append ? std::ios::app : std::ios::trunc)
       , quiet(quiet)
     {
       if (!file)
@@ -529,6 +529,54 @@ namespace cosmo
     PVDSeries::add(const double time, const std::string &vtu_file_name)
     {
       entries.emplace_back(time, vtu_file_name);
+      write();
+    }
+
+    void
+    PVDSeries::save(CheckpointWriter &w) const
+    {
+      w.put(std::uint64_t(entries.size()));
+      for (const auto &e : entries)
+        {
+          w.put(e.first);
+          w.put(e.second);
+        }
+    }
+
+    void
+    PVDSeries::load(CheckpointReader &r)
+    {
+      entries.resize(r.get_size());
+      for (auto &e : entries)
+        {
+          e.first  = r.get_double();
+          e.second = r.get_string();
+        }
+      write();
+    }
+
+    void
+    CSVTable::save(CheckpointWriter &w) const
+    {
+      w.put(std::uint64_t(columns.size()));
+      w.put(std::uint64_t(rows.size()));
+      for (const auto &row : rows)
+        w.put_vector(row);
+    }
+
+    void
+    CSVTable::load(CheckpointReader &r)
+    {
+      if (r.get_size() != columns.size())
+        throw std::runtime_error("the checkpoint's table has other columns than this run's");
+      rows.resize(r.get_size());
+      for (auto &row : rows)
+        row = r.get_vector();
+    }
+
+    void
+    PVDSeries::write() const
+    {
       write_file_atomically(path, [&](std::ostream &out) {
         out << "<?xml version=\"1.0\"?>\n"
             << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"

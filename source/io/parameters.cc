@@ -103,17 +103,18 @@ namespace cosmo
     open_run_directory(const std::string &     directory,
                        const ParameterHandler &prm,
                        const bool              quiet,
-                       const std::string &     log_name)
+                       const std::string &     log_name,
+                       const bool              resume)
     {
       std::error_code ec;
       const bool      existed = std::filesystem::exists(directory, ec);
       create_directory(directory);
       // Locked for this run, the earlier run's files moved into previous/.
-      claim_run_directory(directory, !existed);
+      claim_run_directory(directory, !existed, resume);
       write_file_atomically(directory + "/parameters.prm", [&](std::ostream &o) {
         prm.print_parameters(o, ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM);
       });
-      return std::make_unique<RunLog>(directory + "/" + log_name, quiet);
+      return std::make_unique<RunLog>(directory + "/" + log_name, quiet, resume);
     }
 
     std::vector<double>
@@ -152,6 +153,9 @@ namespace cosmo
         out << info.name << " " << COSMO_VERSION << " -- " << info.summary << "\n\n"
             << "Usage:\n"
             << "  " << info.name << " FILE.prm [--quiet]   run with the parameters in FILE.prm\n"
+            << "  " << info.name << " --resume DIR [--quiet]\n"
+            << "        continue the interrupted or killed run in DIR from its last checkpoint\n"
+            << "        (with DIR/parameters.prm; FILE.prm, if given too, must match it)\n"
             << "  " << info.name << " --print-parameters [prm|json|xml]\n"
             << "        print every parameter with its documentation and default\n"
             << "  " << info.name << " --help | --version\n\n"
@@ -216,6 +220,15 @@ namespace cosmo
                 }
               else if (a == "--quiet" || a == "-q")
                 options.quiet = true;
+              else if (a == "--resume")
+                {
+                  if (i + 1 >= args.size() || args[i + 1].empty())
+                    {
+                      std::cerr << info.name << ": --resume takes the run directory to continue\n";
+                      return 1;
+                    }
+                  options.resume_directory = args[++i];
+                }
               else if (!a.empty() && a[0] == '-')
                 {
                   std::cerr << info.name << ": unknown option '" << a << "'\n\n";
@@ -231,6 +244,16 @@ namespace cosmo
                   return 1;
                 }
             }
+          if (!options.resume_directory.empty() && options.parameter_file.empty())
+            {
+              options.parameter_file = options.resume_directory + "/parameters.prm";
+              if (!std::filesystem::is_regular_file(options.parameter_file))
+                {
+                  std::cerr << info.name << ": --resume " << options.resume_directory
+                            << ": not a run directory (it has no parameters.prm)\n";
+                  return 1;
+                }
+            }
           if (options.parameter_file.empty())
             {
               print_usage(info, std::cerr);
@@ -240,6 +263,13 @@ namespace cosmo
           ParameterHandler prm;
           declare(prm);
           parse_parameter_file(prm, options.parameter_file);
+          if (!options.resume_directory.empty())
+            {
+              // The run goes on where it was, wherever the directory now is.
+              prm.enter_subsection("Output");
+              prm.set("Output directory", options.resume_directory);
+              prm.leave_subsection();
+            }
           run(prm, options);
           return 0;
         }

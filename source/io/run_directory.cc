@@ -50,6 +50,7 @@ namespace cosmo
         std::string              stash; ///< the older previous/, until this run writes a result
         std::string              old_lock; ///< the lock file's text before (a rollback restores it)
         bool                     had_lock = false;
+        bool                     resumed  = false; ///< continues the run there (--resume)
       };
 
       /// The directories this process holds, by their canonical path.
@@ -138,7 +139,7 @@ namespace cosmo
     }
 
     void
-    claim_run_directory(const std::string &directory, const bool created)
+    claim_run_directory(const std::string &directory, const bool created, const bool resume)
     {
       const std::string key = canonical(directory);
       if (claimed().count(key))
@@ -178,6 +179,18 @@ namespace cosmo
       c.created = created;
       c.had_lock = had_lock;
       c.old_lock = old_lock;
+      if (resume)
+        {
+          // The run goes on: its files stay, its manifest grows.
+          c.resumed = true;
+          std::ifstream manifest(dir / manifest_name);
+          std::string   line;
+          while (std::getline(manifest, line))
+            if (!line.empty() && std::find(c.written.begin(), c.written.end(), line) == c.written.end())
+              c.written.push_back(line);
+          claimed()[key] = c;
+          return;
+        }
 
       // The earlier run's files into previous/ (replacing an older previous/).
       std::error_code          ec;
@@ -267,6 +280,8 @@ namespace cosmo
     {
       for (auto &[dir, c] : claimed())
         {
+          if (c.resumed)
+            continue; // checked before anything was written; nothing to undo
           const bool only_setup = std::all_of(c.written.begin(), c.written.end(), is_setup_file);
           if (!only_setup)
             continue;

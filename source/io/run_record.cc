@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <filesystem>
 #include <iostream>
 
 namespace cosmo
@@ -20,7 +21,12 @@ namespace cosmo
     {
       options          = run_options;
       output_directory = directory;
-      log              = open_run_directory(directory, prm, options.quiet);
+      parameters       = checkpoint_parameters(prm);
+      resumed          = !options.resume_directory.empty();
+      // A checkpoint of other parameters is refused before anything is touched.
+      if (resumed)
+        resume_data = read_checkpoint(directory, application, parameters);
+      log = open_run_directory(directory, prm, options.quiet, "log.txt", resumed);
       // Whoever looks now sees a run in progress, not the last run's result.
       JSON running  = summary();
       running["status"] = "running";
@@ -28,6 +34,14 @@ namespace cosmo
       write_file_atomically(output_directory + "/summary.json",
                             [&](std::ostream &o) { o << running.str() << "\n"; });
       say(application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
+      if (resumed)
+        say("  resumed from the checkpoint in " + directory + "/");
+    }
+
+    void
+    RunRecord::write_checkpoint(const CheckpointWriter &payload) const
+    {
+      io::write_checkpoint(output_directory, application, parameters, payload);
     }
 
     void
@@ -98,7 +112,14 @@ namespace cosmo
       write_file_atomically(output_directory + "/summary.json",
                             [&](std::ostream &o) { o << summary.str() << "\n"; });
       if (status == "interrupted")
-        throw Interrupted(signal);
+        {
+          std::error_code ec;
+          if (std::filesystem::exists(output_directory + "/" + checkpoint_name, ec))
+            say("interrupted; continue with: " + application + " --resume " + output_directory);
+          throw Interrupted(signal);
+        }
+      // Nothing to resume from a run that ended.
+      remove_checkpoint(output_directory);
       if (failed())
         throw RunFailure(message);
       say("output in " + output_directory + "/");

@@ -441,6 +441,132 @@ namespace cosmo
       }
     } // namespace
 
+    void
+    EventRecord::save(io::CheckpointWriter &w) const
+    {
+      const auto &e = event;
+      w.put(e.kind == BifurcationProblem::Event::Kind::fold);
+      for (const double x : {e.lambda, e.arclength, e.eigenvalue, e.residual_norm, e.test_function,
+                             e.unfolding, e.precision, e.resolution, e.lambda_lo, e.lambda_hi})
+        w.put(x);
+      for (const unsigned int x : {e.branch, e.newton_iterations, e.factorizations, e.multiplicity})
+        w.put(x);
+      w.put(e.n_negative_before);
+      w.put(e.n_negative_after);
+      w.put(e.located_by_newton);
+      w.put(e.message);
+      w.put_vector(state);
+      w.put_vector(mode);
+    }
+
+    void
+    EventRecord::load(io::CheckpointReader &r)
+    {
+      auto &e = event;
+      e.kind  = r.get_bool() ? BifurcationProblem::Event::Kind::fold :
+                               BifurcationProblem::Event::Kind::branch_point;
+      for (double *x : {&e.lambda, &e.arclength, &e.eigenvalue, &e.residual_norm, &e.test_function,
+                        &e.unfolding, &e.precision, &e.resolution, &e.lambda_lo, &e.lambda_hi})
+        *x = r.get_double();
+      for (unsigned int *x : {&e.branch, &e.newton_iterations, &e.factorizations, &e.multiplicity})
+        *x = r.get_unsigned();
+      e.n_negative_before = r.get_int();
+      e.n_negative_after  = r.get_int();
+      e.located_by_newton = r.get_bool();
+      e.message           = r.get_string();
+      state               = r.get_vector();
+      mode                = r.get_vector();
+    }
+
+    namespace
+    {
+      template <typename State>
+      void
+      save_state(io::CheckpointWriter &w, const State &s)
+      {
+        w.put_vector(s.U);
+        w.put(s.lambda);
+        w.put_vector(s.tU);
+        w.put(s.tlambda);
+        w.put(s.n_negative);
+        w.put(s.depth);
+        w.put(s.branch);
+        w.put(s.sign);
+      }
+
+      template <typename State>
+      void
+      load_state(io::CheckpointReader &r, State &s)
+      {
+        r.get_vector(s.U);
+        s.lambda = r.get_double();
+        r.get_vector(s.tU);
+        s.tlambda    = r.get_double();
+        s.n_negative = r.get_int();
+        s.depth      = r.get_unsigned();
+        s.branch     = r.get_unsigned();
+        s.sign       = r.get_double();
+      }
+    } // namespace
+
+    void
+    ArclengthContinuation::save(io::CheckpointWriter &w) const
+    {
+      w.put(std::uint64_t(at.events.size()));
+      for (const auto &e : at.events)
+        e.save(w);
+      w.put(std::uint64_t(at.switches.size()));
+      for (const auto &s : at.switches)
+        save_state(w, s);
+      w.put(std::uint64_t(at.plus_lambda.size()));
+      for (const auto &[key, l] : at.plus_lambda)
+        {
+          w.put(key.first);
+          w.put(key.second);
+          w.put(l);
+        }
+      w.put(at.step);
+      w.put(at.branch);
+      w.put(std::uint64_t(at.q));
+      w.put(std::uint64_t(at.queued));
+      w.put(at.may_switch);
+      save_state(w, at.s);
+      w.put(at.ds);
+      w.put(at.k);
+      w.put(factorizations);
+      w.put(incomplete);
+    }
+
+    void
+    ArclengthContinuation::load(io::CheckpointReader &r)
+    {
+      at = Progress();
+      at.events.resize(r.get_size());
+      for (auto &e : at.events)
+        e.load(r);
+      at.switches.resize(r.get_size());
+      for (auto &s : at.switches)
+        load_state(r, s);
+      const std::uint64_t n = r.get_size();
+      for (std::uint64_t i = 0; i < n; ++i)
+        {
+          const unsigned int b = r.get_unsigned();
+          const double       l = r.get_double();
+          at.plus_lambda[std::make_pair(b, l)] = r.get_double();
+        }
+      at.step       = r.get_unsigned();
+      at.branch     = r.get_unsigned();
+      at.q          = static_cast<std::size_t>(r.get_size());
+      at.queued     = static_cast<std::size_t>(r.get_size());
+      at.may_switch = r.get_bool();
+      load_state(r, at.s);
+      at.ds          = r.get_double();
+      at.k           = r.get_unsigned();
+      factorizations = r.get_unsigned();
+      incomplete     = r.get_strings();
+      resume         = true;
+    }
+
     ArclengthContinuation::ArclengthContinuation(const ArclengthSettings &settings,
                                                  const NewtonSettings &   newton)
       : settings(settings)
@@ -792,11 +918,23 @@ namespace cosmo
                                   const bool                may_switch,
                                   std::vector<EventRecord> &events,
                                   std::vector<State> &      switches,
-                                  unsigned int &            step)
+                                  unsigned int &            step,
+                                  double                    ds,
+                                  const unsigned int        k0)
     {
-      double       ds       = settings.initial_step;
       unsigned int cutbacks = 0;
-      for (unsigned int k = 0; k < settings.maximum_steps; ++k)
+      // A point to go on from: the state, the next step length, the steps taken.
+      auto save_point = [&](const unsigned int next_k) {
+        if (!checkpoint)
+          return;
+        at.s    = s;
+        at.ds   = ds;
+        at.k    = next_k;
+        at.step = step;
+        checkpoint();
+      };
+      save_point(k0);
+      for (unsigned int k = k0; k < settings.maximum_steps; ++k)
         {
           io::check_interrupt(); // between steps: the last converged state is written
           if (s.lambda < settings.lambda_min || s.lambda > settings.lambda_max)
@@ -865,6 +1003,7 @@ namespace cosmo
           cutbacks = 0;
           if (r.iterations <= settings.easy_iterations)
             ds = std::min(settings.maximum_step, ds * settings.growth_factor);
+          save_point(k + 1);
         }
     }
 
@@ -927,43 +1066,60 @@ namespace cosmo
     ArclengthContinuation::run(BifurcationProblem &problem, Vector<double> &U, const double lambda)
     {
       set_mask_and_weight(problem);
-
-      // The starting point: converge it at fixed lambda, analyse, report.
-      State s;
-      problem.set_load_parameter(lambda);
-      const NewtonResult r0 = newton_solve(problem, U, newton);
-      s.U                   = U;
-      s.lambda              = lambda;
-      analyse(problem, s, nullptr, settings.direction);
-      unsigned int step = 0;
-      {
-        StepReport report;
-        report.t                 = lambda;
-        report.newton_iterations = r0.iterations;
-        report.residual_norm     = r0.residual_norm;
-        report.n_negative        = s.n_negative;
-        problem.set_load_parameter(lambda);
-        problem.converged_step(s.U, report);
-      }
-
-      std::vector<EventRecord> events;
-      std::vector<State>       switches; // grows while branches are followed
       stopped = false;
-      incomplete.clear();
-      follow(problem, s, 0, settings.switch_branches && settings.maximum_depth > 0, events,
-             switches, step);
+      std::vector<EventRecord> &events   = at.events;
+      std::vector<State> &      switches = at.switches; // grows while branches are followed
+      // The first point of the +phi branch of each branch point switched at
+      // (by the branch it leaves and its lambda), to recognize the -phi
+      // branch as its mirror image.
+      auto &       plus_lambda = at.plus_lambda;
+      unsigned int branch      = 1;
+      std::size_t  q0          = 0;
+      if (!resume)
+        {
+          // The starting point: converge it at fixed lambda, analyse, report.
+          State s;
+          problem.set_load_parameter(lambda);
+          const NewtonResult r0 = newton_solve(problem, U, newton);
+          s.U                   = U;
+          s.lambda              = lambda;
+          analyse(problem, s, nullptr, settings.direction);
+          at = Progress();
+          incomplete.clear();
+          {
+            StepReport report;
+            report.t                 = lambda;
+            report.newton_iterations = r0.iterations;
+            report.residual_norm     = r0.residual_norm;
+            report.n_negative        = s.n_negative;
+            problem.set_load_parameter(lambda);
+            problem.converged_step(s.U, report);
+          }
+          at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
+          follow(problem, s, 0, at.may_switch, events, switches, at.step, settings.initial_step,
+                 0);
+        }
+      else
+        {
+          // Go on inside the branch the checkpoint was written on.
+          resume = false;
+          follow(problem, at.s, at.branch, at.may_switch, events, switches, at.step, at.ds, at.k);
+          if (at.q != Progress::no_switch)
+            {
+              std::rotate(switches.begin() + at.q + 1, switches.begin() + at.queued,
+                          switches.end());
+              branch = at.branch + 1;
+              q0     = at.q + 1;
+            }
+        }
+      unsigned int &step = at.step;
       if (stopped)
         {
           say("  stopped at the first event ('Stop at first event')");
           return events;
         }
 
-      unsigned int branch = 1;
-      // The first point of the +phi branch of each branch point switched at
-      // (by the branch it leaves and its lambda), to recognize the -phi
-      // branch as its mirror image.
-      std::map<std::pair<unsigned int, double>, double> plus_lambda;
-      for (std::size_t q = 0; q < switches.size(); ++q)
+      for (std::size_t q = q0; q < switches.size(); ++q)
         {
           io::check_interrupt();
           const State start = switches[q];
@@ -1032,9 +1188,12 @@ namespace cosmo
               std::to_string(first.depth) + ", from branch " + std::to_string(start.branch) +
               ") from lambda = " + std::to_string(first.lambda));
           const std::size_t queued = switches.size();
-          follow(problem, first, branch,
-                 settings.switch_branches && first.depth < settings.maximum_depth, events,
-                 switches, step);
+          at.branch     = branch;
+          at.q          = q;
+          at.queued     = queued;
+          at.may_switch = settings.switch_branches && first.depth < settings.maximum_depth;
+          follow(problem, first, branch, at.may_switch, events, switches, step,
+                 settings.initial_step, 0);
           // The branches switched to from this one come next (depth first):
           // a secondary bifurcation is followed before the first branch's
           // later branch points.

@@ -4,6 +4,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/critical_curve.h>
+#include <cosmo/io/checkpoint.h>
 #include <cosmo/solvers/critical_point_study.h>
 
 #include <algorithm>
@@ -133,7 +134,16 @@ namespace cosmo
       prm.enter_subsection("Output");
       const std::string directory = prm.get("Output directory");
       prm.leave_subsection();
-      const auto log_file = io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt");
+      // A study resumed (--resume) goes on after its last finished point;
+      // a checkpoint of other parameters is refused before anything is touched.
+      const std::string  checkpoint_application = study.application + " study";
+      const std::string  parameters             = io::checkpoint_parameters(prm);
+      const bool         resume                 = !options.resume_directory.empty();
+      io::CheckpointReader resumed;
+      if (resume)
+        resumed = io::read_checkpoint(directory, checkpoint_application, parameters);
+      const auto log_file =
+        io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt", resume);
       auto &     log      = *log_file;
       const bool curve    = sweep.critical_curve();
       log(study.application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
@@ -165,168 +175,210 @@ namespace cosmo
       } previous;
       io::RunOptions quiet = options;
       quiet.quiet          = true; // each point's log.txt has the details
+      quiet.resume_directory.clear(); // a point is run whole again
       std::string  refused;
       unsigned int n_without = 0; // points without a located critical point
-      for (unsigned int k = 0; k < sweep.size(); ++k)
+      unsigned int k0        = 0;
+      if (resume)
         {
-          // Between points: sweep.csv holds every point done so far.
-          io::check_interrupt();
-          const auto        start = std::chrono::steady_clock::now();
-          const std::string point = io::ParameterSweep::point_directory(directory, k);
-          double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,
-                 continued = 0, mode_change = 0, codim2_value = NAN, codim2_t = NAN;
-          std::vector<double> mode_class(n_mode, NAN), further(n_more, NAN);
-          // The previous mode's critical point continued to this value where
-          // another mode has become critical first (t there).
-          double      previous_mode_t = NAN;
-          std::string failure;
-          try
-            {
-              sweep.prepare_point(prm, k, point);
-              auto         run = study.make_run(prm);
-              CriticalGuess g;
-              unsigned int  order = 0;
-              if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode, &order))
-                {
-                  g.equilibrate = order == 1;
-                  run->start_from_critical_point(g);
+          k0 = resumed.get_unsigned();
+          table.load(resumed);
+          predictor.load(resumed);
+          previous.k          = resumed.get_unsigned();
+          previous.value      = resumed.get_double();
+          previous.t          = resumed.get_double();
+          previous.mode_class = resumed.get_vector();
+          previous.n_unknowns = resumed.get_size();
+          refused             = resumed.get_string();
+          n_without           = resumed.get_unsigned();
+          table.write(directory + "/sweep.csv");
+          if (curve)
+            table.write(directory + "/critical_curve.csv");
+          log("  resumed from the checkpoint: " + std::to_string(k0) + " of " +
+              std::to_string(sweep.size()) + " values done");
+        }
+      try
+        {
+        for (unsigned int k = k0; k < sweep.size(); ++k)
+          {
+            // Between points: sweep.csv holds every point done so far.
+            io::check_interrupt();
+            const auto        start = std::chrono::steady_clock::now();
+            const std::string point = io::ParameterSweep::point_directory(directory, k);
+            double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,
+                   continued = 0, mode_change = 0, codim2_value = NAN, codim2_t = NAN;
+            std::vector<double> mode_class(n_mode, NAN), further(n_more, NAN);
+            // The previous mode's critical point continued to this value where
+            // another mode has become critical first (t there).
+            double      previous_mode_t = NAN;
+            std::string failure;
+            try
+              {
+                sweep.prepare_point(prm, k, point);
+                auto         run = study.make_run(prm);
+                CriticalGuess g;
+                unsigned int  order = 0;
+                if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode, &order))
+                  {
+                    g.equilibrate = order == 1;
+                    run->start_from_critical_point(g);
+                    try
+                      {
+                        run->run(quiet, prm);
+                        converged = 1;
+                        continued = 1;
+                      }
+                    catch (io::RunFailure &e)
+                      {
+                        log("  point " + std::to_string(k) +
+                            ": continuing the critical point failed (" + e.what() +
+                            "); an independent run instead");
+                        for (const auto &x : run->located_events())
+                          if (x.event.located_by_newton && other_negative_modes(x.event) > 0)
+                            previous_mode_t = x.event.lambda;
+                        factorizations += run->factorizations();
+                        run = study.make_run(prm);
+                      }
+                  }
+                if (continued == 0)
                   try
                     {
                       run->run(quiet, prm);
                       converged = 1;
-                      continued = 1;
                     }
                   catch (io::RunFailure &e)
                     {
-                      log("  point " + std::to_string(k) +
-                          ": continuing the critical point failed (" + e.what() +
-                          "); an independent run instead");
-                      for (const auto &x : run->located_events())
-                        if (x.event.located_by_newton && other_negative_modes(x.event) > 0)
-                          previous_mode_t = x.event.lambda;
-                      factorizations += run->factorizations();
-                      run = study.make_run(prm);
+                      failure = e.what();
                     }
-                }
-              if (continued == 0)
-                try
+                dofs = run->n_dofs();
+                factorizations += run->factorizations();
+                const auto &events = run->located_events();
+                if (const EventRecord *e = first_critical_point(events))
                   {
-                    run->run(quiet, prm);
-                    converged = 1;
+                    t          = e->event.lambda;
+                    resolution = event_resolution(e->event);
+                    further    = run->further_columns(*e);
+                    if (!e->mode.empty())
+                      mode_class = run->classify_mode(as_vector(e->mode));
+                    AssertThrow(further.size() == n_more && mode_class.size() == n_mode,
+                                ExcMessage("the run's study columns differ from the study's"));
+                    // A new critical mode: the previous curve ends (a
+                    // codimension-2 point lies between the two values).
+                    // (A NaN column is one the mesh cannot classify, e.g. a
+                    // symmetry it lacks: equal to a NaN.)
+                    auto finite = [](const std::vector<double> &c) {
+                      return std::any_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
+                    };
+                    auto same = [](const std::vector<double> &a, const std::vector<double> &b) {
+                      return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](double x, double y) {
+                        return x == y || (std::isnan(x) && std::isnan(y));
+                      });
+                    };
+                    const bool classified = n_mode > 0 && finite(mode_class) &&
+                                            !previous.mode_class.empty() &&
+                                            finite(previous.mode_class);
+                    if (classified && !same(mode_class, previous.mode_class))
+                      {
+                        mode_change = 1;
+                        predictor.clear();
+                      }
+                    if (curve && converged == 1 && e->event.located_by_newton)
+                      predictor.add(sweep.value(k), t, as_vector(e->state), as_vector(e->mode));
+                    if (mode_change == 1)
+                      {
+                        std::ostringstream m;
+                        m << std::setprecision(6) << "  the critical mode changes from "
+                          << study.describe_mode(previous.mode_class) << " to "
+                          << study.describe_mode(mode_class) << " between " << sweep.label()
+                          << " = " << previous.value << " and " << sweep.value(k);
+                        std::string why = "the old mode was not continued to this value";
+                        if (curve && std::isfinite(previous_mode_t) &&
+                            previous.n_unknowns == e->state.size())
+                          {
+                            // Where the two critical curves cross: the new mode
+                            // continued back to the previous value (a few
+                            // factorizations), the secants intersected.
+                            CriticalGuess back_guess;
+                            back_guess.U    = as_vector(e->state);
+                            back_guess.mode = as_vector(e->mode);
+                            back_guess.t    = t;
+                            back_guess.fold = e->event.kind == BifurcationProblem::Event::Kind::fold;
+                            const auto back = continue_back(prm, sweep, previous.k, point + "/back",
+                                                            back_guess, quiet, study);
+                            factorizations += back.factorizations;
+                            why = std::isfinite(back.t) ?
+                                    "the secants do not cross between the values" :
+                                    "continuing the new mode back failed: " + back.message;
+                            if (std::isfinite(back.t) &&
+                                codimension_two_estimate(previous.value, previous.t, back.t,
+                                                         sweep.value(k), previous_mode_t, t,
+                                                         codim2_value, codim2_t))
+                              why.clear();
+                          }
+                        if (why.empty())
+                          m << ": codimension-2 point near " << sweep.label() << " = "
+                            << codim2_value << ", t = " << codim2_t
+                            << " (the two critical curves' secants crossed)";
+                        else
+                          m << "; no codimension-2 estimate (" << why << ")";
+                        log(m.str());
+                      }
+                    previous = {k, sweep.value(k), t, mode_class, e->state.size()};
                   }
-                catch (io::RunFailure &e)
-                  {
-                    failure = e.what();
-                  }
-              dofs = run->n_dofs();
-              factorizations += run->factorizations();
-              const auto &events = run->located_events();
-              if (const EventRecord *e = first_critical_point(events))
-                {
-                  t          = e->event.lambda;
-                  resolution = event_resolution(e->event);
-                  further    = run->further_columns(*e);
-                  if (!e->mode.empty())
-                    mode_class = run->classify_mode(as_vector(e->mode));
-                  AssertThrow(further.size() == n_more && mode_class.size() == n_mode,
-                              ExcMessage("the run's study columns differ from the study's"));
-                  // A new critical mode: the previous curve ends (a
-                  // codimension-2 point lies between the two values).
-                  // (A NaN column is one the mesh cannot classify, e.g. a
-                  // symmetry it lacks: equal to a NaN.)
-                  auto finite = [](const std::vector<double> &c) {
-                    return std::any_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
-                  };
-                  auto same = [](const std::vector<double> &a, const std::vector<double> &b) {
-                    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](double x, double y) {
-                      return x == y || (std::isnan(x) && std::isnan(y));
-                    });
-                  };
-                  const bool classified = n_mode > 0 && finite(mode_class) &&
-                                          !previous.mode_class.empty() &&
-                                          finite(previous.mode_class);
-                  if (classified && !same(mode_class, previous.mode_class))
-                    {
-                      mode_change = 1;
-                      predictor.clear();
-                    }
-                  if (curve && converged == 1 && e->event.located_by_newton)
-                    predictor.add(sweep.value(k), t, as_vector(e->state), as_vector(e->mode));
-                  if (mode_change == 1)
-                    {
-                      std::ostringstream m;
-                      m << std::setprecision(6) << "  the critical mode changes from "
-                        << study.describe_mode(previous.mode_class) << " to "
-                        << study.describe_mode(mode_class) << " between " << sweep.label()
-                        << " = " << previous.value << " and " << sweep.value(k);
-                      std::string why = "the old mode was not continued to this value";
-                      if (curve && std::isfinite(previous_mode_t) &&
-                          previous.n_unknowns == e->state.size())
-                        {
-                          // Where the two critical curves cross: the new mode
-                          // continued back to the previous value (a few
-                          // factorizations), the secants intersected.
-                          CriticalGuess back_guess;
-                          back_guess.U    = as_vector(e->state);
-                          back_guess.mode = as_vector(e->mode);
-                          back_guess.t    = t;
-                          back_guess.fold = e->event.kind == BifurcationProblem::Event::Kind::fold;
-                          const auto back = continue_back(prm, sweep, previous.k, point + "/back",
-                                                          back_guess, quiet, study);
-                          factorizations += back.factorizations;
-                          why = std::isfinite(back.t) ?
-                                  "the secants do not cross between the values" :
-                                  "continuing the new mode back failed: " + back.message;
-                          if (std::isfinite(back.t) &&
-                              codimension_two_estimate(previous.value, previous.t, back.t,
-                                                       sweep.value(k), previous_mode_t, t,
-                                                       codim2_value, codim2_t))
-                            why.clear();
-                        }
-                      if (why.empty())
-                        m << ": codimension-2 point near " << sweep.label() << " = "
-                          << codim2_value << ", t = " << codim2_t
-                          << " (the two critical curves' secants crossed)";
-                      else
-                        m << "; no codimension-2 estimate (" << why << ")";
-                      log(m.str());
-                    }
-                  previous = {k, sweep.value(k), t, mode_class, e->state.size()};
-                }
-              else if (converged == 1)
-                failure = "no critical point on the first branch";
-            }
-          catch (io::InputError &e)
-            {
-              refused += std::string(refused.empty() ? "" : "; ") + e.what();
-              failure = std::string("refused: ") + e.what();
-            }
-          if (!std::isfinite(t))
-            ++n_without;
-          const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          std::vector<double> row = {sweep.value(k), converged, t, resolution};
-          row.insert(row.end(), further.begin(), further.end());
-          row.insert(row.end(), mode_class.begin(), mode_class.end());
-          row.insert(row.end(), {dofs, seconds, factorizations, continued, mode_change,
-                                 codim2_value, codim2_t});
-          table.add_row(row);
-          // Rewritten after every point: a killed study leaves a complete table.
-          table.write(directory + "/sweep.csv");
-          if (curve)
-            table.write(directory + "/critical_curve.csv");
-          std::ostringstream line;
-          line << std::setprecision(10) << "  " << sweep.label() << " = " << sweep.value(k)
-               << ": critical t = " << t << std::setprecision(3);
-          if (std::isfinite(t))
-            line << " (resolution " << resolution << "), mode "
-                 << (n_mode > 0 ? study.describe_mode(mode_class) : std::string("-"));
-          line << ", " << factorizations << " factorizations"
-               << (continued == 1 ? " (continued)" : "") << ", " << seconds << " s";
-          if (!failure.empty())
-            line << "; " << failure;
-          log(line.str());
+                else if (converged == 1)
+                  failure = "no critical point on the first branch";
+              }
+            catch (io::InputError &e)
+              {
+                refused += std::string(refused.empty() ? "" : "; ") + e.what();
+                failure = std::string("refused: ") + e.what();
+              }
+            if (!std::isfinite(t))
+              ++n_without;
+            const double seconds =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::vector<double> row = {sweep.value(k), converged, t, resolution};
+            row.insert(row.end(), further.begin(), further.end());
+            row.insert(row.end(), mode_class.begin(), mode_class.end());
+            row.insert(row.end(), {dofs, seconds, factorizations, continued, mode_change,
+                                   codim2_value, codim2_t});
+            table.add_row(row);
+            // Rewritten after every point: a killed study leaves a complete table.
+            table.write(directory + "/sweep.csv");
+            if (curve)
+              table.write(directory + "/critical_curve.csv");
+            std::ostringstream line;
+            line << std::setprecision(10) << "  " << sweep.label() << " = " << sweep.value(k)
+                 << ": critical t = " << t << std::setprecision(3);
+            if (std::isfinite(t))
+              line << " (resolution " << resolution << "), mode "
+                   << (n_mode > 0 ? study.describe_mode(mode_class) : std::string("-"));
+            line << ", " << factorizations << " factorizations"
+                 << (continued == 1 ? " (continued)" : "") << ", " << seconds << " s";
+            if (!failure.empty())
+              line << "; " << failure;
+            log(line.str());
+            // Everything the next points depend on: a killed study goes on from here (--resume).
+            io::CheckpointWriter w;
+            w.put(k + 1);
+            table.save(w);
+            predictor.save(w);
+            w.put(previous.k);
+            w.put(previous.value);
+            w.put(previous.t);
+            w.put_vector(previous.mode_class);
+            w.put(std::uint64_t(previous.n_unknowns));
+            w.put(refused);
+            w.put(n_without);
+            io::write_checkpoint(directory, checkpoint_application, parameters, w);
+          }
         }
+      catch (io::Interrupted &)
+        {
+          log("interrupted; continue with: " + study.application + " --resume " + directory);
+          throw;
+        }
+      io::remove_checkpoint(directory);
       log("output in " + directory + "/");
       if (!refused.empty())
         throw io::InputError("Parameter sweep", "Values", sweep.entry(), refused);

@@ -1,6 +1,8 @@
 #ifndef cosmo_io_output_h
 #define cosmo_io_output_h
 
+#include <cosmo/io/checkpoint.h>
+
 #include <chrono>
 #include <fstream>
 #include <functional>
@@ -42,6 +44,11 @@ namespace cosmo
       {
         return columns.size();
       }
+      /// The rows, for a checkpoint (the columns are declared again by the run).
+      void
+      save(CheckpointWriter &w) const;
+      void
+      load(CheckpointReader &r);
 
     private:
       std::vector<std::string>         columns;
@@ -130,7 +137,7 @@ namespace cosmo
     class RunLog
     {
     public:
-      RunLog(const std::string &path, bool quiet);
+      RunLog(const std::string &path, bool quiet, bool append = false);
       /// Print a line to the terminal (unless quiet) and to the log.
       void
       operator()(const std::string &line);
@@ -150,8 +157,15 @@ namespace cosmo
       explicit PVDSeries(const std::string &pvd_path);
       void
       add(double time, const std::string &vtu_file_name);
+      /// The entries, for a checkpoint; load() also rewrites the file.
+      void
+      save(CheckpointWriter &w) const;
+      void
+      load(CheckpointReader &r);
 
     private:
+      void
+      write() const;
       std::string                                 path;
       std::vector<std::pair<double, std::string>> entries;
     };

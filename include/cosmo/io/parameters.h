@@ -43,6 +43,8 @@ namespace cosmo
     {
       std::string parameter_file;
       bool        quiet = false;
+      /// `--resume DIR`: continue the run whose checkpoint is in DIR (io/checkpoint.h).
+      std::string resume_directory;
     };
 
     struct ApplicationInfo
@@ -53,7 +55,8 @@ namespace cosmo
 
     /**
      * The whole command-line contract of an application: `app file.prm`,
-     * `--help`, `--version`, `--print-parameters [prm|json|xml]`, `--quiet`.
+     * `--help`, `--version`, `--print-parameters [prm|json|xml]`, `--quiet`,
+     * `--resume DIR` (DIR/parameters.prm, output into DIR).
      * `declare` declares all parameters, `run` parses them from the handler
      * (already filled from the file) and runs. Returns the exit status.
      */
@@ -71,13 +74,15 @@ namespace cosmo
     /**
      * The start of every run's output (doc/specification/architecture.md): create the
      * directory, write the parameters as read (parameters.prm, atomically)
-     * and open the log (log_name in it, flushed line by line).
+     * and open the log (log_name in it, flushed line by line). `resume`:
+     * continue the run there (its files kept, the log appended to).
      */
     std::unique_ptr<RunLog>
     open_run_directory(const std::string &     directory,
                        const ParameterHandler &prm,
                        bool                    quiet,
-                       const std::string &     log_name = "log.txt");
+                       const std::string &     log_name = "log.txt",
+                       bool                    resume   = false);
 
     /// Comma list of doubles of fixed length, with a clear error.
     std::vector<double>

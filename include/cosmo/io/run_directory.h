@@ -56,10 +56,11 @@ namespace cosmo
      * files of the run that wrote there before into previous/, and start
      * the manifest. Throws InputError (exit 1) if another process holds it.
      * Idempotent for a directory this process holds already. `created`:
-     * the run created it (a rollback may then remove it).
+     * the run created it (a rollback may then remove it). `resume`: the run
+     * continues the one there (--resume): its files and manifest are kept.
      */
     void
-    claim_run_directory(const std::string &directory, bool created);
+    claim_run_directory(const std::string &directory, bool created, bool resume = false);
 
     /// Add `path`, just written, to the manifest of the claimed directory it lies in (if any).
     void

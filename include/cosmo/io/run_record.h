@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <cosmo/io/checkpoint.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 
@@ -98,6 +99,21 @@ namespace cosmo
       {
         return output_directory;
       }
+      /// The run continues an interrupted one (--resume): its checkpoint was read by open().
+      bool
+      resuming() const
+      {
+        return resumed;
+      }
+      /// The payload of the checkpoint the run resumes from (after open(), if resuming()).
+      CheckpointReader &
+      checkpoint()
+      {
+        return resume_data;
+      }
+      /// Write the run's checkpoint (io/checkpoint.h) with this payload.
+      void
+      write_checkpoint(const CheckpointWriter &payload) const;
 
     private:
       std::string             application;
@@ -107,6 +123,9 @@ namespace cosmo
       std::string             status = "converged";
       std::string             message;
       int                     signal = 0; ///< of an interrupted run
+      std::string             parameters; ///< checkpoint_parameters() of the run
+      bool                    resumed = false;
+      CheckpointReader        resume_data;
     };
   } // namespace io
 } // namespace cosmo

@@ -4,11 +4,13 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/io/checkpoint.h>
 #include <cosmo/io/output.h>
 #include <cosmo/solvers/continuation.h>
 #include <cosmo/solvers/newton.h>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -235,6 +237,12 @@ namespace cosmo
       BifurcationProblem::Event event;
       std::vector<double>       state; ///< U at the event
       std::vector<double>       mode;  ///< null vector (branch points)
+
+      /// For a checkpoint (io/checkpoint.h): every field, bitwise.
+      void
+      save(io::CheckpointWriter &w) const;
+      void
+      load(io::CheckpointReader &r);
     };
 
     class ArclengthContinuation
@@ -243,6 +251,27 @@ namespace cosmo
       ArclengthContinuation(const ArclengthSettings &settings, const NewtonSettings &newton);
 
       std::function<void(const std::string &)> progress;
+
+      /**
+       * Called at the start of every branch and after every converged step
+       * (after problem.converged_step()), where the driver can go on from
+       * what save() writes: the application writes its checkpoint then
+       * (io/checkpoint.h), the driver's state with its own.
+       */
+      std::function<void()> checkpoint;
+
+      /// The driver's state at the last checkpoint() call.
+      void
+      save(io::CheckpointWriter &w) const;
+
+      /**
+       * Restore a state save() wrote: the next run() goes on from it (the
+       * starting point and the steps, events and branches before it are not
+       * done again, nor reported), and reaches what an uninterrupted run
+       * reaches.
+       */
+      void
+      load(io::CheckpointReader &r);
 
       /**
        * Follow the branch through (U, lambda), which must be (nearly) a
@@ -290,6 +319,26 @@ namespace cosmo
         double         sign       = 0; ///< of a switch start: +1 along +phi, -1 along -phi
       };
 
+      /// Where the run is: everything a resumed run needs to go on (save(), load()).
+      struct Progress
+      {
+        std::vector<EventRecord> events;
+        std::vector<State>       switches; ///< branch starts queued, depth first
+        /// lambda of the first point of the +phi branch of each switch (mirror images).
+        std::map<std::pair<unsigned int, double>, double> plus_lambda;
+        unsigned int step       = 0;
+        unsigned int branch     = 0;                 ///< being followed
+        std::size_t  q          = no_switch;         ///< its entry in switches (no_switch: branch 0)
+        std::size_t  queued     = 0;                 ///< switches.size() when it started
+        bool         may_switch = false;
+        State        s;                              ///< its last converged state
+        double       ds = 0;                         ///< the next step length
+        unsigned int k  = 0;                         ///< steps taken on it
+        static constexpr std::size_t no_switch = static_cast<std::size_t>(-1);
+      };
+      Progress at;
+      bool     resume = false; ///< load() was called: run() goes on from `at`
+
       ArclengthSettings settings;
       NewtonSettings    newton;
       double            theta = 1;
@@ -323,7 +372,9 @@ namespace cosmo
              bool                      may_switch,
              std::vector<EventRecord> &events,
              std::vector<State> &      switches,
-             unsigned int &            step);
+             unsigned int &            step,
+             double                    ds,
+             unsigned int              k0);
       /**
        * The crossings of the stability count between s and next (a step of
        * length ds along s's tangent): each isolated by bisection of the count

@@ -3,6 +3,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/io/checkpoint.h>
+
 #include <string>
 #include <vector>
 
@@ -59,6 +61,32 @@ namespace cosmo
       bool
       predict(double p, Vector<double> &U, double &lambda, Vector<double> &mode,
               unsigned int *order = nullptr) const;
+
+      /// The points, for a study's checkpoint (io/checkpoint.h).
+      void
+      save(io::CheckpointWriter &w) const
+      {
+        w.put(std::uint64_t(points.size()));
+        for (const auto &x : points)
+          {
+            w.put(x.p);
+            w.put(x.lambda);
+            w.put_vector(x.U);
+            w.put_vector(x.mode);
+          }
+      }
+      void
+      load(io::CheckpointReader &r)
+      {
+        points.resize(r.get_size());
+        for (auto &x : points)
+          {
+            x.p      = r.get_double();
+            x.lambda = r.get_double();
+            r.get_vector(x.U);
+            r.get_vector(x.mode);
+          }
+      }
 
     private:
       struct Point
