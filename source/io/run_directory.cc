@@ -183,6 +183,11 @@ namespace cosmo
         {
           // The run goes on: its files stay, its manifest grows.
           c.resumed = true;
+          // A killed run may have left the file it was writing half done.
+          std::error_code ec;
+          for (const auto &e : fs::directory_iterator(dir, ec))
+            if (e.is_regular_file() && e.path().filename().string().find(".tmp.") != std::string::npos)
+              fs::remove(e.path(), ec);
           std::ifstream manifest(dir / manifest_name);
           std::string   line;
           while (std::getline(manifest, line))

@@ -87,6 +87,10 @@ namespace cosmo
           throw NewtonFailure(std::string("KINSOL stopped: ") + e.what());
         }
 
+      // A signal ends the solve with an error KINSOL does not report in
+      // Release: whatever U is now, it is an interruption, not a failure
+      // (which a caller might work around, e.g. by bisecting an event).
+      io::check_interrupt();
       // KINSOL reports failure only through (Debug-mode) assertions: check.
       Vector<double> R(n);
       const int      status = system.residual(U, R);
