@@ -9,6 +9,7 @@
 #include <cosmo/solvers/newton.h>
 
 #include <cmath>
+#include <chrono>
 #include <filesystem>
 #include <sstream>
 
@@ -72,7 +73,8 @@ namespace cosmo
                            const std::function<void()> &                    save,
                            const std::function<void()> &                    restore,
                            const std::string &                              directory,
-                           const std::function<void(const std::string &)> &progress) const
+                           const std::function<void(const std::string &)> &progress,
+                           const TableCheckpointing &                       checkpointing) const
     {
       auto value = [](double a, double b, unsigned int n, unsigned int i) {
         return n == 1 ? a : a + (b - a) * i / (n - 1);
@@ -94,14 +96,53 @@ namespace cosmo
       std::array<double, 6> last = start;
       save();
       unsigned int          n_failed = 0;
-      for (unsigned int i = 0; i < n1; ++i)
-        for (unsigned int jj = 0; jj < n2; ++jj)
+      // Points are taken in serpentine order; `next` of them are done.
+      unsigned int next = 0;
+      auto write_checkpoint = [&]() {
+        if (!checkpointing.write)
+          return;
+        io::CheckpointWriter w;
+        w.put(next);
+        w.put(n_failed);
+        w.put_vector(last);
+        w.put_vector(energy);
+        w.put_vector(resultants);
+        w.put_vector(stiffness);
+        w.put_vector(converged);
+        table.save(w);
+        checkpointing.save_start(w);
+        checkpointing.write(w);
+      };
+      if (checkpointing.resume)
+        {
+          io::CheckpointReader &r = *checkpointing.resume;
+          next                    = r.get_unsigned();
+          n_failed                = r.get_unsigned();
+          const auto l            = r.get_vector();
+          std::copy(l.begin(), l.end(), last.begin());
+          energy     = r.get_vector();
+          resultants = r.get_vector();
+          stiffness  = r.get_vector();
+          converged  = r.get_vector();
+          table.load(r);
+          checkpointing.load_start(r);
+          save();
+          if (energy.size() != N || next > N)
+            throw std::runtime_error("the checkpoint's table has another size");
+          progress("  going on after " + std::to_string(next) + " of " + std::to_string(N) +
+                   " table points");
+        }
+      auto last_checkpoint = std::chrono::steady_clock::now();
+      for (; next < N; ++next)
           {
+            const unsigned int i = next / n2, jj = next % n2;
             const unsigned int    j = (i % 2 == 0) ? jj : n2 - 1 - jj; // serpentine
             if (io::pending_signal() != 0)
               {
-                // Interrupted: the rows so far as a complete (shorter) table.
+                // Interrupted: the rows so far as a complete (shorter) table,
+                // and the checkpoint to go on from.
                 table.write(directory + "/table.csv");
+                write_checkpoint();
                 io::check_interrupt();
               }
             std::array<double, 6> e = base;
@@ -154,6 +195,15 @@ namespace cosmo
               }
             row.resize(table.n_columns(), NAN);
             table.add_row(row);
+            // A checkpoint a second: what a kill can lose, against the cost of writing the table.
+            if (std::chrono::steady_clock::now() - last_checkpoint > std::chrono::seconds(1))
+              {
+                ++next;
+                table.write(directory + "/table.csv"); // a killed run leaves the rows so far
+                write_checkpoint();
+                --next;
+                last_checkpoint = std::chrono::steady_clock::now();
+              }
           }
       table.write(directory + "/table.csv");
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <cosmo/io/checkpoint.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 
 #include <functional>
@@ -24,6 +25,24 @@ namespace cosmo
 {
   namespace assembly
   {
+    /**
+     * Checkpoints of a table (io/checkpoint.h): after a finished point (at
+     * most once a second, and at a signal) the points so far and the
+     * state the next point starts from; a run given `resume` goes on
+     * after the last point it holds and writes the table an
+     * uninterrupted run writes.
+     */
+    struct TableCheckpointing
+    {
+      /// Write the run's checkpoint with this payload.
+      std::function<void(const io::CheckpointWriter &)> write;
+      /// The state `save` keeps (the next point's start), into and out of a checkpoint.
+      std::function<void(io::CheckpointWriter &)> save_start;
+      std::function<void(io::CheckpointReader &)> load_start;
+      /// Go on from this checkpoint's payload (nullptr: from the start).
+      io::CheckpointReader *resume = nullptr;
+    };
+
     class ConstitutiveTable
     {
     public:
@@ -55,7 +74,8 @@ namespace cosmo
           const std::function<void()> &save,
           const std::function<void()> &restore,
           const std::string &          directory,
-          const std::function<void(const std::string &)> &progress) const;
+          const std::function<void(const std::string &)> &progress,
+          const TableCheckpointing &   checkpointing = {}) const;
 
       unsigned int first = 3, second = 5; ///< strain indices
       double       from1 = 0, to1 = 1, from2 = 0, to2 = 1;
