@@ -7,6 +7,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <cosmo/io/checkpoint.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
 #include <cosmo/io/resources.h>
@@ -688,6 +689,7 @@ namespace cosmo
         }
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
+      connect_checkpoints(driver);
       driver.run(*this, solution);
       return last_state;
     }
@@ -737,6 +739,10 @@ namespace cosmo
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("min_elastic_J");
 
+      // Checkpoints after every converged step; --resume goes on from the last.
+      write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
+      if (record.resuming())
+        resume_from = &record.checkpoint();
       record.attempt([&]() { solve(); });
       if (!record.failed())
         say_result();
@@ -784,7 +790,15 @@ namespace cosmo
       prm.enter_subsection("Output");
       const std::string base = prm.get("Output directory");
       prm.leave_subsection();
-      const auto log_file = io::open_run_directory(base, prm, options.quiet, "sweep-log.txt");
+      // A sweep resumed (--resume) goes on after its last finished point; a
+      // checkpoint of other parameters is refused before anything is touched.
+      const std::string    parameters = io::checkpoint_parameters(prm);
+      const bool           resume     = !options.resume_directory.empty();
+      io::CheckpointReader resumed;
+      if (resume)
+        resumed = io::read_checkpoint(base, "rod_cross_section sweep", parameters);
+      const auto log_file =
+        io::open_run_directory(base, prm, options.quiet, "sweep-log.txt", resume);
       auto &     log      = *log_file;
       log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
           ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
@@ -807,12 +821,29 @@ namespace cosmo
 
       unsigned int             n_failed = 0;
       std::vector<std::string> rejected;
-      for (unsigned int k = 0; k < sweep.size(); ++k)
+      unsigned int             k0 = 0;
+      if (resume)
         {
+          k0       = resumed.get_unsigned();
+          n_failed = resumed.get_unsigned();
+          rejected = resumed.get_strings();
+          table.load(resumed);
+          table.write(base + "/sweep.csv");
+          log("  resumed from the checkpoint: " + std::to_string(k0) + " of " +
+              std::to_string(sweep.size()) + " values done");
+        }
+      for (unsigned int k = k0; k < sweep.size(); ++k)
+        {
+          auto interrupted = [&]() {
+            log("interrupted; continue with: rod_cross_section --resume " + base);
+          };
+          if (io::pending_signal() != 0)
+            interrupted();
           io::check_interrupt(); // between points: sweep.csv holds every point done so far
           sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(base, k));
           io::RunOptions point_options = options;
           point_options.quiet          = true; // the point's log.txt has the details
+          point_options.resume_directory.clear(); // a point is run whole again
           std::vector<double> row = {double(k), sweep.value(k)};
           std::ostringstream  line;
           line << "point " << k + 1 << "/" << sweep.size() << ": " << sweep.label() << " = "
@@ -839,6 +870,11 @@ namespace cosmo
                 line << (i ? ", " : "") << io::format_significant(s.strains[i], 6);
               line << ")  " << h.description();
             }
+          catch (io::Interrupted &)
+            {
+              interrupted();
+              throw;
+            }
           catch (io::RunFailure &e)
             {
               ++n_failed;
@@ -860,7 +896,14 @@ namespace cosmo
           // Rewritten after every point: a killed sweep leaves a complete table.
           table.add_row(row);
           table.write(base + "/sweep.csv");
+          io::CheckpointWriter w;
+          w.put(k + 1);
+          w.put(n_failed);
+          w.put(rejected);
+          table.save(w);
+          io::write_checkpoint(base, "rod_cross_section sweep", parameters, w);
         }
+      io::remove_checkpoint(base);
       log("sweep table: " + base + "/sweep.csv");
       if (!rejected.empty())
         {

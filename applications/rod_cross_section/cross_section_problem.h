@@ -98,6 +98,11 @@ namespace cosmo
       // ContinuationProblem
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      /// The path so far, steps.csv's rows and the PVD lists, for a checkpoint.
+      void
+      save_progress(io::CheckpointWriter &w) const override;
+      void
+      load_progress(io::CheckpointReader &r) override;
 
       /**
        * The parity of a mode's field under the half-turn of the rod about the

@@ -110,6 +110,40 @@ namespace cosmo
     } // namespace
 
     void
+    CrossSectionProblem::save_progress(io::CheckpointWriter &w) const
+    {
+      ReducedRodProblem::save_progress(w);
+      w.put_vector(solution);
+      steps_table.save(w);
+      pvd->save(w);
+      pvd_rod->save(w);
+      w.put(pvd_surface != nullptr);
+      if (pvd_surface)
+        pvd_surface->save(w);
+    }
+
+    void
+    CrossSectionProblem::load_progress(io::CheckpointReader &r)
+    {
+      ReducedRodProblem::load_progress(r);
+      r.get_vector(solution);
+      steps_table.load(r);
+      pvd->load(r);
+      pvd_rod->load(r);
+      if (r.get_bool() != (pvd_surface != nullptr))
+        throw std::runtime_error("the checkpoint's output differs from this run's");
+      if (pvd_surface)
+        pvd_surface->load(r);
+      if (solution.size() != n_unknowns())
+        throw std::runtime_error("the checkpoint's state has another number of unknowns");
+      // The state reported last (the summary's, should no step follow).
+      last_state = current_state();
+      steps_table.write(output_directory + "/steps.csv");
+      say("  going on after step " + std::to_string(visited.size() - 1) + " at t = " +
+          io::format_number(load_parameter));
+    }
+
+    void
     CrossSectionProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
     {
       solution = U;

@@ -25,6 +25,31 @@ namespace cosmo
   namespace strip
   {
     void
+    StripProblem::save_progress(io::CheckpointWriter &w) const
+    {
+      ReducedRodProblem::save_progress(w);
+      w.put_vector(solution);
+      w.put_vector(event_parities);
+      steps_table.save(w);
+    }
+
+    void
+    StripProblem::load_progress(io::CheckpointReader &r)
+    {
+      ReducedRodProblem::load_progress(r);
+      r.get_vector(solution);
+      event_parities = r.get_vector();
+      steps_table.load(r);
+      if (solution.size() != n_unknowns())
+        throw std::runtime_error("the checkpoint's state has another number of unknowns");
+      // The state reported last (the summary's, should no step follow).
+      last_state = condensed_state(solution);
+      steps_table.write(output_directory + "/steps.csv");
+      say("  going on after step " + std::to_string(visited.size() - 1) + " at t = " +
+          io::format_number(load_parameter));
+    }
+
+    void
     StripProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
     {
       solution   = U;

@@ -265,6 +265,7 @@ namespace cosmo
     {
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
+      connect_checkpoints(driver);
       driver.run(*this, solution);
       return last_state;
     }
@@ -285,6 +286,14 @@ namespace cosmo
       follow_path(arclength_settings, newton_settings, solution,
                   [this](const std::string &s) { say(s); });
       return event_records();
+    }
+
+    void
+    StripProblem::connect_run_checkpoints()
+    {
+      write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
+      if (record.resuming())
+        resume_from = &record.checkpoint();
     }
 
     void
@@ -337,9 +346,15 @@ namespace cosmo
             write_output = true;
           }
         else if (arclength_settings.enabled)
-          follow_branches();
+          {
+            connect_run_checkpoints();
+            follow_branches();
+          }
         else
-          solve();
+          {
+            connect_run_checkpoints();
+            solve();
+          }
       });
       io::JSON j       = record.summary();
       j["width"]       = strip_width;

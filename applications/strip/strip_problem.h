@@ -84,6 +84,14 @@ namespace cosmo
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
+      /// This run's checkpoints (written into its directory; resumed with --resume).
+      void
+      connect_run_checkpoints();
+      /// The path so far and steps.csv's rows, for a checkpoint.
+      void
+      save_progress(io::CheckpointWriter &w) const override;
+      void
+      load_progress(io::CheckpointReader &r) override;
 
       /// Follow the path by arclength continuation, with event location and branch switching.
       std::vector<solvers::EventRecord>

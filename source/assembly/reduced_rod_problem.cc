@@ -341,6 +341,61 @@ namespace cosmo
       records.push_back(std::move(r));
     }
 
+    void
+    ReducedRodProblem::save_progress(io::CheckpointWriter &w) const
+    {
+      w.put(load_parameter);
+      w.put(total_newton_iterations);
+      w.put(std::uint64_t(visited.size()));
+      for (const auto &p : visited)
+        {
+          w.put(p.t);
+          w.put(p.branch);
+          w.put(p.energy);
+          w.put(p.n_negative);
+          w.put_vector(p.strains);
+          w.put_vector(p.resultants);
+        }
+      w.put(std::uint64_t(records.size()));
+      for (unsigned int k = 0; k < records.size(); ++k)
+        {
+          records[k].save(w);
+          w.put_vector(strains_at_events[k]);
+        }
+    }
+
+    void
+    ReducedRodProblem::load_progress(io::CheckpointReader &r)
+    {
+      auto get6 = [&r](std::array<double, 6> &a) {
+        const auto v = r.get_vector();
+        if (v.size() != 6)
+          throw std::runtime_error("the checkpoint is damaged (6 strains expected)");
+        std::copy(v.begin(), v.end(), a.begin());
+      };
+      load_parameter          = r.get_double();
+      total_newton_iterations = r.get_unsigned();
+      visited.resize(r.get_size());
+      for (auto &p : visited)
+        {
+          p.t          = r.get_double();
+          p.branch     = r.get_unsigned();
+          p.energy     = r.get_double();
+          p.n_negative = r.get_int();
+          get6(p.strains);
+          get6(p.resultants);
+        }
+      records.resize(r.get_size());
+      strains_at_events.resize(records.size());
+      located_events.clear();
+      for (unsigned int k = 0; k < records.size(); ++k)
+        {
+          records[k].load(r);
+          get6(strains_at_events[k]);
+          located_events.push_back(records[k].event);
+        }
+    }
+
     std::vector<double>
     ReducedRodProblem::critical_point_columns(const solvers::EventRecord &e) const
     {
@@ -367,6 +422,7 @@ namespace cosmo
       driver.progress = progress;
       if (!critical_guess)
         {
+          connect_checkpoints(driver);
           driver.run(*this, U, 0.);
           return;
         }

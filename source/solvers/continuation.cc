@@ -57,6 +57,29 @@ namespace cosmo
       , newton(newton)
     {}
 
+    void
+    NaturalParameterContinuation::save(io::CheckpointWriter &w) const
+    {
+      w.put(at.t);
+      w.put_vector(at.U);
+      w.put_vector(at.U_previous);
+      w.put(at.dt_previous);
+      w.put(at.dt);
+      w.put(at.step);
+    }
+
+    void
+    NaturalParameterContinuation::load(io::CheckpointReader &r)
+    {
+      at.t = r.get_double();
+      r.get_vector(at.U);
+      r.get_vector(at.U_previous);
+      at.dt_previous = r.get_double();
+      at.dt          = r.get_double();
+      at.step        = r.get_unsigned();
+      resume         = true;
+    }
+
     unsigned int
     NaturalParameterContinuation::run(ContinuationProblem &problem, Vector<double> &U)
     {
@@ -65,25 +88,52 @@ namespace cosmo
           progress(s);
       };
 
-      double t = settings.start;
-      problem.set_load_parameter(t);
-      // Step 0: the starting state must be converged too (it usually is exact).
-      StepReport report;
-      {
-        const NewtonResult r     = newton_solve(problem, U, newton);
-        report.step              = 0;
-        report.t                 = t;
-        report.newton_iterations = r.iterations;
-        report.residual_norm     = r.residual_norm;
-        report.final             = (t >= settings.target);
-        problem.converged_step(U, report);
-      }
-
+      double         t = settings.start;
+      StepReport     report;
       Vector<double> U_previous = U;
       double         dt_previous = 0;
       double         dt          = settings.initial_step;
       unsigned int   step        = 0;
       unsigned int   cutbacks    = 0;
+      auto           save_point  = [&]() {
+        if (!checkpoint)
+          return;
+        at.t           = t;
+        at.U           = U;
+        at.U_previous  = U_previous;
+        at.dt_previous = dt_previous;
+        at.dt          = dt;
+        at.step        = step;
+        checkpoint();
+      };
+      if (resume)
+        {
+          // Go on from the checkpoint's state (its steps are written already).
+          resume      = false;
+          t           = at.t;
+          U           = at.U;
+          U_previous  = at.U_previous;
+          dt_previous = at.dt_previous;
+          dt          = at.dt;
+          step        = at.step;
+        }
+      else
+        {
+          problem.set_load_parameter(t);
+          // Step 0: the starting state must be converged too (it usually is exact).
+          {
+            const NewtonResult r     = newton_solve(problem, U, newton);
+            report.step              = 0;
+            report.t                 = t;
+            report.newton_iterations = r.iterations;
+            report.residual_norm     = r.residual_norm;
+            report.final             = (t >= settings.target);
+            problem.converged_step(U, report);
+          }
+          U_previous = U;
+          save_point();
+        }
+
       while (t < settings.target - 1e-14)
         {
           io::check_interrupt(); // between steps: the last converged state is written
@@ -120,6 +170,7 @@ namespace cosmo
               cutbacks = 0;
               if (r.iterations <= settings.easy_iterations)
                 dt = std::min(settings.maximum_step, dt * settings.growth_factor);
+              save_point();
             }
           catch (NewtonFailure &e)
             {

@@ -268,6 +268,48 @@ namespace cosmo
                            const std::function<void(unsigned int, io::JSON &)> &event_extra = {}) const;
 
       /**
+       * Checkpoints (io/checkpoint.h), set by the application's run(): how
+       * to write one, and the one to resume from (nullptr: start afresh).
+       * follow_path() and the application's natural-parameter path call
+       * connect_checkpoints() on their driver.
+       */
+      std::function<void(const io::CheckpointWriter &)> write_checkpoint;
+      io::CheckpointReader *                            resume_from = nullptr;
+
+      /// The path so far (visited states, events); an application adds what it writes.
+      virtual void
+      save_progress(io::CheckpointWriter &w) const;
+      virtual void
+      load_progress(io::CheckpointReader &r);
+
+      /**
+       * A driver (arclength or natural parameter) resumes from resume_from
+       * if set, and writes a checkpoint of its state and save_progress()
+       * after every converged step if write_checkpoint is set.
+       */
+      template <typename Driver>
+      void
+      connect_checkpoints(Driver &driver)
+      {
+        if (resume_from)
+          {
+            driver.load(*resume_from);
+            load_progress(*resume_from);
+            if (!resume_from->at_end())
+              throw std::runtime_error("the checkpoint holds more than this run reads");
+            resume_from = nullptr;
+          }
+        if (write_checkpoint)
+          driver.checkpoint = [this, &driver]() {
+            io::PhaseTimer::Scope scope(timer, "checkpoint");
+            io::CheckpointWriter  w;
+            driver.save(w);
+            save_progress(w);
+            write_checkpoint(w);
+          };
+      }
+
+      /**
        * Arclength continuation from U at t = 0 (every converged state and
        * event reported through converged_step() and located_event()), or,
        * after start_from_critical_point(), the critical point located from

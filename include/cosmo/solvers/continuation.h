@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/io/checkpoint.h>
 #include <cosmo/solvers/newton.h>
 
 #include <functional>
@@ -84,9 +85,31 @@ namespace cosmo
       unsigned int
       run(ContinuationProblem &problem, Vector<double> &U);
 
+      /**
+       * Called after every converged step (after problem.converged_step()),
+       * where the driver can go on from what save() writes: the application
+       * writes its checkpoint then (io/checkpoint.h).
+       */
+      std::function<void()> checkpoint;
+      /// The driver's state at the last checkpoint() call.
+      void
+      save(io::CheckpointWriter &w) const;
+      /// Restore it: the next run() goes on from there (U is set to its state).
+      void
+      load(io::CheckpointReader &r);
+
     private:
       ContinuationSettings settings;
       NewtonSettings       newton;
+      /// Where the path is: the last two converged states, the step lengths, the steps taken.
+      struct Progress
+      {
+        double         t = 0;
+        Vector<double> U, U_previous;
+        double         dt_previous = 0, dt = 0;
+        unsigned int   step        = 0;
+      } at;
+      bool resume = false;
     };
   } // namespace solvers
 } // namespace cosmo

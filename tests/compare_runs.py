@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Do two runs have the same result? usage: compare_runs.py A B [table.csv ...]
+
+Every number of the named tables and of summary.json (events, states,
+stiffness, ...) must agree to 1e-12 relative (of the larger, or for a
+table column of its largest value); wall times, file names and messages
+are not results. A resumed run goes on from bitwise the state it saved,
+so it reaches the uninterrupted numbers to round-off or better. Prints
+what differs and exits 1 if anything does.
+"""
+import csv
+import json
+import math
+import sys
+
+SKIP = {"timings", "seconds", "parameter_file", "message", "pid"}
+
+
+def close(x, y, scale):
+    if x == y or (math.isnan(x) and math.isnan(y)):
+        return True
+    return abs(x - y) <= 1e-12 * max(scale, abs(x), abs(y), 1e-300)
+
+
+def walk(a, b, path, bad):
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in sorted(set(a) | set(b)):
+            if k in SKIP:
+                continue
+            if k not in a or k not in b:
+                bad.append("%s/%s only in one run" % (path, k))
+            else:
+                walk(a[k], b[k], path + "/" + k, bad)
+    elif isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            bad.append("%s: %d against %d items" % (path, len(a), len(b)))
+        for k, (x, y) in enumerate(zip(a, b)):
+            walk(x, y, "%s[%d]" % (path, k), bad)
+    elif isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool):
+        if not close(float(a), float(b), 0):
+            bad.append("%s: %r against %r" % (path, a, b))
+    elif a is None and b is None:
+        pass
+    elif a != b and not (isinstance(a, str) and a.endswith((".vtu", ".pvd", "/"))):
+        bad.append("%s: %r against %r" % (path, a, b))
+
+
+def main():
+    a, b, tables = sys.argv[1], sys.argv[2], sys.argv[3:]
+    bad = []
+    for table in tables:
+        ra = list(csv.reader(open(a + "/" + table)))
+        rb = list(csv.reader(open(b + "/" + table)))
+        if ra[0] != rb[0] or len(ra) != len(rb):
+            bad.append("%s: %d against %d rows" % (table, len(ra), len(rb)))
+            continue
+        for c, name in enumerate(ra[0]):
+            if name.split(" ")[0] in SKIP:
+                continue
+            col = [(float(x[c]), float(y[c])) for x, y in zip(ra[1:], rb[1:])]
+            scale = max([abs(x) for x, _ in col if not math.isnan(x)] + [0])
+            bad += ["%s column %s row %d: %r against %r" % (table, name, k + 1, x, y)
+                    for k, (x, y) in enumerate(col) if not close(x, y, scale)][:2]
+    try:
+        sa, sb = json.load(open(a + "/summary.json")), json.load(open(b + "/summary.json"))
+        walk(sa, sb, "summary.json", bad)
+    except FileNotFoundError:
+        pass  # a study: its table is its result
+    for line in bad[:20]:
+        print(line)
+    sys.exit(1 if bad else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Part 1 and 2 paths killed and resumed (--resume): the strip's twist
+# buckling (arclength, events, a switched branch) stopped by SIGTERM at step
+# 20 and SIGKILL at step 50, and a section's natural-parameter growth path
+# stopped by SIGKILL after step 2, and a sweep of a section over a parameter
+# killed after its third point, each resumed to the end, reach the
+# uninterrupted run's tables and summary.json (tests/compare_runs.py).
+# usage: robustness_paths.sh <strip> <rod_cross_section> <scratch dir>
+set -uo pipefail
+strip=$(realpath "$1") rod=$(realpath "$2") dir=$3
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+fail=0
+ok() { echo "  ok    $1"; }
+bad() { echo "  FAIL  $1"; fail=1; }
+wait_for() { for _ in $(seq 1 1200); do grep -q "$2" "$1" 2>/dev/null && return 0; sleep 0.05; done; return 1; }
+with_output() { sed -e "s|^\( *set Output directory *=\).*|\1 $2|" "$1"; }
+# resume_case <exe> <example> <name> <signal:step-pattern>...
+resume_case() {
+  local exe=$1 prm=$2 name=$3; shift 3
+  with_output "$prm" "$name-whole" > "$name-whole.prm"
+  timeout 300 "$exe" --quiet "$name-whole.prm" > "$name-whole.txt" 2>&1 || { bad "$name: the uninterrupted run failed"; return; }
+  with_output "$prm" "$name" > "$name.prm"
+  local args=("$name.prm") exits=""
+  for stop in "$@"; do
+    "$exe" --quiet "${args[@]}" > "$name-$stop.txt" 2>&1 & local pid=$!
+    wait_for "$name/log.txt" "^step *${stop#*:} "; kill -"${stop%%:*}" $pid; wait $pid 2>/dev/null
+    exits="$exits $?"; args=(--resume "$name")
+  done
+  timeout 300 "$exe" --quiet --resume "$name" > "$name-last.txt" 2>&1; exits="$exits $?"
+  local why; why=$(python3 "$here/compare_runs.py" "$name-whole" "$name" steps.csv)
+  local want=""; for stop in "$@"; do want="$want $([ "${stop%%:*}" = KILL ] && echo 137 || echo 143)"; done
+  local resumed; resumed=$(grep -c "going on after step" "$name/log.txt")
+  if [ "$exits" = "$want 0" ] && [ -z "$why" ] && [ ! -f "$name/checkpoint.cosmo" ] && [ "$resumed" = $# ]; then
+    ok "$name stopped at $* and resumed: the uninterrupted steps.csv and summary.json"
+  else bad "$name: exits$exits (expected$want 0), $resumed resumes; $why"; tail -3 "$name-last.txt"; fi
+}
+resume_case "$strip" "$here/../parameter_files/strip/twist_buckling.prm" twist_buckling TERM:20 KILL:50
+resume_case "$rod" "$here/../parameter_files/rod_cross_section/surface_growth.prm" surface_growth KILL:2
+# A section's sweep (one run per value) killed after its third point and resumed.
+with_output "$here/../parameter_files/rod_cross_section/studies/twist_vs_fibre_angle.prm" sweep-whole > sweep-whole.prm
+timeout 300 "$rod" --quiet sweep-whole.prm > sweep-whole.txt 2>&1 || bad "the uninterrupted sweep failed"
+with_output "$here/../parameter_files/rod_cross_section/studies/twist_vs_fibre_angle.prm" sweep > sweep.prm
+"$rod" --quiet sweep.prm > sweep-0.txt 2>&1 & pid=$!
+wait_for sweep/sweep-log.txt "^point 3/"; kill -KILL $pid; wait $pid 2>/dev/null; s1=$?
+timeout 300 "$rod" --quiet --resume sweep > sweep-1.txt 2>&1; s2=$?
+why=$(python3 "$here/compare_runs.py" sweep-whole sweep sweep.csv)
+if [ $s1 -eq 137 ] && [ $s2 -eq 0 ] && [ -z "$why" ] && grep -q "resumed from the checkpoint: [1-8] of 9" sweep/sweep-log.txt &&
+   [ ! -f sweep/checkpoint.cosmo ]; then
+  ok "a section sweep killed after point 3 and resumed: the uninterrupted sweep.csv"
+else bad "section sweep: exits $s1 $s2; $why"; cat sweep-1.txt; fi
+exit $fail
