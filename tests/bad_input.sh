@@ -28,6 +28,10 @@ mkdir -p a_directory.prm
 expect "a directory as the parameter file" "'a_directory.prm' is not a regular file (a directory)" a_directory.prm
 { base; echo "include ."; } > include_dir.prm
 expect "an include of a directory" "'.' (included from 'include_dir.prm') is not a regular file" include_dir.prm
+printf '{"Output": {"Output directory"' > truncated.json
+expect "a truncated JSON parameter file (file and line named)" "in parameter file 'truncated.json': The provided JSON file is not valid. Boost aborted with the following assert message: line 1: expected ':'" truncated.json
+printf '<?xml version="1.0"?>\n<ParameterHandler><Output><Output_20directory>x</Output' > truncated.xml
+expect "a truncated XML parameter file (file and line named)" "in parameter file 'truncated.xml': line 2: expected > (the file is not complete XML)" truncated.xml
 { base; echo "set Undeclared entry = 3"; } > undeclared.prm
 expect "undeclared entry" "Undeclared entry" undeclared.prm
 { base; printf 'subsection Cross-section\n set Shape = hexagon\nend\n'; } > shape.prm

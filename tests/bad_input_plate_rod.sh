@@ -46,4 +46,9 @@ expect "a NaN in the rim's natural curvature" "Natural curvature" rimcurv.prm
 expect "a mesh far larger than memory (refused before refining, ~500 GB estimated)" "fits in this machine's memory" huge.prm
 { base; printf 'subsection Plate\n set Thickness = 1e-300\nend\n'; } > thin.prm
 expect "a plate too thin for double precision (names the thickness)" "entry 'Thickness' = '1e-300': h/R >= 1e-5" thin.prm
+printf '{"stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,-1,0,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]}\n' > negative.json
+{ base; printf 'subsection Rim rod\n set Stiffness file = negative.json\nend\n'; } > negative.prm
+expect "a stiffness file with a negative EA (names the file, not the unused Stiffnesses)" "entry 'Stiffness file' = 'negative.json (its diagonal)': every stiffness must be positive (EA = -1 is not)" negative.prm
+printf 'subsection Output\n set Output directory = ab\000cd\nend\n' > nul.prm
+expect "a NUL byte in the output directory (shown, its position named)" "a path without control characters (character 3 is 0x00" nul.prm
 exit $fail

@@ -173,7 +173,7 @@ namespace cosmo
     } // namespace
 
     void
-    PlateRodProblem::check_rim_stiffness(const std::string &text) const
+    PlateRodProblem::check_rim_stiffness(const std::string &entry, const std::string &text) const
     {
       // The rim against the plate: beyond 1e8 times the plate's own stiffness
       // the coupled Hessian loses every digit of the plate's contribution in
@@ -185,9 +185,9 @@ namespace cosmo
         {
           const double scale = i < 3 ? Eh * radius : D * radius;
           if (!(rod_stiffness[i] > 0))
-            throw io::InputError("Rim rod", "Stiffnesses", text,
+            throw io::InputError("Rim rod", entry, text,
                                  std::string("every stiffness must be positive (") + names[i] +
-                                   " is not)");
+                                   " = " + io::format_number(rod_stiffness[i]) + " is not)");
           if (rod_stiffness[i] > 1e8 * scale)
             {
               std::ostringstream m;
@@ -195,7 +195,7 @@ namespace cosmo
                 << " times the plate's " << (i < 3 ? "E h R" : "D R")
                 << ": stiffer than representable next to the plate in double precision (at "
                    "most 1e8 times); a rim 1e6 times stiffer is already rigid to 1e-6";
-              throw io::InputError("Rim rod", "Stiffnesses", text, m.str());
+              throw io::InputError("Rim rod", entry, text, m.str());
             }
         }
     }
@@ -259,7 +259,11 @@ namespace cosmo
       if (!(rod_growth > 0))
         throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
                              "must be positive");
-      check_rim_stiffness(prm.get("Stiffnesses"));
+      // The stiffnesses in use are the file's if one is given: its entry is named.
+      if (stiffness_file.empty())
+        check_rim_stiffness("Stiffnesses", prm.get("Stiffnesses"));
+      else
+        check_rim_stiffness("Stiffness file", stiffness_file + " (its diagonal)");
       prm.leave_subsection();
 
       prm.enter_subsection("Model");

@@ -347,7 +347,7 @@ namespace cosmo
       /// io::InputError (entry 'Rim rod / Stiffnesses' = text) unless every rim stiffness is
       /// positive and at most 1e8 times the plate's.
       void
-      check_rim_stiffness(const std::string &text) const;
+      check_rim_stiffness(const std::string &entry, const std::string &text) const;
       void
       say(const std::string &line) const
       {

@@ -1,4 +1,5 @@
 #include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
 
 #include <unistd.h>
@@ -53,6 +54,21 @@ namespace cosmo
     void
     create_directory(const std::string &path)
     {
+      // A control character (a NUL byte cuts the name the system sees, and
+      // every message that prints it) is no part of a directory name.
+      for (std::size_t i = 0; i < path.size(); ++i)
+        if (static_cast<unsigned char>(path[i]) < 0x20 || path[i] == 0x7f)
+          {
+            std::string shown;
+            for (const char c : path)
+              shown += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
+            std::ostringstream code;
+            code << "0x" << std::hex << std::setw(2) << std::setfill('0')
+                 << static_cast<int>(static_cast<unsigned char>(path[i]));
+            throw InputError("Output", "Output directory", shown,
+                             "a path without control characters (character " +
+                               std::to_string(i + 1) + " is " + code.str() + ", shown as '?')");
+          }
       std::error_code ec;
       std::filesystem::create_directories(path, ec);
       if (ec || !std::filesystem::is_directory(path))

@@ -28,6 +28,36 @@ namespace cosmo
     namespace
     {
       /**
+       * A parser's message as a user reads it: the property-tree readers name
+       * the file '<unspecified file>(N)'; that is line N of the file named
+       * around it. Runs of blank lines and trailing space go.
+       */
+      std::string
+      tidy_parser_message(std::string msg)
+      {
+        const std::string unnamed = "<unspecified file>(";
+        for (std::size_t p = msg.find(unnamed); p != std::string::npos; p = msg.find(unnamed))
+          {
+            const std::size_t close = msg.find(')', p);
+            if (close == std::string::npos)
+              break;
+            msg.replace(p, close + 1 - p, "line " + msg.substr(p + unnamed.size(), close - p - unnamed.size()));
+          }
+        // One line: newlines and runs of spaces become one space.
+        std::string out;
+        for (char c : msg)
+          {
+            if (c == '\n' || c == '\t')
+              c = ' ';
+            if (!(c == ' ' && (out.empty() || out.back() == ' ')))
+              out += c;
+          }
+        while (!out.empty() && out.back() == ' ')
+          out.pop_back();
+        return out;
+      }
+
+      /**
        * The parameter file and every file it includes ('include name' lines
        * of a .prm, names relative to the working directory as deal.II reads
        * them) are regular files, and no file includes itself through a
@@ -92,10 +122,15 @@ namespace cosmo
         {
           std::ostringstream s;
           e.print_info(s);
-          std::string msg = s.str();
-          while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
-            msg.pop_back();
-          throw std::runtime_error("in parameter file '" + file + "': " + msg);
+          throw std::runtime_error("in parameter file '" + file + "': " + tidy_parser_message(s.str()));
+        }
+      catch (std::exception &e)
+        {
+          // The XML and JSON readers (boost property trees) throw their own.
+          throw std::runtime_error("in parameter file '" + file + "': " + tidy_parser_message(e.what()) +
+                                   " (the file is not complete " +
+                                   (file.size() > 4 && file.substr(file.size() - 4) == ".xml" ? "XML" : "JSON") +
+                                   ")");
         }
     }
 
