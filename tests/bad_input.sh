@@ -40,6 +40,8 @@ expect "value outside its pattern (names the allowed values)" "circle|ellipse" s
 expect "Poisson ratio out of range" "Poisson's ratio" poisson.prm
 { base; printf 'subsection Material 1\n set Growth kind = axial\n set Growth factor = 1 + 0.3*z\nend\n'; } > expr.prm
 expect "growth expression that does not parse" "Growth factor" expr.prm
+{ base; printf 'subsection Material 1\n set Growth kind = none\n set Growth factor = 1 + 0.3*z\nend\n'; } > unused_expr.prm
+expect "an unused growth expression that does not parse (Growth kind = none)" "unused with Growth kind = none, still checked', entry 'Growth factor'" unused_expr.prm
 { base; printf 'subsection Material 1\n set Growth kind = isotropic\n set Growth factor = 0.5 - x\nend\n'; } > detfg.prm
 expect "growth with det Fg <= 0" "det Fg" detfg.prm
 { base; printf 'subsection Cross-section\n set Shape = bilayer\nend\n'; } > region.prm

@@ -1,4 +1,5 @@
 // No surface growth: Fsg = I.
+#include <cosmo/materials/growth.h>
 #include <cosmo/materials/surface_layer.h>
 
 namespace cosmo
@@ -12,8 +13,14 @@ namespace cosmo
       declare_parameters(ParameterHandler &)
       {}
       void
-      parse_parameters(ParameterHandler &, const std::string &) override
-      {}
+      parse_parameters(ParameterHandler &prm, const std::string &where) override
+      {
+        // Unused, but still an expression: a typo there is reported, not ignored.
+        const std::string text = prm.get("Growth factor");
+        parse_expressions(text, Utilities::split_string_list(text, ';').size(),
+                          where + "' (unused with Growth kind = none, still checked",
+                          "Growth factor");
+      }
       std::array<double, 2>
       growth(const Point<2> &, double) const override
       {
