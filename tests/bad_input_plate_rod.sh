@@ -46,6 +46,8 @@ expect "a NaN in the rim's natural curvature" "Natural curvature" rimcurv.prm
 expect "a mesh far larger than memory (refused before refining, ~500 GB estimated)" "fits in this machine's memory" huge.prm
 { base; printf 'subsection Plate\n set Thickness = 1e-300\nend\n'; } > thin.prm
 expect "a plate too thin for double precision (names the thickness)" "entry 'Thickness' = '1e-300': h/R >= 1e-5" thin.prm
+{ base; printf 'subsection Plate growth\n set Kind = none\n set Radial growth factor = 1 + zz\nend\n'; } > unused.prm
+expect "an unused plate growth expression that does not parse (Kind = none)" "entry 'Radial growth factor (unused with Kind = none, still checked)' = '1 + zz'" unused.prm
 printf '{"stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,-1,0,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]}\n' > negative.json
 { base; printf 'subsection Rim rod\n set Stiffness file = negative.json\nend\n'; } > negative.prm
 expect "a stiffness file with a negative EA (names the file, not the unused Stiffnesses)" "entry 'Stiffness file' = 'negative.json (its diagonal)': every stiffness must be positive (EA = -1 is not)" negative.prm

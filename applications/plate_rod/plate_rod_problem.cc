@@ -853,6 +853,18 @@ namespace cosmo
       j["dofs"]      = dof_handler.n_dofs();
       j["cells"]     = triangulation.n_active_cells();
       j["closed_form"] = closed;
+      if (!states.empty())
+        {
+          // The last converged state (of an interrupted run: where it stopped).
+          const auto &s     = states.back();
+          io::JSON    last  = io::JSON::object();
+          last["step"]      = static_cast<unsigned int>(states.size() - 1);
+          last["branch"]    = s.branch;
+          last["t"]         = s.t;
+          last["dome_height"] = s.w_centre;
+          last["n_negative_eigenvalues"] = s.n_negative;
+          j["last_state"] = last;
+        }
       io::JSON ev      = io::JSON::array();
       for (unsigned int k = 0; k < located_events.size(); ++k)
         {

@@ -195,7 +195,8 @@ namespace cosmo
             << "        print every parameter with its documentation and default\n"
             << "  " << info.name << " --help | --version\n\n"
             << "Exit status: 0 success, 1 bad input (file, entry, value), 2 the run\n"
-            << "could not proceed (files written so far are kept and complete).\n";
+            << "could not proceed (files written so far are kept and complete),\n"
+            << "130/143 interrupted by SIGINT/SIGTERM (go on with --resume DIR).\n";
       }
     } // namespace
 

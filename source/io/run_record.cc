@@ -109,11 +109,19 @@ namespace cosmo
     RunRecord::finish(JSON summary, const PhaseTimer &timer) const
     {
       summary["timings"] = timer.to_json();
+      std::error_code ec;
+      if (status == "interrupted" && std::filesystem::exists(output_directory + "/" + checkpoint_name, ec))
+        {
+          // Where to go on from: the checkpoint holds the last converged state.
+          JSON r          = JSON::object();
+          r["checkpoint"] = checkpoint_name;
+          r["command"]    = application + " --resume " + output_directory;
+          summary["resume"] = r;
+        }
       write_file_atomically(output_directory + "/summary.json",
                             [&](std::ostream &o) { o << summary.str() << "\n"; });
       if (status == "interrupted")
         {
-          std::error_code ec;
           if (std::filesystem::exists(output_directory + "/" + checkpoint_name, ec))
             say("interrupted; continue with: " + application + " --resume " + output_directory);
           throw Interrupted(signal);

@@ -10,7 +10,7 @@
 #include <vector>
 
 /**
- * Checkpoints and restart (doc/user-guide.md, "Checkpoints and --resume").
+ * Checkpoints and restart (README.md, "Checkpoints and restart").
  *
  * A run writes `checkpoint.cosmo` into its output directory after every
  * converged continuation step (and every finished point of a study or

@@ -5,8 +5,8 @@
 #include <string>
 
 /**
- * What keeps a run's output directory its own (doc/user-guide.md, "Output
- * directories and signals"):
+ * What keeps a run's output directory its own (README.md, the table of what
+ * a run does with its directory):
  *
  * - a lock: a second run into a directory in use ends at once (exit 1) with
  *   the other run's pid;

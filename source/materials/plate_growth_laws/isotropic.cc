@@ -16,6 +16,10 @@ namespace cosmo
       parse_parameters(ParameterHandler &prm) override
       {
         g = parse_expression_of_r(prm.get("Radial growth factor"), "Radial growth factor");
+        // Unused here, but still an expression: a typo there is reported, not ignored.
+        parse_expression_of_r(prm.get("Circumferential growth factor"),
+                              "Circumferential growth factor (unused with Kind = isotropic, still "
+                              "checked)");
       }
       std::array<double, 2>
       factors(const double r, const double t) const override

@@ -12,8 +12,12 @@ namespace cosmo
       declare_parameters(ParameterHandler &)
       {}
       void
-      parse_parameters(ParameterHandler &) override
-      {}
+      parse_parameters(ParameterHandler &prm) override
+      {
+        // Unused, but still expressions: a typo there is reported, not ignored.
+        for (const std::string entry : {"Radial growth factor", "Circumferential growth factor"})
+          parse_expression_of_r(prm.get(entry), entry + " (unused with Kind = none, still checked)");
+      }
       std::array<double, 2>
       factors(double, double) const override
       {
