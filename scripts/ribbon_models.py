@@ -280,7 +280,7 @@ def plot(models_csv=None, out='ribbons.png', w=1.0, h=0.01, E=1.0, v=0.3, tol=1e
     G = shear_modulus(E, v)
     GJ0 = G * w * h**3 / 3.0
     styles = {'kirchhoff': '-', 'sadowsky': '--', 'wunderlich': ':', 'audoly_neukirch': '-.'}
-    fig, ax = plt.subplots(2, 2, figsize=(11, 8))
+    fig, ax = plt.subplots(2, 3, figsize=(16, 8))
     betas = np.logspace(-1, 3, 200)
     thetas = np.linspace(0.0, 20.0, 200)[1:]
     for m in MODELS:
@@ -323,13 +323,41 @@ def plot(models_csv=None, out='ribbons.png', w=1.0, h=0.01, E=1.0, v=0.3, tol=1e
                     sel = (np.abs(k1) <= tol) & (np.abs(k3) > 0)
                     ax[1, 1].plot(w**2 * k3[sel] / h, mv[sel] / (GJ0 * k3[sel]), 'o', ms=4,
                                   mfc='none', label='strip (csv)')
+        # Every row, on the axes and off them: the table's energy against
+        # Audoly-Neukirch's, within the torsion boundary layer's
+        # eps = h/(w sqrt(3 ks)) (tests/ribbon_comparison.py).
+        eps = h / (w * math.sqrt(3.0 * KS))
+        rel = np.array([W / W_audoly_neukirch(k, t, w, h, E, v) - 1 if (k or t) else np.nan
+                        for k, t, W in zip(k1, k3, Wc)])
+        for t in sorted(set(k3)):
+            sel = (k3 == t) & (k1 > 0)
+            if sel.any():
+                ax[0, 2].semilogx(w**2 * k1[sel] / h, rel[sel] / eps, '.-', ms=4, lw=0.8,
+                                  label=r'$\tau w^2/h$ = %.3g' % (t * w**2 / h))
+        for k in sorted(set(k1)):
+            sel = (k1 == k) & (k3 > 0)
+            if sel.any():
+                ax[1, 2].plot(w**2 * k3[sel] / h, rel[sel] / eps, '.-', ms=4, lw=0.8,
+                              label=r'$\beta$ = %.3g' % (k * w**2 / h))
+        for a in (ax[0, 2], ax[1, 2]):
+            a.axhline(-1, color='k', lw=0.6, ls='--')
+            a.axhline(1, color='k', lw=0.6, ls='--')
+        worst = np.nanmax(np.abs(rel))
+        ax[0, 2].set(xlabel=r'$\beta = w^2\kappa_1/h$', ylabel=r'$(W/W_{AN} - 1)/\epsilon$',
+                     title='all rows vs Audoly-Neukirch: max %.2f eps' % (worst / eps))
+        ax[1, 2].set(xlabel=r'$\tau w^2/h$', ylabel=r'$(W/W_{AN} - 1)/\epsilon$',
+                     title=r'$\epsilon = h/(w\sqrt{3 k_s})$ = %.2g (dashed: $\pm\epsilon$)' % eps)
+    else:
+        for a in (ax[0, 2], ax[1, 2]):
+            a.set_visible(False)
     ax[0, 0].set(xlabel=r'$\beta = w^2\kappa_1/h$', ylabel=r'$2W/(D w \kappa_1^2)$', title=r'bending, $\tau = 0$')
     ax[1, 0].set(xlabel=r'$\beta$', ylabel=r'$m_1/(D w \kappa_1)$')
     ax[0, 1].set(xlabel=r'$\tau w^2/h$', ylabel=r'$2W/(G w h^3 \tau^2/3)$', title=r'twist, $\kappa_1 = 0$')
     ax[1, 1].set(xlabel=r'$\tau w^2/h$', ylabel=r'$m_3/(G w h^3 \tau/3)$')
     for a in ax.flat:
-        a.grid(alpha=0.3)
-        a.legend(fontsize=8)
+        if a.get_visible():
+            a.grid(alpha=0.3)
+            a.legend(fontsize=7, ncol=2 if a in (ax[0, 2], ax[1, 2]) else 1)
     fig.suptitle(f'ribbon models, w={w}, h={h}, E={E}, v={v}')
     fig.tight_layout()
     fig.savefig(out, dpi=120)
