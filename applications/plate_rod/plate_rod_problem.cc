@@ -770,8 +770,8 @@ namespace cosmo
     {
       write_output = true;
       record.open(output_directory, prm, options);
-      plate_series = std::make_unique<io::PVDSeries>(output_directory + "/plate.pvd");
-      rim_series   = std::make_unique<io::PVDSeries>(output_directory + "/rim.pvd");
+      plate_series = std::make_unique<io::PathCollections>(output_directory, "plate");
+      rim_series   = std::make_unique<io::PathCollections>(output_directory, "rim");
       setup_system();
       std::ostringstream info;
       info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness

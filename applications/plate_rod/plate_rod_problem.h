@@ -25,6 +25,7 @@
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/solvers/sparse_direct.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -310,7 +311,8 @@ namespace cosmo
       std::vector<solvers::EventRecord> located_events;
       io::CSVTable                      steps_table;
       io::RunRecord                     record{"plate_rod"};
-      std::unique_ptr<io::PVDSeries>    plate_series, rim_series;
+      /// plate.pvd, rim.pvd (path order) and plate-branch-K.pvd, rim-branch-K.pvd (time = t).
+      std::unique_ptr<io::PathCollections> plate_series, rim_series;
       io::PhaseTimer                    timer;
       unsigned int                      output_index = 0;
 

@@ -182,8 +182,8 @@ namespace cosmo
       const std::string tag = Utilities::int_to_string(output_index++, 4);
       write_plate(output_directory + "/plate-" + tag + ".vtu", U);
       write_rim(output_directory + "/rim-" + tag + ".vtu", U);
-      plate_series->add(report.step, "plate-" + tag + ".vtu");
-      rim_series->add(report.step, "rim-" + tag + ".vtu");
+      plate_series->add(report.step, report.branch, report.t, "plate-" + tag + ".vtu");
+      rim_series->add(report.step, report.branch, report.t, "rim-" + tag + ".vtu");
     }
 
     void
@@ -209,6 +209,7 @@ namespace cosmo
       w.put(output_index);
       plate_series->save(w);
       rim_series->save(w);
+
     }
 
     void
@@ -234,6 +235,7 @@ namespace cosmo
       output_index = r.get_unsigned();
       plate_series->load(r);
       rim_series->load(r);
+
       if (!r.at_end())
         throw std::runtime_error("the checkpoint holds more than this run reads");
       if (solution.size() != dof_handler.n_dofs())
@@ -339,6 +341,7 @@ namespace cosmo
             }
           vtu.end_patch();
         }
+      vtu.set_time(load_parameter);
       vtu.write(file);
     }
 
@@ -407,6 +410,7 @@ namespace cosmo
                 }
               vtu.end_patch();
             }
+      vtu.set_time(load_parameter);
       vtu.write(file);
     }
 

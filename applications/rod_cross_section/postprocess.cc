@@ -250,6 +250,7 @@ namespace cosmo
               }
             vtu.end_patch();
           }
+        vtu.set_time(load_parameter);
         vtu.write(output_directory + "/" + name);
       }
       pvd->add(t, name);
@@ -310,6 +311,7 @@ namespace cosmo
             }
           vtu.end_patch();
         }
+      vtu.set_time(load_parameter);
       vtu.write(file);
     }
 
@@ -364,6 +366,7 @@ namespace cosmo
               vtu.end_patch();
             }
         }
+      vtu.set_time(load_parameter);
       vtu.write(file);
     }
 

@@ -31,6 +31,12 @@ namespace cosmo
       w.put_vector(solution);
       w.put_vector(event_parities);
       steps_table.save(w);
+      w.put(section_series != nullptr);
+      if (section_series)
+        {
+          section_series->save(w);
+          strip_series->save(w);
+        }
     }
 
     void
@@ -40,6 +46,13 @@ namespace cosmo
       r.get_vector(solution);
       event_parities = r.get_vector();
       steps_table.load(r);
+      if (r.get_bool())
+        {
+          section_series = std::make_unique<io::PathCollections>(output_directory, "section");
+          strip_series   = std::make_unique<io::PathCollections>(output_directory, "strip");
+          section_series->load(r);
+          strip_series->load(r);
+        }
       if (solution.size() != n_unknowns())
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
       // The state reported last (the summary's, should no step follow).
@@ -83,11 +96,16 @@ namespace cosmo
       row.push_back(smallest);
       steps_table.add_row(row);
       steps_table.write(output_directory + "/steps.csv");
-      write_section(output_directory + "/section-" + Utilities::int_to_string(report.step, 4) +
-                      ".vtu",
-                    solution);
-      write_piece(output_directory + "/strip-" + Utilities::int_to_string(report.step, 4) +
-                  ".vtu");
+      const std::string tag = Utilities::int_to_string(report.step, 4);
+      write_section(output_directory + "/section-" + tag + ".vtu", solution);
+      write_piece(output_directory + "/strip-" + tag + ".vtu");
+      if (!section_series)
+        {
+          section_series = std::make_unique<io::PathCollections>(output_directory, "section");
+          strip_series   = std::make_unique<io::PathCollections>(output_directory, "strip");
+        }
+      section_series->add(report.step, report.branch, report.t, "section-" + tag + ".vtu");
+      strip_series->add(report.step, report.branch, report.t, "strip-" + tag + ".vtu");
     }
 
     void
@@ -135,6 +153,7 @@ namespace cosmo
               vtu.end_patch();
             }
         }
+      vtu.set_time(load_parameter);
       vtu.write(file);
     }
 
@@ -221,6 +240,7 @@ namespace cosmo
             }
           vtu.end_patch();
         }
+      vtu.set_time(load_parameter);
       vtu.write(file);
     }
   } // namespace strip

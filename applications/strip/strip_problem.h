@@ -154,6 +154,8 @@ namespace cosmo
       /// mode_parity() of each located branch point's mode (NaN for folds).
       std::vector<double>          event_parities;
       io::CSVTable                 steps_table;
+      /// section.pvd, strip.pvd (path order) and section-branch-K.pvd, strip-branch-K.pvd (time = t).
+      std::unique_ptr<io::PathCollections> section_series, strip_series;
       io::RunRecord                record{"strip"};
 
       void

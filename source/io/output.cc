@@ -571,6 +571,54 @@ namespace cosmo
       write();
     }
 
+    PathCollections::PathCollections(const std::string &directory, const std::string &stem)
+      : directory(directory)
+      , stem(stem)
+      , all(directory + "/" + stem + ".pvd")
+    {}
+
+    PVDSeries &
+    PathCollections::branch(const unsigned int b)
+    {
+      auto it = branches.find(b);
+      if (it == branches.end())
+        it = branches
+               .emplace(b, PVDSeries(directory + "/" + stem + "-branch-" + std::to_string(b) + ".pvd"))
+               .first;
+      return it->second;
+    }
+
+    void
+    PathCollections::add(const unsigned int step,
+                         const unsigned int b,
+                         const double       t,
+                         const std::string &vtu_file_name)
+    {
+      all.add(step, vtu_file_name);
+      branch(b).add(t, vtu_file_name);
+    }
+
+    void
+    PathCollections::save(CheckpointWriter &w) const
+    {
+      all.save(w);
+      w.put(std::uint64_t(branches.size()));
+      for (const auto &[b, series] : branches)
+        {
+          w.put(b);
+          series.save(w);
+        }
+    }
+
+    void
+    PathCollections::load(CheckpointReader &r)
+    {
+      all.load(r);
+      branches.clear();
+      for (std::uint64_t i = 0, n = r.get_size(); i < n; ++i)
+        branch(r.get_unsigned()).load(r);
+    }
+
     void
     CSVTable::save(CheckpointWriter &w) const
     {

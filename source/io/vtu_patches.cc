@@ -3,6 +3,8 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/vtu_patches.h>
 
+#include <cmath>
+
 namespace cosmo
 {
   namespace io
@@ -92,6 +94,8 @@ namespace cosmo
       AssertThrow(!open, ExcMessage("write() before end_patch()"));
       DataOutBase::VtkFlags flags;
       flags.write_higher_order_cells = false;
+      if (std::isfinite(time))
+        flags.time = time; // FieldData TIME: ParaView animates in the load parameter
       write_file_atomically(file, [&](std::ostream &out) {
         DataOutBase::write_vtu(patches, names, vectors, flags, out);
       });

@@ -170,6 +170,34 @@ namespace cosmo
       std::vector<std::pair<double, std::string>> entries;
     };
 
+    /**
+     * The ParaView collections of a continuation's states of one kind (stem
+     * "plate": plate.pvd and plate-branch-K.pvd): `stem.pvd` lists every
+     * state in path order (time = the step), `stem-branch-K.pvd` the states
+     * of branch K with time = the load parameter t, so that an animation of
+     * one branch runs in t (turning back at a fold) instead of jumping back
+     * at every branch start.
+     */
+    class PathCollections
+    {
+    public:
+      PathCollections(const std::string &directory, const std::string &stem);
+      void
+      add(unsigned int step, unsigned int branch, double t, const std::string &vtu_file_name);
+      /// For a checkpoint; load() rewrites the files as they were.
+      void
+      save(CheckpointWriter &w) const;
+      void
+      load(CheckpointReader &r);
+
+    private:
+      std::string                         directory, stem;
+      PVDSeries                           all;
+      std::map<unsigned int, PVDSeries>   branches;
+      PVDSeries &
+      branch(unsigned int b);
+    };
+
     /// Wall-clock time per phase (assembly, factorization, solve, output, ...).
     class PhaseTimer
     {

@@ -4,6 +4,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/point.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +58,13 @@ namespace cosmo
         return names.size();
       }
 
+      /// The load parameter of the state, written as the VTU's TIME field data (ParaView's time).
+      void
+      set_time(const double t)
+      {
+        time = t;
+      }
+
       /// Write all patches to `file` (.vtu), atomically.
       void
       write(const std::string &file) const;
@@ -68,6 +76,7 @@ namespace cosmo
                                              vectors;
       std::vector<DataOutBase::Patch<dim, 3>> patches;
       bool                                    open = false;
+      double                                  time = std::numeric_limits<double>::quiet_NaN();
     };
   } // namespace io
 } // namespace cosmo
