@@ -695,6 +695,30 @@ namespace cosmo
     }
 
 
+    analysis::LinearSectionProperties
+    CrossSectionProblem::linear_section_properties() const
+    {
+      // The small-strain moduli of each region's law, from its tangent at F = I
+      // (isotropic: C_1212 = mu, C_1122 = lambda), so that any registered law works.
+      std::map<types::material_id, analysis::RegionModuli> moduli;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (moduli.count(cell->material_id()) == 0)
+          {
+            materials::EnergyDerivatives d;
+            Tensor<2, 3>                 I;
+            for (unsigned int i = 0; i < 3; ++i)
+              I[i][i] = 1;
+            materials.material(cell->material_id()).evaluate(I, I, true, d);
+            const double mu = d.C[9 * 1 + 1], lambda = d.C[9 * 0 + 4];
+            moduli[cell->material_id()] = {mu * (3 * lambda + 2 * mu) / (lambda + mu), mu};
+          }
+      return analysis::linear_section_properties(triangulation, *mapping, degree,
+                                                 [&moduli](const types::material_id id) {
+                                                   return moduli.at(id);
+                                                 });
+    }
+
+
     void
     CrossSectionProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
@@ -720,6 +744,11 @@ namespace cosmo
             io::format_significant(geometry.applied_shift[1]) + ") to put its centroid at the origin");
       for (const auto &m : materials.descriptions())
         say("  " + m);
+      {
+        io::PhaseTimer::Scope scope(timer, "section properties");
+        reference_properties = linear_section_properties();
+      }
+      say_reference_properties();
       for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
         say("  " + surface_layers.layers()[l].description() + " (arc length " +
             io::format_significant(surface_length[l]) + ")");

@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/analysis/section_properties.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/geometry/cross_section.h>
 #include <cosmo/io/output.h>
@@ -89,6 +90,10 @@ namespace cosmo
       {
         return section_properties;
       }
+      /// The linear Saint-Venant properties of the reference section
+      /// (analysis/section_properties.h): centres, principal axes, GJ, shear factors.
+      analysis::LinearSectionProperties
+      linear_section_properties() const;
       unsigned int
       newton_iterations() const
       {
@@ -140,6 +145,7 @@ namespace cosmo
       std::unique_ptr<MappingQ<2>>            mapping;
       DoFHandler<2>                           dof_handler;
       geometry::SectionProperties             section_properties;
+      analysis::LinearSectionProperties       reference_properties;
       Vector<double>                          solution;
       std::vector<Tensor<2, 3>>               growth_at_qp; // per cell and quadrature point
       double                                  growth_cached_for = std::numeric_limits<double>::quiet_NaN();
@@ -213,6 +219,9 @@ namespace cosmo
       /// The final state in words: energy, strains, resultants, stiffness, centreline.
       void
       say_result() const;
+      /// The linear section properties, as the section tools print them.
+      void
+      say_reference_properties() const;
       void
       say(const std::string &line) const
       {

@@ -401,6 +401,9 @@ namespace cosmo
         layers.push_back(s);
       j["surface_layers"]     = layers;
       add_state_to_summary(j, last_state);
+      JSON &props             = j["section_properties"];
+      props["reference_linear"] = reference_properties.to_json();
+      props["this_state"]       = analysis::analyse_stiffness(last_state.stiffness).to_json();
       j["min_elastic_J"]              = last_state.min_elastic_J;
       const auto h = kinematics::helix_geometry(kinematics::RodStrains(last_state.strains));
       JSON &helix  = j["helix"];
@@ -413,6 +416,28 @@ namespace cosmo
       helix["torsion"]     = h.torsion;
       j["newton_iterations"] = total_newton_iterations;
       record.finish(j, timer);
+    }
+
+    void
+    CrossSectionProblem::say_reference_properties() const
+    {
+      const auto &p  = reference_properties;
+      auto        pt = [](const Point<2> &x) {
+        return "(" + io::format_significant(x[0], 4) + ", " + io::format_significant(x[1], 4) + ")";
+      };
+      std::ostringstream out;
+      out << "  linear section properties (reference, small-strain moduli):\n"
+          << "    EA " << io::format_significant(p.EA, 5) << ", elastic centre " << pt(p.elastic_centre)
+          << ", centroid " << pt(p.centroid) << "\n"
+          << "    EI11 " << io::format_significant(p.EI11, 5) << ", EI22 " << io::format_significant(p.EI22, 5)
+          << ", EI12 " << io::format_significant(p.EI12, 5) << "; principal axis at "
+          << io::format_significant(p.principal_angle * 180 / M_PI, 4) << " deg (EI "
+          << io::format_significant(p.principal_bending[0], 5) << ", "
+          << io::format_significant(p.principal_bending[1], 5) << ")\n"
+          << "    GJ " << io::format_significant(p.GJ, 5) << "; shear centre " << pt(p.shear_centre_flexure)
+          << " (Trefftz " << pt(p.shear_centre_trefftz) << "); shear factors "
+          << io::format_significant(p.shear_factors[0], 4) << ", " << io::format_significant(p.shear_factors[1], 4);
+      say(out.str());
     }
 
     void
@@ -439,6 +464,22 @@ namespace cosmo
             out << std::setw(14) << io::format_significant(s.stiffness(a, b), 6);
           out << "\n";
         }
+      const auto a = analysis::analyse_stiffness(s.stiffness);
+      if (a.invertible)
+        {
+          auto pt = [](const Point<2> &p) {
+            return "(" + io::format_significant(p[0], 4) + ", " + io::format_significant(p[1], 4) + ")";
+          };
+          out << "  from this stiffness: tension centre " << pt(a.tension_centre) << ", shear centre "
+              << pt(a.shear_centre) << ", principal bending axis at "
+              << io::format_significant(a.principal_angle * 180 / M_PI, 4) << " deg (EI "
+              << io::format_significant(a.principal_bending[0], 4) << ", "
+              << io::format_significant(a.principal_bending[1], 4)
+              << "), torsional stiffness with the other resultants zero "
+              << io::format_significant(a.condensed[5], 4) << "\n";
+        }
+      else
+        out << "  this stiffness is not positive definite: no centres or principal axes\n";
       out << "  natural/current centreline: "
           << kinematics::helix_geometry(kinematics::RodStrains(s.strains)).description() << "\n";
       out << "  timings [s]:";
