@@ -50,7 +50,13 @@ expect "a plate too thin for double precision (names the thickness)" "entry 'Thi
 expect "an unused plate growth expression that does not parse (Kind = none)" "entry 'Radial growth factor (unused with Kind = none, still checked)' = '1 + zz'" unused.prm
 printf '{"stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,-1,0,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]}\n' > negative.json
 { base; printf 'subsection Rim rod\n set Stiffness file = negative.json\nend\n'; } > negative.prm
-expect "a stiffness file with a negative EA (names the file, not the unused Stiffnesses)" "entry 'Stiffness file' = 'negative.json (its diagonal)': every stiffness must be positive (EA = -1 is not)" negative.prm
+expect "a stiffness file with a negative EA (names the file, not the unused Stiffnesses)" "entry 'Stiffness file' = 'negative.json': every stiffness must be positive (EA = -1 is not)" negative.prm
+printf '{"stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,2,0,0],[0,0,2,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]}\n' > indefinite.json
+{ base; printf 'subsection Rim rod\n set Stiffness file = indefinite.json\nend\n'; } > indefinite.prm
+expect "a stiffness file with positive diagonal but indefinite (coupling 2 > sqrt(1 x 1))" "entry 'Stiffness file' = 'indefinite.json': a positive definite 6x6 stiffness (its leading 4x4 block is not)" indefinite.prm
+printf '{"stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,0.5,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]}\n' > asymmetric.json
+{ base; printf 'subsection Rim rod\n set Stiffness file = asymmetric.json\nend\n'; } > asymmetric.prm
+expect "an asymmetric stiffness file" "entry 'Stiffness file' = 'asymmetric.json': a symmetric 6x6 stiffness (max |K_ab - K_ba| = 0.5)" asymmetric.prm
 printf 'subsection Output\n set Output directory = ab\000cd\nend\n' > nul.prm
 expect "a NUL byte in the output directory (shown, its position named)" "a path without control characters (character 3 is 0x00" nul.prm
 exit $fail

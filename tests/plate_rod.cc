@@ -821,8 +821,8 @@ namespace
       }
   }
 
-  // The rim's stiffnesses read from a part-1 summary.json (its 6x6 stiffness;
-  // the diagonal is used): the same problem as with 'Stiffnesses' given.
+  // The rim's stiffness read from a part-1 summary.json: its full 6x6, the
+  // couplings included (the closed forms take the diagonal).
   void
   stiffness_file()
   {
@@ -836,7 +836,16 @@ namespace
     Setup s;
     s.refinements = 1;
     s.extra       = "subsection Rim rod\n set Stiffness file = rim_summary.json\nend\n";
-    const auto p  = make(s)->closed_form_setting();
+    const auto problem = make(s);
+    const auto p       = problem->closed_form_setting();
+    const auto law     = problem->rod_law();
+    // Exact copies (the file's symmetric part of a symmetric matrix).
+    check_close("coupling K(nu3, kappa1) from the file", law.coupling[2][3], 1e-7, 0, 0);
+    check_close("coupling K(kappa1, nu3) from the file", law.coupling[3][2], 1e-7, 0, 0);
+    // The shear rows carry the model's shear factor f (GA1 = f 0.1), their couplings sqrt(f).
+    check_close("coupling K(nu1, kappa3) = sqrt(f) x the file's", law.coupling[0][5],
+                1e-9 * std::sqrt(law.stiffness[0] / 0.1), 1e-14);
+    check_close("no coupling where the file has none", law.coupling[1][4], 0, 0, 0);
     check_close("EA from the file", p.rod_EA, 0.3, 0, 0);
     check_close("EI1 from the file", p.rod_EI1, 4e-6, 0, 0);
     check_close("EI2 from the file", p.rod_EI2, 5e-6, 0, 0);

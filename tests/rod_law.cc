@@ -43,5 +43,42 @@ main()
     }
   check_close("resultants = K (strain/g - reference)", worst, 0, 0, 1e-14);
   check_close("stiffness = K / g", worst_K, 0, 0, 1e-14);
+
+  // A full 6x6 (a section's couplings): the resultants are K e and the
+  // Hessian is D K D / g with D = diag(1/g for nu... ) -- here checked
+  // entry by entry against Sacado, and scale_strain() is the congruence
+  // D K D (D_kk = sqrt(f)).
+  {
+    materials::QuadraticRodLaw c = law;
+    c.set_coupling(2, 3, 0.3);  // extension - out-of-plane bending (eccentric section)
+    c.set_coupling(0, 5, -0.2); // shear - twist (shear centre off the line)
+    c.set_coupling(1, 4, 0.1);
+    std::array<double, 6> ec;
+    for (unsigned int k = 0; k < 6; ++k)
+      ec[k] = k < 3 ? e[k] / g - c.reference_strains[k] : (e[k] - c.reference_strains[k]) / g;
+    materials::internal::differentiate<6>(
+      e, [&](const auto &x) { return c.energy(x, g); }, true, W, grad, hess);
+    double worst_r = 0, worst_h = 0;
+    const auto r = c.resultants(e, g);
+    for (unsigned int i = 0; i < 6; ++i)
+      {
+        double Ke = c.stiffness[i] * ec[i];
+        for (unsigned int j = 0; j < 6; ++j)
+          if (j != i)
+            Ke += c.coupling[i][j] * ec[j];
+        worst_r = std::max({worst_r, std::abs(r[i] - Ke), std::abs(grad[i] - Ke)});
+        // d e_i / d strain_i = 1/g for every component.
+        for (unsigned int j = 0; j < 6; ++j)
+          worst_h = std::max(worst_h, std::abs(hess[6 * i + j] - (i == j ? c.stiffness[i] : c.coupling[i][j]) / g));
+      }
+    check_close("coupled: resultants = K e (law and Sacado)", worst_r, 0, 0, 1e-14);
+    check_close("coupled: Hessian = K / g", worst_h, 0, 0, 1e-14);
+    materials::QuadraticRodLaw s = c;
+    s.scale_strain(0, 4.);
+    check_close("scale_strain: diagonal times f", s.stiffness[0], 4 * c.stiffness[0], 1e-15);
+    check_close("scale_strain: coupling times sqrt(f)", s.coupling[0][5], 2 * c.coupling[0][5], 1e-15);
+    check_close("scale_strain: symmetric", s.coupling[5][0], s.coupling[0][5], 0, 0);
+    check_close("scale_strain: other couplings unchanged", s.coupling[2][3], c.coupling[2][3], 0, 0);
+  }
   return cosmo_test::report();
 }

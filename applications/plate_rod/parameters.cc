@@ -40,10 +40,11 @@ namespace cosmo
                         "bending about d1 (out of plane), about d2 (in plane), torsion. E.g. the "
                         "diagonal of a rod_cross_section stiffness.");
       prm.declare_entry("Stiffness file", "", Patterns::Anything(),
-                        "If set: a rod_cross_section summary.json whose 6x6 'stiffness' gives "
-                        "the rim's stiffnesses (its diagonal; the section's X1 is the rim's "
-                        "radial axis d1, X2 the plate normal d2); replaces 'Stiffnesses'. The "
-                        "largest dropped off-diagonal coupling is logged.");
+                        "If set: a rod_cross_section summary.json whose 6x6 'stiffness' is "
+                        "the rim's stiffness, couplings included (about the section's origin; "
+                        "its X1 is the rim's radial axis d1, X2 the plate normal d2); replaces "
+                        "'Stiffnesses'. It must be symmetric positive definite. The closed "
+                        "forms use its diagonal.");
       prm.declare_entry("Natural curvature", "0, 0, 0", Patterns::Anything(),
                         "Change of the rim's stress-free curvature reached at t = 1 (ramped as "
                         "t dk) from the rim's own growth through its section: dk1, dk2, dk3 in "
@@ -238,15 +239,49 @@ namespace cosmo
       if (!stiffness_file.empty())
         {
           const auto K = read_section_stiffness(stiffness_file);
-          // The diagonal; how much the off-diagonal couplings dropped weigh.
-          double coupling = 0;
+          // The full matrix: its symmetric part (a summary's K is symmetric
+          // to round-off), and how much its couplings weigh.
+          double coupling = 0, asymmetry = 0, scale = 0;
           for (unsigned int a = 0; a < 6; ++a)
             {
               rod_stiffness[a] = K[7 * a];
               for (unsigned int b = 0; b < 6; ++b)
-                if (a != b)
-                  coupling = std::max(coupling, std::abs(K[6 * a + b]) /
-                                                  std::sqrt(std::abs(K[7 * a] * K[7 * b])));
+                {
+                  scale     = std::max(scale, std::abs(K[6 * a + b]));
+                  asymmetry = std::max(asymmetry, std::abs(K[6 * a + b] - K[6 * b + a]));
+                  rod_coupling[a][b] = a == b ? 0. : 0.5 * (K[6 * a + b] + K[6 * b + a]);
+                  if (a != b)
+                    coupling = std::max(coupling, std::abs(K[6 * a + b]) /
+                                                    std::sqrt(std::abs(K[7 * a] * K[7 * b])));
+                }
+            }
+          if (asymmetry > 1e-8 * scale)
+            throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                 "a symmetric 6x6 stiffness (max |K_ab - K_ba| = " +
+                                   io::format_number(asymmetry) + ")");
+          // Positive definite: Cholesky (a stable rim needs it; a failure names the pivot).
+          // (Non-positive diagonals are left to check_rim_stiffness(), which names them.)
+          std::array<std::array<double, 6>, 6> L{};
+          const bool positive_diagonal =
+            std::all_of(rod_stiffness.begin(), rod_stiffness.end(), [](double k) { return k > 0; });
+          for (unsigned int j = 0; positive_diagonal && j < 6; ++j)
+            {
+              double d = K[7 * j];
+              for (unsigned int k = 0; k < j; ++k)
+                d -= L[j][k] * L[j][k];
+              if (!(d > 1e-12 * K[7 * j]))
+                throw io::InputError("Rim rod", "Stiffness file", stiffness_file,
+                                     "a positive definite 6x6 stiffness (its leading " +
+                                       std::to_string(j + 1) + "x" + std::to_string(j + 1) +
+                                       " block is not)");
+              L[j][j] = std::sqrt(d);
+              for (unsigned int i = j + 1; i < 6; ++i)
+                {
+                  double v = 0.5 * (K[6 * i + j] + K[6 * j + i]);
+                  for (unsigned int k = 0; k < j; ++k)
+                    v -= L[i][k] * L[j][k];
+                  L[i][j] = v / L[j][j];
+                }
             }
           stiffness_coupling = coupling;
         }
@@ -263,7 +298,7 @@ namespace cosmo
       if (stiffness_file.empty())
         check_rim_stiffness("Stiffnesses", prm.get("Stiffnesses"));
       else
-        check_rim_stiffness("Stiffness file", stiffness_file + " (its diagonal)");
+        check_rim_stiffness("Stiffness file", stiffness_file);
       prm.leave_subsection();
 
       prm.enter_subsection("Model");

@@ -381,9 +381,13 @@ namespace cosmo
     {
       materials::QuadraticRodLaw law;
       law.stiffness = rod_stiffness;
-      // The model's factor on the shear stiffnesses GA1, GA2 (the Kirchhoff penalty).
+      for (unsigned int i = 0; i < 6; ++i)
+        for (unsigned int j = i + 1; j < 6; ++j)
+          law.set_coupling(i, j, rod_coupling[i][j]);
+      // The model's factor on the shear stiffnesses GA1, GA2 (the Kirchhoff
+      // penalty; their couplings by its square root, which keeps K positive).
       for (const unsigned int k : {0u, 1u})
-        law.stiffness[k] *= model->shear_scale();
+        law.scale_strain(k, model->shear_scale());
       return law;
     }
 
@@ -783,10 +787,12 @@ namespace cosmo
       if (!stiffness_file.empty())
         {
           std::ostringstream m;
-          m << "  rim stiffnesses from " << stiffness_file << ":";
+          m << "  rim stiffness from " << stiffness_file << ", the full 6x6: diagonal";
           for (const double k : rod_stiffness)
             m << " " << k;
-          m << " (largest dropped coupling K_ab / sqrt(K_aa K_bb) = " << stiffness_coupling << ")";
+          m << ", largest coupling K_ab / sqrt(K_aa K_bb) = " << stiffness_coupling;
+          if (stiffness_coupling > 0)
+            m << " (the closed forms below use the diagonal only)";
           say(m.str());
         }
 

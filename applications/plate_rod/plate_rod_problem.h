@@ -148,6 +148,10 @@ namespace cosmo
       /// The closed-form Kirchhoff thresholds for this plate and rim (small strain).
       analysis::PlateRod
       closed_form_setting() const;
+      /// The rim's law as assembled: the given stiffnesses (a Stiffness file's
+      /// full 6x6), the shear rows scaled by the model's shear factor.
+      materials::QuadraticRodLaw
+      rod_law() const;
       /// The closed-form thresholds for this problem (summary.json's "closed_form"), the first
       /// of them (NaN if the growth is not uniform and isotropic) and a text for the log.
       io::JSON
@@ -253,6 +257,8 @@ namespace cosmo
       std::array<double, 3>          rod_natural_curvature{{0., 0., 0.}};
       std::string                    stiffness_file;
       double                         stiffness_coupling = 0;
+      /// The rim's off-diagonal stiffnesses (from a Stiffness file; else zero).
+      std::array<std::array<double, 6>, 6> rod_coupling{};
       double                         path_start = 0;
       bool                           stop_at_first_event = false;
 
@@ -344,8 +350,6 @@ namespace cosmo
       {
         return materials::growth_ramp(t, rod_growth);
       }
-      materials::QuadraticRodLaw
-      rod_law() const;
       /// io::InputError (entry 'Rim rod / Stiffnesses' = text) unless every rim stiffness is
       /// positive and at most 1e8 times the plate's.
       void
