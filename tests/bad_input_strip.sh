@@ -35,4 +35,8 @@ expect "a strain both free and set in Strains" "is in 'Free strains' and set her
 expect "a curvature no rod has (kappa1 = 1e300; it made Newton wander)" "kappa1 = 1e+300 is not" huge_kappa.prm
 { strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = natural shape\n set Free strains = nu3\nend\n'; } > ignored.prm
 expect "an entry the natural-shape mode ignores (Free strains)" "entry 'Free strains' = 'nu3': nothing in 'Mode = natural shape'" ignored.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = nu3\n set Resultants = 0, 0, 0.1, 0, 0, 0.01\nend\n'; } > torque_prescribed.prm
+expect "a resultant target for a prescribed strain (m3 with kappa3 prescribed)" "entry 'Resultants' = '0, 0, 0.1, 0, 0, 0.01': m3 = 0.01 for the prescribed kappa3: a resultant can only be prescribed for a strain in 'Free strains'" torque_prescribed.prm
+{ strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = natural shape\n set Resultants = 0, 0, 0.1, 0, 0, 0\nend\n'; } > natural_loaded.prm
+expect "a resultant target in natural-shape mode" "entry 'Resultants' = '0, 0, 0.1, 0, 0, 0': nothing in 'Mode = natural shape'" natural_loaded.prm
 exit $fail

@@ -133,10 +133,11 @@ namespace cosmo
     StripProblem::load_derivative(const Vector<double> &, const double lambda, Vector<double> &dR)
     {
       dR.reinit(n_unknowns());
+      // Prescribed strain rows e - eP(t), free rows dPsi/de - t nbar.
       const auto rate = prescribed_strain_rate(lambda);
+      const auto nbar = resultants_at(1.);
       for (unsigned int k = 0; k < n_strains; ++k)
-        if (!strain_is_free[k])
-          dR[n_field + n_gauge + k] = -rate[k];
+        dR[n_field + n_gauge + k] = strain_is_free[k] ? -nbar[k] : -rate[k];
       return 0;
     }
 

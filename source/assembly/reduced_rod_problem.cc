@@ -30,7 +30,15 @@ namespace cosmo
       prm.declare_entry("Free strains", "",
                         Patterns::MultipleSelection("nu1|nu2|nu3|kappa1|kappa2|kappa3"),
                         "In 'prescribed strains' mode: strains left free (their "
-                        "resultant vanishes), e.g. 'nu3' for twisting at zero axial force.");
+                        "resultant vanishes, or reaches its entry of 'Resultants'), e.g. "
+                        "'nu3' for twisting at zero axial force.");
+      prm.declare_entry("Resultants", "0, 0, 0, 0, 0, 0",
+                        Patterns::List(Patterns::Double(), 6, 6),
+                        "Target resultants n1, n2, n3, m1, m2, m3 (force E L^2, moment E L^3) "
+                        "of the free strains, ramped as t times the target (reached at t = 1): "
+                        "resultant control, e.g. a tension n3 with nu3 free, a torque m3 with "
+                        "kappa3 free. The entry of a prescribed strain must be 0 (a strain is "
+                        "prescribed or its resultant is).");
       prm.declare_entry("Path", "", Patterns::Anything(),
                         "A path through strain space instead of the straight ramp to "
                         "'Strains': waypoints of six strains separated by ';', e.g. "
@@ -53,15 +61,17 @@ namespace cosmo
           for (const auto &[entry, unset] :
                std::vector<std::pair<std::string, std::string>>{{"Strains", "0, 0, 1, 0, 0, 0"},
                                                                 {"Free strains", ""},
-                                                                {"Path", ""}})
+                                                                {"Path", ""},
+                                                                {"Resultants", "0, 0, 0, 0, 0, 0"}})
             {
               const std::string text = prm.get(entry);
               bool              is_unset = text == unset;
-              if (!is_unset && entry == "Strains")
+              if (!is_unset && (entry == "Strains" || entry == "Resultants"))
                 try
                   {
                     is_unset = Utilities::string_to_double(Utilities::split_string_list(text, ',')) ==
-                               std::vector<double>{0, 0, 1, 0, 0, 0};
+                               (entry == "Strains" ? std::vector<double>{0, 0, 1, 0, 0, 0} :
+                                                     std::vector<double>(6, 0.));
                   }
                 catch (...)
                   {}
@@ -89,6 +99,14 @@ namespace cosmo
       };
       check_size("Strains", prm.get("Strains"), {{e[0], e[1], e[2], e[3], e[4], e[5]}});
       std::copy(e.begin(), e.end(), target_strains.begin());
+      {
+        const auto n = io::get_double_list(prm, "Resultants", 6, "Rod strains");
+        std::copy(n.begin(), n.end(), target_resultants.begin());
+        for (unsigned int k = 0; k < 6; ++k)
+          if (!std::isfinite(target_resultants[k]))
+            throw io::InputError("Rod strains", "Resultants", prm.get("Resultants"),
+                                 "six finite numbers");
+      }
       const auto free_names = Utilities::split_string_list(prm.get("Free strains"), ',');
       strain_is_free.fill(mode == "natural shape");
       for (const auto &name : free_names)
@@ -105,6 +123,14 @@ namespace cosmo
                                      " is in 'Free strains' and set here to a value other "
                                      "than its reference: a strain is either prescribed or "
                                      "free (leave it at the reference value)");
+          for (unsigned int k = 0; k < 6; ++k)
+            if (!strain_is_free[k] && target_resultants[k] != 0)
+              throw io::InputError("Rod strains", "Resultants", prm.get("Resultants"),
+                                   kinematics::resultant_names[k] + " = " +
+                                     io::format_number(target_resultants[k]) + " for the prescribed " +
+                                     kinematics::strain_names[k] +
+                                     ": a resultant can only be prescribed for a strain in 'Free "
+                                     "strains' (a strain is prescribed or its resultant is)");
         }
       waypoints.clear();
       const std::string path_text = prm.get("Path");
@@ -241,7 +267,9 @@ namespace cosmo
             }
           const auto eP = prescribed_strains_at(load_parameter);
           for (unsigned int k = 0; k < n_strains; ++k)
-            (*R)[nf + n_gauge + k] = strain_is_free[k] ? integrals.resultants[k] : e[k] - eP[k];
+            (*R)[nf + n_gauge + k] = strain_is_free[k] ?
+                                       integrals.resultants[k] - resultants_at(load_parameter)[k] :
+                                       e[k] - eP[k];
         }
       if (jacobian)
         {
@@ -296,6 +324,14 @@ namespace cosmo
           j["resultants"][kinematics::resultant_names[k]] = s.resultants[k];
         }
       j["multipliers"] = JSON::array(std::vector<double>(s.multipliers.begin(), s.multipliers.end()));
+      // Resultant control: what the free strains' resultants are held at (t nbar).
+      if (std::any_of(target_resultants.begin(), target_resultants.end(), [](double n) { return n != 0; }))
+        {
+          const auto held = resultants_at(s.t);
+          for (unsigned int k = 0; k < 6; ++k)
+            if (strain_is_free[k])
+              j["held_resultants"][kinematics::resultant_names[k]] = held[k];
+        }
       JSON K           = JSON::array();
       for (unsigned int a = 0; a < s.stiffness.m(); ++a)
         {
@@ -532,6 +568,15 @@ namespace cosmo
       residual_scales(F, D);
       for (unsigned int k = 0; k < n_gauge; ++k)
         w[k] = k < 3 ? 1. / std::pow(D, 3) : 1. / std::pow(D, 4);
+    }
+
+    std::array<double, 6>
+    ReducedRodProblem::resultants_at(const double t) const
+    {
+      std::array<double, 6> n;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        n[k] = strain_is_free[k] ? t * target_resultants[k] : 0.;
+      return n;
     }
 
     std::array<double, 6>

@@ -21,7 +21,8 @@
  * multipliers of the linear gauge constraints C U = 0, and the six rod
  * strains e = (nu, kappa). Each strain is prescribed (ramped by the load
  * parameter t from the reference (0,0,1,0,0,0)) or free (its resultant
- * dPsi/de vanishes). The Jacobian is a BorderedSystem: the sparse block
+ * dPsi/de vanishes, or reaches t times a target: resultant control, the
+ * equilibrium of Psi - t nbar.e under dead loads nbar). The Jacobian is a BorderedSystem: the sparse block
  * [[E_UU, C^T],[C, 0]] is factorized, the strains are eliminated through its
  * Schur complement, which is the 6x6 stiffness.
  *
@@ -67,6 +68,15 @@ namespace cosmo
         target_strains = strains;
         waypoints.clear();
       }
+      /// Target resultants of the free strains (reached at t = 1).
+      void
+      set_target_resultants(const std::array<double, 6> &n)
+      {
+        target_resultants = n;
+      }
+      /// The resultants the free strains are held at, t times the targets (0 for prescribed strains).
+      std::array<double, 6>
+      resultants_at(double t) const;
       void
       set_free_strains(const std::array<bool, 6> &free)
       {
@@ -341,6 +351,7 @@ namespace cosmo
       double                          load_parameter = 0;
       std::array<double, 6>           target_strains{{0, 0, 1, 0, 0, 0}};
       std::array<bool, 6>             strain_is_free{};
+      std::array<double, 6>           target_resultants{};
       std::string                     mode = "natural shape";
       std::vector<std::array<double, 6>> waypoints; ///< 'Path' (empty: straight ramp)
       io::PhaseTimer                  timer;
