@@ -90,4 +90,8 @@ fi
 { base; printf 'subsection Rod strains\n set Strains = 0, 0, 1\nend\n'; } > strains.prm
 expect "wrong number of strains" "Strains" strains.prm
 expect "unknown option" "unknown option" --frobnicate
+{ base; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = kappa3\nend\nsubsection Constitutive table\n set Enabled = true\nend\n'; } > tablefree.prm
+expect "a table axis that is a free strain" "entry 'Second strain' = 'kappa3': a prescribed strain: this one is free" tablefree.prm
+{ base; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = nu3\n set Resultants = 0, 0, 1, 1, 0, 0\nend\n'; } > moment.prm
+expect "a moment target for a prescribed curvature" "m1 = 1 for the prescribed kappa1: a resultant can only be prescribed for a strain in 'Free strains'" moment.prm
 exit $fail

@@ -3,8 +3,10 @@
 # buckling (arclength, events, switched branches) stopped by SIGTERM at step
 # 20 and SIGKILL at step 50, and a section's natural-parameter growth path
 # stopped by SIGKILL after step 2, and a sweep of a section over a parameter
-# killed after its third point, each resumed to the end, reach the
-# uninterrupted run's tables and summary.json (tests/compare_runs.py).
+# killed after its third point, and a section's constitutive table killed
+# half-way, each resumed to the end, reach the uninterrupted run's tables
+# and summary.json (tests/compare_runs.py; the table's table.csv byte for
+# byte and table.h5's data).
 # usage: robustness_paths.sh <strip> <rod_cross_section> <scratch dir>
 set -uo pipefail
 strip=$(realpath "$1") rod=$(realpath "$2") dir=$3
@@ -51,4 +53,22 @@ if [ $s1 -eq 137 ] && [ $s2 -eq 0 ] && [ -z "$why" ] && grep -q "resumed from th
    [ ! -f sweep/checkpoint.cosmo ]; then
   ok "a section sweep killed after point 3 and resumed: the uninterrupted sweep.csv"
 else bad "section sweep: exits $s1 $s2; $why"; cat sweep-1.txt; fi
+# A section's constitutive table (12 x 12) killed after its 40th point and resumed.
+table_prm() { sed -e "s/-0.2, 0.2, 5/-0.2, 0.2, 12/g" "$here/../parameter_files/rod_cross_section/table_bending_twist.prm" | with_output /dev/stdin "$1"; }
+table_prm table-whole > table-whole.prm; table_prm table > table.prm
+timeout 300 "$rod" --quiet table-whole.prm > table-whole.txt 2>&1 || bad "the uninterrupted table failed"
+"$rod" --quiet table.prm > table-0.txt 2>&1 & pid=$!
+for _ in $(seq 1 1200); do [ "$(wc -l < table/table.csv 2>/dev/null || echo 0)" -ge 41 ] && break; sleep 0.05; done
+kill -KILL $pid; wait $pid 2>/dev/null; s1=$?
+timeout 300 "$rod" --quiet --resume table > table-1.txt 2>&1; s2=$?
+same=$(/usr/bin/python3 - <<'PY'
+import h5py, numpy as np
+a, b = h5py.File("table-whole/table.h5"), h5py.File("table/table.h5")
+print(all(np.array_equal(a[k][()], b[k][()], equal_nan=True) for k in ("energy", "resultants", "stiffness", "converged")))
+PY
+)
+if [ $s1 -eq 137 ] && [ $s2 -eq 0 ] && cmp -s table-whole/table.csv table/table.csv && [ "$same" = True ] &&
+   grep -q "going on after" table/log.txt && [ ! -f table/checkpoint.cosmo ]; then
+  ok "a section table killed after 40 points and resumed: the uninterrupted table.csv and table.h5"
+else bad "section table: exits $s1 $s2, h5 equal: $same"; tail -3 table-1.txt; fi
 exit $fail

@@ -768,6 +768,17 @@ namespace cosmo
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("min_elastic_J");
 
+      if (table.enabled())
+        {
+          // The path to t = 1 (the base state, redone on --resume: it is
+          // short), then the table, whose checkpoints hold its points.
+          record.attempt([&]() {
+            solve();
+            run_table(prm);
+          });
+          write_summary();
+          return;
+        }
       // Checkpoints after every converged step; --resume goes on from the last.
       write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
       if (record.resuming())
@@ -776,6 +787,41 @@ namespace cosmo
       if (!record.failed())
         say_result();
       write_summary();
+    }
+
+    void
+    CrossSectionProblem::run_table(const ParameterHandler &prm)
+    {
+      io::PhaseTimer::Scope scope(timer, "constitutive table");
+      say("constitutive table around the state at t = 1:");
+      const bool keep_output = write_output;
+      write_output           = false; // no per-point files
+      set_load_parameter(1.);
+      Vector<double>               start;
+      assembly::TableCheckpointing cp;
+      cp.write      = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
+      cp.save_start = [&](io::CheckpointWriter &w) { w.put_vector(start); };
+      cp.load_start = [&](io::CheckpointReader &r) {
+        r.get_vector(start);
+        solution = start;
+      };
+      if (record.resuming())
+        cp.resume = &record.checkpoint();
+      assembly::TableDescription d;
+      d.application     = "rod_cross_section";
+      d.version         = COSMO_VERSION;
+      d.parameters      = io::checkpoint_parameters(prm);
+      d.free_strains    = strain_is_free;
+      d.held_resultants = resultants_at(1.);
+      table.run(target_strains, strains_of(solution),
+                [this](const std::array<double, 6> &e) { return resolve(e); },
+                [&]() { start = solution; },
+                [&]() { solution = start; },
+                output_directory,
+                record.reporter(),
+                d,
+                cp);
+      write_output = keep_output;
     }
 
     void

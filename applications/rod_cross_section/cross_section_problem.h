@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cosmo/analysis/section_properties.h>
+#include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/geometry/cross_section.h>
 #include <cosmo/io/output.h>
@@ -138,6 +139,7 @@ namespace cosmo
       double                         rod_piece_length = 0; // 0: automatic
       unsigned int                   rod_piece_slices = 24;
       bool                           stiffness_every_step = true;
+      assembly::ConstitutiveTable    table;
 
       // Discretization
       Triangulation<2>                        triangulation;
@@ -216,6 +218,9 @@ namespace cosmo
       write_surface_layers(const std::string &file, double t) const;
       void
       write_summary() const;
+      /// After the path to t = 1: the constitutive table around that state.
+      void
+      run_table(const ParameterHandler &prm);
       /// The final state in words: energy, strains, resultants, stiffness, centreline.
       void
       say_result() const;

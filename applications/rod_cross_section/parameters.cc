@@ -61,6 +61,7 @@ namespace cosmo
       prm.leave_subsection();
 
       io::ParameterSweep::declare_parameters(prm);
+      assembly::ConstitutiveTable::declare_parameters(prm);
     }
 
     void
@@ -82,6 +83,8 @@ namespace cosmo
       prm.leave_subsection();
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
+      table.parse_parameters(prm);
+      table.check_axes(strain_is_free);
 
       prm.enter_subsection("Output");
       output_directory     = prm.get("Output directory");

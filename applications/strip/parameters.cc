@@ -74,14 +74,7 @@ namespace cosmo
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
       table.parse_parameters(prm);
-      if (table.enabled())
-        for (const unsigned int k : {table.first, table.second})
-          if (strain_is_free[k])
-            throw io::InputError("Constitutive table",
-                                 k == table.first ? "First strain" : "Second strain",
-                                 kinematics::strain_names[k],
-                                 "a prescribed strain: this one is free ('Rod strains / Mode' "
-                                 "or 'Free strains'), so its value would be ignored");
+      table.check_axes(strain_is_free);
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       prm.leave_subsection();

@@ -297,6 +297,22 @@ namespace cosmo
         resume_from = &record.checkpoint();
     }
 
+    assembly::TableDescription
+    StripProblem::table_description(const ParameterHandler &prm) const
+    {
+      assembly::TableDescription d;
+      d.application     = "strip";
+      d.version         = COSMO_VERSION;
+      d.parameters      = io::checkpoint_parameters(prm);
+      d.energy_unit     = "E w h";
+      d.force_unit      = "E w h";
+      d.moment_unit     = "E w h L";
+      d.length_unit     = "L";
+      d.free_strains    = strain_is_free;
+      d.held_resultants = resultants_at(1.);
+      return d;
+    }
+
     void
     StripProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
@@ -343,6 +359,7 @@ namespace cosmo
                       [&]() { solution = start; },
                       output_directory,
                       record.reporter(),
+                      table_description(prm),
                       cp);
             write_output = true;
           }

@@ -129,6 +129,10 @@ namespace cosmo
       int
       load_derivative(const Vector<double> &U, double lambda, Vector<double> &dR) override;
 
+      /// What table.h5 records about this run (units of the strip, free strains, parameters).
+      assembly::TableDescription
+      table_description(const ParameterHandler &prm) const;
+
     private:
       // Parameters
       double                        strip_width = 1, thickness = 0.01;

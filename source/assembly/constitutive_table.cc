@@ -8,7 +8,10 @@
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/solvers/newton.h>
 
+#include <hdf5_hl.h>
+
 #include <cmath>
+#include <iomanip>
 #include <chrono>
 #include <filesystem>
 #include <sstream>
@@ -17,6 +20,152 @@ namespace cosmo
 {
   namespace assembly
   {
+    namespace
+    {
+      std::string
+      joined(const std::vector<std::string> &items)
+      {
+        std::string out;
+        for (const auto &i : items)
+          out += (out.empty() ? "" : ", ") + i;
+        return out;
+      }
+
+      std::string
+      unit_of_strain(const unsigned int k, const TableDescription &d)
+      {
+        return k < 3 ? "1" : "1/" + d.length_unit;
+      }
+
+      std::string
+      unit_of_resultant(const unsigned int k, const TableDescription &d)
+      {
+        return k < 3 ? d.force_unit : d.moment_unit;
+      }
+
+      /**
+       * table.h5: the datasets with their units and meaning as attributes,
+       * the strain axes as HDF5 dimension scales (h5py: dataset.dims), the
+       * run's description as file attributes.
+       */
+      void
+      write_table_h5(const std::string &         file_name,
+                     const TableDescription &    d,
+                     const unsigned int          first,
+                     const unsigned int          second,
+                     const double                a1,
+                     const double                h1,
+                     const unsigned int          n1,
+                     const double                a2,
+                     const double                h2,
+                     const unsigned int          n2,
+                     const std::vector<double> & energy,
+                     const std::vector<double> & resultants,
+                     const std::vector<double> & stiffness,
+                     const std::vector<double> & converged)
+      {
+        const auto &names  = kinematics::strain_names;
+        const auto &rnames = kinematics::resultant_names;
+        {
+          HDF5::File          file(file_name, HDF5::File::FileAccessMode::create);
+          std::vector<double> s1(n1), s2(n2);
+          for (unsigned int i = 0; i < n1; ++i)
+            s1[i] = a1 + h1 * i;
+          for (unsigned int j = 0; j < n2; ++j)
+            s2[j] = a2 + h2 * j;
+          auto write = [&](const std::string &name, const std::vector<hsize_t> &dims,
+                           const std::vector<double> &data, const std::string &units,
+                           const std::string &what) {
+            auto ds = file.create_dataset<double>(name, dims);
+            ds.write(data);
+            ds.set_attribute("units", units);
+            ds.set_attribute("description", what);
+            return ds;
+          };
+          write("strain_1", {n1}, s1, unit_of_strain(first, d),
+                "the first grid axis: values of the strain " + names[first]);
+          write("strain_2", {n2}, s2, unit_of_strain(second, d),
+                "the second grid axis: values of the strain " + names[second]);
+          write("energy", {n1, n2}, energy, d.energy_unit + " (per unit reference length)",
+                "energy per unit reference length Psi at (strain_1[i], strain_2[j]); NaN where not converged");
+          auto r = write("resultants", {n1, n2, 6}, resultants,
+                         d.force_unit + " (n1, n2, n3), " + d.moment_unit + " (m1, m2, m3)",
+                         "resultants dPsi/d(strains) at (i, j), component k of `components`; NaN where not converged");
+          r.set_attribute("components", joined({rnames.begin(), rnames.end()}));
+          auto K = write("stiffness", {n1, n2, 6, 6}, stiffness,
+                         "unit of resultant a per unit of strain b",
+                         "tangent stiffness K[i, j, a, b] = d(resultant a)/d(strain b), the "
+                         "section's 6x6 with its field condensed and all six strains as variables "
+                         "(symmetric; for the stiffness with the free strains' resultants held, "
+                         "condense them: K_pp - K_pf K_ff^-1 K_fp); NaN where not converged");
+          K.set_attribute("rows", joined({rnames.begin(), rnames.end()}));
+          K.set_attribute("columns", joined({names.begin(), names.end()}));
+          std::vector<int> mask(converged.size());
+          for (unsigned int p = 0; p < mask.size(); ++p)
+            mask[p] = converged[p] != 0;
+          auto c = file.create_dataset<int>("converged", {n1, n2});
+          c.write(mask);
+          c.set_attribute("units", std::string("1"));
+          c.set_attribute("description",
+                          std::string("boolean mask: 1 where the point converged, 0 where it did not "
+                                      "(its other entries are NaN)"));
+
+          file.set_attribute("application", d.application);
+          file.set_attribute("version", d.version);
+          file.set_attribute("format", std::string("cosmo constitutive table 2"));
+          file.set_attribute("strain_1_name", names[first]);
+          file.set_attribute("strain_2_name", names[second]);
+          file.set_attribute("strain_order", joined({names.begin(), names.end()}));
+          file.set_attribute("resultant_order", joined({rnames.begin(), rnames.end()}));
+          std::vector<std::string> free, units;
+          std::ostringstream       base, held;
+          base << std::setprecision(17);
+          held << std::setprecision(17);
+          for (unsigned int k = 0; k < 6; ++k)
+            {
+              if (d.free_strains[k])
+                {
+                  free.push_back(names[k]);
+                  held << (held.tellp() > 0 ? ", " : "") << rnames[k] << " = " << d.held_resultants[k];
+                }
+              units.push_back(names[k] + ": " + unit_of_strain(k, d));
+            }
+          file.set_attribute("free_strains", free.empty() ? std::string("(none)") : joined(free));
+          file.set_attribute("held_resultants",
+                             held.tellp() > 0 ? held.str() : std::string("(no free strains)"));
+          file.set_attribute("strain_units", joined(units));
+          file.set_attribute("length_unit", d.length_unit);
+          file.set_attribute("parameters", d.parameters);
+        }
+        // Dimension scales (HDF5 high-level API): energy, resultants, stiffness
+        // and converged are indexed by (strain_1, strain_2, component...).
+        const hid_t f = H5Fopen(file_name.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+        AssertThrow(f >= 0, ExcMessage("cannot reopen " + file_name));
+        const hid_t s1 = H5Dopen2(f, "strain_1", H5P_DEFAULT), s2 = H5Dopen2(f, "strain_2", H5P_DEFAULT);
+        H5DSset_scale(s1, names[first].c_str());
+        H5DSset_scale(s2, names[second].c_str());
+        for (const char *name : {"energy", "resultants", "stiffness", "converged"})
+          {
+            const hid_t ds = H5Dopen2(f, name, H5P_DEFAULT);
+            H5DSattach_scale(ds, s1, 0);
+            H5DSattach_scale(ds, s2, 1);
+            H5DSset_label(ds, 0, names[first].c_str());
+            H5DSset_label(ds, 1, names[second].c_str());
+            if (std::string(name) == "resultants")
+              H5DSset_label(ds, 2, "resultant");
+            if (std::string(name) == "stiffness")
+              {
+                H5DSset_label(ds, 2, "resultant");
+                H5DSset_label(ds, 3, "strain");
+              }
+            H5Dclose(ds);
+          }
+        H5Dclose(s1);
+        H5Dclose(s2);
+        H5Fclose(f);
+      }
+    } // namespace
+
     void
     ConstitutiveTable::declare_parameters(ParameterHandler &prm)
     {
@@ -33,6 +182,18 @@ namespace cosmo
       prm.declare_entry("Second range", "-1, 1, 5", Patterns::List(Patterns::Double(), 3, 3),
                         "From, To, Number of values of the second strain.");
       prm.leave_subsection();
+    }
+
+    void
+    ConstitutiveTable::check_axes(const std::array<bool, 6> &free_strains) const
+    {
+      if (is_enabled)
+        for (const unsigned int k : {first, second})
+          if (free_strains[k])
+            throw io::InputError("Constitutive table", k == first ? "First strain" : "Second strain",
+                                 kinematics::strain_names[k],
+                                 "a prescribed strain: this one is free ('Rod strains / Mode' "
+                                 "or 'Free strains'), so its value would be ignored");
     }
 
     void
@@ -74,6 +235,7 @@ namespace cosmo
                            const std::function<void()> &                    restore,
                            const std::string &                              directory,
                            const std::function<void(const std::string &)> &progress,
+                           const TableDescription &                         description,
                            const TableCheckpointing &                       checkpointing) const
     {
       auto value = [](double a, double b, unsigned int n, unsigned int i) {
@@ -209,27 +371,9 @@ namespace cosmo
 
       // HDF5, written under a temporary name and renamed: complete or absent.
       const std::string tmp = directory + "/table.h5.tmp", h5 = directory + "/table.h5";
-      {
-        HDF5::File          file(tmp, HDF5::File::FileAccessMode::create);
-        std::vector<double> s1(n1), s2(n2);
-        for (unsigned int i = 0; i < n1; ++i)
-          s1[i] = value(from1, to1, n1, i);
-        for (unsigned int j = 0; j < n2; ++j)
-          s2[j] = value(from2, to2, n2, j);
-        auto write = [&](const std::string &name, const std::vector<hsize_t> &dims,
-                         const std::vector<double> &data) {
-          auto d = file.create_dataset<double>(name, dims);
-          d.write(data);
-        };
-        write("strain_1", {n1}, s1);
-        write("strain_2", {n2}, s2);
-        write("energy", {n1, n2}, energy);
-        write("resultants", {n1, n2, 6}, resultants);
-        write("stiffness", {n1, n2, 6, 6}, stiffness);
-        write("converged", {n1, n2}, converged);
-        file.set_attribute("strain_1_name", kinematics::strain_names[first]);
-        file.set_attribute("strain_2_name", kinematics::strain_names[second]);
-      }
+      write_table_h5(tmp, description, first, second, value(from1, to1, n1, 0), n1 > 1 ? value(from1, to1, n1, 1) - value(from1, to1, n1, 0) : 0.,
+                     n1, value(from2, to2, n2, 0), n2 > 1 ? value(from2, to2, n2, 1) - value(from2, to2, n2, 0) : 0., n2,
+                     energy, resultants, stiffness, converged);
       std::filesystem::rename(tmp, h5);
       io::record_output_file(h5);
       std::ostringstream m;

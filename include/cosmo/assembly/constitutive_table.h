@@ -43,6 +43,18 @@ namespace cosmo
       io::CheckpointReader *resume = nullptr;
     };
 
+    /// What a table's file records about its run (table.h5 attributes).
+    struct TableDescription
+    {
+      std::string application, version;
+      /// io::checkpoint_parameters() of the run: every entry, one line each.
+      std::string parameters;
+      /// Units of the energy per length, forces n and moments m, and of length.
+      std::string energy_unit = "E L^2", force_unit = "E L^2", moment_unit = "E L^3", length_unit = "L";
+      std::array<bool, 6>   free_strains{};
+      std::array<double, 6> held_resultants{};
+    };
+
     class ConstitutiveTable
     {
     public:
@@ -56,6 +68,10 @@ namespace cosmo
       {
         return is_enabled;
       }
+
+      /// io::InputError naming the axis if an axis strain is free (its value would be ignored).
+      void
+      check_axes(const std::array<bool, 6> &free_strains) const;
 
       /// resolve(e): the converged state at prescribed strains e from the last one.
       using Resolver = std::function<ReducedRodState(const std::array<double, 6> &)>;
@@ -75,6 +91,7 @@ namespace cosmo
           const std::function<void()> &restore,
           const std::string &          directory,
           const std::function<void(const std::string &)> &progress,
+          const TableDescription &     description,
           const TableCheckpointing &   checkpointing = {}) const;
 
       unsigned int first = 3, second = 5; ///< strain indices
