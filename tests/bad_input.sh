@@ -90,6 +90,12 @@ fi
 { base; printf 'subsection Rod strains\n set Strains = 0, 0, 1\nend\n'; } > strains.prm
 expect "wrong number of strains" "Strains" strains.prm
 expect "unknown option" "unknown option" --frobnicate
+expect "--print-parameters with an unknown format" "takes prm, json or xml (then, optionally, a parameter file), not 'yaml'" --print-parameters yaml
+expect "--print-parameters of a missing file" "cannot open the parameter file 'nope.prm'" --print-parameters json nope.prm
+{ base; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Strains = 0, 0, 1, 0, 0, 0.25\nend\n'; } > given.prm
+if timeout 60 "$exe" --print-parameters json given.prm | python3 -c 'import json, sys; d = json.load(sys.stdin); sys.exit(0 if d["Rod strains"]["Strains"]["value"] == "0, 0, 1, 0, 0, 0.25" and d["Cross-section"]["Global refinements"]["value"] == "1" else 1)'; then
+  echo "  ok    --print-parameters json FILE prints the file's values"
+else echo "  FAIL  --print-parameters json FILE does not print the file's values"; fail=1; fi
 { base; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = kappa3\nend\nsubsection Constitutive table\n set Enabled = true\nend\n'; } > tablefree.prm
 expect "a table axis that is a free strain" "entry 'Second strain' = 'kappa3': a prescribed strain: this one is free" tablefree.prm
 { base; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = nu3\n set Resultants = 0, 0, 1, 1, 0, 0\nend\n'; } > moment.prm

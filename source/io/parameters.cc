@@ -191,8 +191,9 @@ namespace cosmo
             << "  " << info.name << " --resume DIR [--quiet]\n"
             << "        continue the interrupted or killed run in DIR from its last checkpoint\n"
             << "        (with DIR/parameters.prm; FILE.prm, if given too, must match it)\n"
-            << "  " << info.name << " --print-parameters [prm|json|xml]\n"
-            << "        print every parameter with its documentation and default\n"
+            << "  " << info.name << " --print-parameters [prm|json|xml] [FILE.prm]\n"
+            << "        print every parameter with its documentation and default, or with\n"
+            << "        the values FILE.prm sets (its errors are reported as for a run)\n"
             << "  " << info.name << " --help | --version\n\n"
             << "Exit status: 0 success, 1 bad input (file, entry, value), 2 the run\n"
             << "could not proceed (files written so far are kept and complete),\n"
@@ -235,22 +236,33 @@ namespace cosmo
                 }
               else if (a == "--print-parameters")
                 {
-                  std::string fmt = (i + 1 < args.size()) ? args[i + 1] : "prm";
-                  ParameterHandler prm;
-                  declare(prm);
-                  ParameterHandler::OutputStyle style;
-                  if (fmt == "prm")
-                    style = ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM;
-                  else if (fmt == "json")
-                    style = ParameterHandler::JSON;
-                  else if (fmt == "xml")
-                    style = ParameterHandler::XML;
-                  else
+                  // --print-parameters [FORMAT] [FILE.prm]: with a file, its
+                  // values (defaults for what it leaves unset), as ASPECT's
+                  // --output-json does.
+                  std::string fmt = "prm";
+                  if (i + 1 < args.size() && (args[i + 1] == "prm" || args[i + 1] == "json" ||
+                                              args[i + 1] == "xml"))
+                    fmt = args[++i];
+                  else if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-' &&
+                           args[i + 1].find('.') == std::string::npos &&
+                           !std::filesystem::exists(args[i + 1]))
                     {
-                      std::cerr << info.name << ": --print-parameters takes prm, json or xml, not '"
-                                << fmt << "'\n";
+                      std::cerr << info.name << ": --print-parameters takes prm, json or xml "
+                                << "(then, optionally, a parameter file), not '" << args[i + 1]
+                                << "'\n";
                       return 1;
                     }
+                  ParameterHandler prm;
+                  declare(prm);
+                  if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-')
+                    {
+                      options.parameter_file = args[++i];
+                      parse_parameter_file(prm, options.parameter_file);
+                    }
+                  ParameterHandler::OutputStyle style =
+                    fmt == "json" ? ParameterHandler::JSON :
+                    fmt == "xml"  ? ParameterHandler::XML :
+                                    ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM;
                   prm.print_parameters(std::cout, style);
                   return 0;
                 }
