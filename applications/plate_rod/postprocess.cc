@@ -163,7 +163,8 @@ namespace cosmo
            << "  t = " << std::setprecision(8) << std::setw(10) << report.t << "  Delta = "
            << std::setprecision(5) << mismatch(report.t) << "  Newton " << report.newton_iterations
            << "  dome " << std::setprecision(4) << s.w_centre << "  neg.eig. " << s.n_negative
-           << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue;
+           << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue
+           << record.progress(solvers::path_fraction(report, arclength_settings));
       say(line.str());
       if (!write_output)
         return;

@@ -179,6 +179,7 @@ namespace cosmo
             line << (k ? ", " : "") << io::format_significant(s.strains[k], 6);
           line << ")";
         }
+      line << record.progress(solvers::path_fraction(report, arclength_settings));
       say(line.str());
 
       if (!write_output)
@@ -418,6 +419,16 @@ namespace cosmo
       record.finish(j, timer);
     }
 
+    namespace
+    {
+      std::string
+      axis_angle(const double radians)
+      {
+        return std::isfinite(radians) ? "at " + io::format_significant(radians * 180 / M_PI, 4) + " deg" :
+                                         std::string("any (equal bending stiffnesses)");
+      }
+    } // namespace
+
     void
     CrossSectionProblem::say_reference_properties() const
     {
@@ -430,8 +441,8 @@ namespace cosmo
           << "    EA " << io::format_significant(p.EA, 5) << ", elastic centre " << pt(p.elastic_centre)
           << ", centroid " << pt(p.centroid) << "\n"
           << "    EI11 " << io::format_significant(p.EI11, 5) << ", EI22 " << io::format_significant(p.EI22, 5)
-          << ", EI12 " << io::format_significant(p.EI12, 5) << "; principal axis at "
-          << io::format_significant(p.principal_angle * 180 / M_PI, 4) << " deg (EI "
+          << ", EI12 " << io::format_significant(p.EI12, 5) << "; principal axis "
+          << axis_angle(p.principal_angle) << " (EI "
           << io::format_significant(p.principal_bending[0], 5) << ", "
           << io::format_significant(p.principal_bending[1], 5) << ")\n"
           << "    GJ " << io::format_significant(p.GJ, 5) << "; shear centre " << pt(p.shear_centre_flexure)
@@ -471,8 +482,8 @@ namespace cosmo
             return "(" + io::format_significant(p[0], 4) + ", " + io::format_significant(p[1], 4) + ")";
           };
           out << "  from this stiffness: tension centre " << pt(a.tension_centre) << ", shear centre "
-              << pt(a.shear_centre) << ", principal bending axis at "
-              << io::format_significant(a.principal_angle * 180 / M_PI, 4) << " deg (EI "
+              << pt(a.shear_centre) << ", principal bending axis "
+              << axis_angle(a.principal_angle) << " (EI "
               << io::format_significant(a.principal_bending[0], 4) << ", "
               << io::format_significant(a.principal_bending[1], 4)
               << "), torsional stiffness with the other resultants zero "

@@ -29,6 +29,10 @@ namespace cosmo
         double       angle = 0.5 * std::atan2(2 * b, a - c);
         if (angle <= -0.5 * M_PI)
           angle += M_PI;
+        // Equal eigenvalues (a circle, a square): every axis is principal;
+        // the angle of round-off would mean nothing.
+        if (radius <= 1e-9 * std::abs(mean))
+          angle = std::numeric_limits<double>::quiet_NaN();
         return {angle, {{mean + radius, mean - radius}}};
       }
 

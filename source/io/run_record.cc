@@ -2,6 +2,9 @@
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/run_record.h>
 
+#include <iomanip>
+#include <sstream>
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -15,12 +18,34 @@ namespace cosmo
       : application(application)
     {}
 
+    std::string
+    RunRecord::progress(const double fraction) const
+    {
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - opened_at).count();
+      auto format = [](const double s) {
+        std::ostringstream o;
+        if (s < 60)
+          o << std::fixed << std::setprecision(s < 10 ? 1 : 0) << s << " s";
+        else if (s < 3600)
+          o << int(s / 60) << " min " << int(s) % 60 << " s";
+        else
+          o << int(s / 3600) << " h " << int(s / 60) % 60 << " min";
+        return o.str();
+      };
+      std::string out = "  [" + format(seconds);
+      if (fraction > 0.01 && fraction < 1)
+        out += ", ETA " + format(seconds * (1 - fraction) / fraction);
+      return out + "]";
+    }
+
     void
     RunRecord::open(const std::string &directory, const ParameterHandler &prm,
                     const RunOptions &run_options)
     {
       options          = run_options;
       output_directory = directory;
+      opened_at        = std::chrono::steady_clock::now();
       parameters       = checkpoint_parameters(prm);
       resumed          = !options.resume_directory.empty();
       // A checkpoint of other parameters is refused before anything is touched.

@@ -35,6 +35,16 @@ namespace cosmo
     }
 
     double
+    path_fraction(const StepReport &report, const ArclengthSettings &arclength)
+    {
+      if (!arclength.enabled)
+        return report.t;
+      if (report.branch == 0 && arclength.lambda_max > 0 && arclength.lambda_max < 1e300)
+        return report.t / arclength.lambda_max;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    double
     BifurcationProblem::unknowns_scale(const Vector<double> &U) const
     {
       Vector<double> mask;
@@ -809,7 +819,7 @@ namespace cosmo
                   {
                     std::ostringstream m;
                     if (cp.converged)
-                      m << std::setprecision(10) << "Newton found the critical point at lambda = "
+                      m << std::setprecision(10) << "Newton found the critical point at t = "
                         << cp.lambda << ", outside the detection bracket [" << lo.lambda << ", "
                         << hi.lambda << "]";
                     else
@@ -855,7 +865,7 @@ namespace cosmo
 
           std::ostringstream m;
           m << std::setprecision(12) << "  " << e.name() << " on branch " << branch
-            << " at lambda = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
+            << " at t = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
             << " -> " << e.n_negative_after << "; ";
           if (e.located_by_newton)
             {
@@ -939,7 +949,7 @@ namespace cosmo
           io::check_interrupt(); // between steps: the last converged state is written
           if (s.lambda < settings.lambda_min || s.lambda > settings.lambda_max)
             {
-              say("  branch " + std::to_string(branch) + " left the parameter range at lambda = " +
+              say("  branch " + std::to_string(branch) + " left the parameter range at t = " +
                   std::to_string(s.lambda));
               return;
             }
@@ -965,7 +975,7 @@ namespace cosmo
               if (ds < settings.minimum_step)
                 {
                   std::ostringstream m;
-                  m << "branch " << branch << " ends at lambda = " << std::setprecision(10)
+                  m << "branch " << branch << " ends at t = " << std::setprecision(10)
                     << s.lambda << ", before its target: the step fell below the minimum ("
                     << settings.minimum_step << ") after " << cutbacks << " cut-backs ("
                     << e.what() << ")";
@@ -1042,7 +1052,7 @@ namespace cosmo
       if (!cp.converged)
         {
           e.message = "Newton on the augmented system failed: " + cp.message;
-          say("  critical point from the guess at lambda = " + std::to_string(lambda) + ": " +
+          say("  critical point from the guess at t = " + std::to_string(lambda) + ": " +
               e.message);
           return record;
         }
@@ -1051,8 +1061,8 @@ namespace cosmo
       phi /= std::sqrt(norm2(phi));
       record.mode.assign(phi.begin(), phi.end());
       std::ostringstream m;
-      m << std::setprecision(12) << "  " << e.name() << " at lambda = " << e.lambda
-        << " from the guess at lambda = " << lambda << " (Newton on the augmented system: "
+      m << std::setprecision(12) << "  " << e.name() << " at t = " << e.lambda
+        << " from the guess at t = " << lambda << " (Newton on the augmented system: "
         << e.newton_iterations << " iterations, " << e.factorizations
         << " factorizations, resolution " << std::setprecision(2) << event_resolution(e)
         << ", negative eigenvalues there " << e.n_negative_after << ")";
@@ -1163,7 +1173,7 @@ namespace cosmo
               if (d <= 1e-6 * scale + 1e-14 * (1 + std::abs(start.lambda)))
                 {
                   std::ostringstream m;
-                  m << std::setprecision(10) << "  the branch along -phi from lambda = "
+                  m << std::setprecision(10) << "  the branch along -phi from t = "
                     << start.lambda << " (branch " << start.branch
                     << ") is the mirror image of the one along +phi (their first points agree in "
                        "lambda to "
@@ -1186,7 +1196,7 @@ namespace cosmo
           }
           say("  following branch " + std::to_string(branch) + " (depth " +
               std::to_string(first.depth) + ", from branch " + std::to_string(start.branch) +
-              ") from lambda = " + std::to_string(first.lambda));
+              ") from t = " + std::to_string(first.lambda));
           const std::size_t queued = switches.size();
           at.branch     = branch;
           at.q          = q;

@@ -55,7 +55,8 @@ namespace cosmo
       Point<2> elastic_centre;  ///< E-weighted centroid (tension centre)
       /// About the elastic centre: EI11 = int E X2^2, EI22 = int E X1^2, EI12 = int E X1 X2.
       double EI11 = 0, EI22 = 0, EI12 = 0;
-      /// Angle (rad, from E1 counterclockwise) of the principal axis of the larger bending stiffness.
+      /// Angle (rad, from E1 counterclockwise) of the principal axis of the
+      /// larger bending stiffness; NaN if both are equal to 1e-9 (every axis is principal).
       double                principal_angle = 0;
       std::array<double, 2> principal_bending{{0, 0}}; ///< larger, smaller
       double                GJ = 0;                    ///< Saint-Venant torsional stiffness

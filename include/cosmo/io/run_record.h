@@ -8,6 +8,8 @@
 #include <cosmo/io/parameters.h>
 
 #include <functional>
+#include <chrono>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -48,6 +50,14 @@ namespace cosmo
       /// A line to log.txt and (unless quiet) the terminal; before open(), the terminal only.
       void
       say(const std::string &line) const;
+
+      /**
+       * For a step line: "  [12.3 s]" (wall time since open()), with
+       * ", ETA 40 s" when `fraction` (the share of the run done, e.g. t of a
+       * path to t = 1) is in (0.01, 1): the remaining share at the speed so far.
+       */
+      std::string
+      progress(double fraction = std::numeric_limits<double>::quiet_NaN()) const;
 
       /// say() as a function, for the library's progress callbacks.
       std::function<void(const std::string &)>
@@ -126,6 +136,7 @@ namespace cosmo
       std::string             parameters; ///< checkpoint_parameters() of the run
       bool                    resumed = false;
       CheckpointReader        resume_data;
+      std::chrono::steady_clock::time_point opened_at = std::chrono::steady_clock::now();
     };
   } // namespace io
 } // namespace cosmo

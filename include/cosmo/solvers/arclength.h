@@ -231,6 +231,16 @@ namespace cosmo
       parse_parameters(ParameterHandler &prm);
     };
 
+    /**
+     * The share of a path done at a step, for an ETA: t of a natural-parameter
+     * path to t = 1; on the first branch of an arclength path, t/lambda_max
+     * when the parameter range ends at a finite positive lambda_max; NaN
+     * otherwise (the length of a branch is not known in advance).
+     */
+    double
+    path_fraction(const StepReport &report, const ArclengthSettings &arclength);
+
+
     /// What the driver found: one record per located event.
     struct EventRecord
     {
