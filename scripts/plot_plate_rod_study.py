@@ -118,9 +118,10 @@ def main(argv):
             ax.set_xlabel(r"plate thickness $h/R$")
         else:
             inside = axis_label.split(" [", 1)[1].rstrip("]") if " [" in axis_label else axis_label
-            ax.set_xlabel("swept value {} in: " + inside.replace(";", ","))
+            import plot_sweep
+            ax.set_xlabel(plot_sweep.value_label("swept value {} in: " + inside.replace(";", ",")))
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=9)
     # Thresholds over decades (they grow as (h/R)^2 against the thickness): log scale.
     ys = [v for line in axes[0].get_lines() for v in line.get_ydata() if math.isfinite(v)]
     if ys and min(ys) > 0 and max(ys) / min(ys) > 100:

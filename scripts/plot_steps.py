@@ -6,7 +6,9 @@ Usage: python3 scripts/plot_steps.py DIR [DIR ...]
 Each DIR is either the output directory of one run (it holds steps.csv and
 summary.json) or a parent directory whose immediate subdirectories are such
 run directories. For every run directory found, <run>/steps.png is written:
-three panels against the load parameter t,
+three panels against the load parameter t (solid where the state is
+stable, dashed where the Hessian has negative eigenvalues; each branch
+drawn apart; quantities at round-off named in the legend, not drawn),
   (a) the strains nu1, nu2, nu3, kappa1, kappa2, kappa3,
   (b) the resultants n1, n2, n3, m1, m2, m3,
   (c) the diagonal stiffnesses K_nu1_nu1 ... K_kappa3_kappa3 (log scale when
@@ -163,20 +165,61 @@ def finite(values):
     return [v for v in values if not math.isnan(v)]
 
 
-def plot_panel(ax, t, columns, units, names, ylabel, log_if_positive=False):
-    """Plot the given columns against t; return the names that were missing."""
+SYMBOLS = {"nu1": r"$\nu_1$", "nu2": r"$\nu_2$", "nu3": r"$\nu_3$",
+           "kappa1": r"$\kappa_1$", "kappa2": r"$\kappa_2$", "kappa3": r"$\kappa_3$",
+           "n1": r"$n_1$", "n2": r"$n_2$", "n3": r"$n_3$", "m1": r"$m_1$", "m2": r"$m_2$", "m3": r"$m_3$"}
+for _s in STRAINS:
+    SYMBOLS["K_%s_%s" % (_s, _s)] = r"$K_{%s%s}$" % ((SYMBOLS[_s][1:-1],) * 2)
+
+
+def symbol(name):
+    return SYMBOLS.get(name, name)
+
+
+def segments(columns, n):
+    """Runs of consecutive rows on one branch with one stability: (rows, stable).
+    Each run shares its first row with the previous run of its branch, so a
+    branch is drawn without gaps; different branches are never joined."""
+    branch = columns.get("branch", [0] * n)
+    negative = columns.get("n_negative_eigenvalues", [0] * n)
+    out, start = [], 0
+    for i in range(1, n + 1):
+        if i == n or branch[i] != branch[start] or \
+                ((negative[i] == 0) != (negative[start] == 0)):
+            rows = list(range(start, i))
+            if i < n and branch[i] == branch[start]:
+                rows.append(i)  # join to the next run of the same branch
+            out.append((rows, negative[start] == 0 or math.isnan(negative[start])))
+            start = i
+    return out
+
+
+def plot_panel(ax, t, columns, units, names, ylabel, log_if_positive=False, scale=0.0):
+    """Plot the given columns against t, solid where the state is stable and
+    dashed where it is not, each branch apart; a quantity that stays at
+    round-off (below 1e-9 of the panel's largest or of `scale`, or 1e-13) is
+    named in the legend instead of drawn. Return the names that were missing."""
     missing = []
     plotted = []
-    for name in names:
-        if name not in columns:
-            missing.append(name)
+    present = [name for name in names if name in columns]
+    missing = [name for name in names if name not in columns]
+    largest = max([abs(v) for name in present for v in finite(columns[name])] + [scale])
+    zero = []
+    for name in present:
+        values = finite(columns[name])
+        if values and max(abs(v) for v in values) < max(1e-9 * largest, 1e-13):
+            zero.append(name)
             continue
-        label = name
+        label = symbol(name)
         if units.get(name):
             label += " [%s]" % units[name]
-        ax.plot(t, columns[name], marker="o", markersize=3, linewidth=1.2,
-                label=label)
-        plotted.extend(finite(columns[name]))
+        color = None
+        for rows, stable in segments(columns, len(t)):
+            line, = ax.plot([t[i] for i in rows], [columns[name][i] for i in rows],
+                            linestyle="-" if stable else "--", marker="o", markersize=2.5,
+                            linewidth=1.3, color=color, label=label if color is None else None)
+            color = line.get_color()
+        plotted.extend(values)
     if log_if_positive and plotted and all(v > 0 for v in plotted):
         ax.set_yscale("log")
         ratio = max(plotted) / min(plotted)
@@ -188,13 +231,16 @@ def plot_panel(ax, t, columns, units, names, ylabel, log_if_positive=False):
             ax.yaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: "%g" % v))
             ax.yaxis.set_minor_formatter(ticker.NullFormatter())
         ylabel += " (log scale)"
+    if zero:
+        # Invisible handle: the legend names them.
+        ax.plot([], [], " ", label="%s: 0 (round-off)" % ", ".join(symbol(z) for z in zero))
     if not plotted:
-        ax.text(0.5, 0.5, "no data", transform=ax.transAxes,
-                ha="center", va="center", color="gray")
+        ax.text(0.5, 0.5, "no data" if not zero else "all at round-off",
+                transform=ax.transAxes, ha="center", va="center", color="gray")
     ax.set_ylabel(ylabel)
     ax.grid(True, which="both", alpha=0.3)
-    if any(name in columns for name in names):
-        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+    if present:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9,
                   frameon=False)
     return missing
 
@@ -231,11 +277,17 @@ def plot_run(plt, run_dir):
     fig, axes = plt.subplots(3, 1, figsize=(9, 10), sharex=True)
     missing = []
     missing += plot_panel(axes[0], t, columns, units, STRAINS, "(a) strains")
+    # Resultants are round-off against the stiffness times a unit strain.
+    stiffness_scale = max([abs(v) for name in STIFFNESS if name in columns
+                           for v in finite(columns[name])] + [0.0])
     missing += plot_panel(axes[1], t, columns, units, RESULTANTS,
-                          "(b) resultants")
+                          "(b) resultants", scale=stiffness_scale)
     missing += plot_panel(axes[2], t, columns, units, STIFFNESS,
                           "(c) diagonal stiffness", log_if_positive=True)
     axes[2].set_xlabel("load parameter t")
+    negative = [v for v in columns.get("n_negative_eigenvalues", []) if not math.isnan(v)]
+    if negative and max(negative) > 0:
+        title += "\nsolid: stable; dashed: unstable (up to %d negative eigenvalues)" % max(negative)
     fig.suptitle(title, fontsize=11)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
     out = os.path.join(run_dir, "steps.png")

@@ -48,10 +48,38 @@ def plot_critical_points(plt, sweep_dir, x, keep, units, failed):
     return save(plt, fig, axes, units, sweep_dir, suffix, failed)
 
 
-def save(plt, fig, axes, units, sweep_dir, suffix, failed):
+def value_label(text):
+    """The x label from the value column's unit text, e.g. 'swept value {} in:
+    Rim rod/Stiffnesses = 0.1, 0.1, 0.1, {}, 1e-6, 1e-6' -> 'Rim rod / Stiffnesses,
+    item 4 of 6 (EI1 of GA1, GA2, EA, EI1, EI2, GJ)' where the entry lists
+    several values; the entry path alone otherwise."""
+    if " in: " not in text:
+        return text or "swept value"
+    entry, _, template = text.split(" in: ", 1)[1].partition(" = ")
+    entry = " / ".join(p.strip() for p in entry.split("/"))
+    items = [i.strip() for i in template.split(",")]
+    if len(items) > 1:
+        k = next((i for i, item in enumerate(items) if "{}" in item), None)
+        if k is not None:
+            return "%s, item %d of %d" % (entry, k + 1, len(items))
+    if template.strip() not in ("{}", ""):
+        return "%s = %s" % (entry, template.strip())
+    return entry
+
+
+def stability_of(keep):
+    negative = [v for v in keep.get("n_negative_eigenvalues", []) if v == v]
+    if negative and max(negative) > 0:
+        return "solid: stable; dashed: unstable (up to %d negative eigenvalues)" % max(negative)
+    return ""
+
+
+def save(plt, fig, axes, units, sweep_dir, suffix, failed, stability_note=""):
     """Label, title (the directory, suffix, failed points) and write sweep.png."""
-    axes[1].set_xlabel(units.get("value") or "swept value")
+    axes[1].set_xlabel(value_label(units.get("value", "")))
     title = os.path.basename(os.path.normpath(os.path.abspath(sweep_dir))) + suffix
+    if stability_note:
+        title += "\n" + stability_note
     if failed:
         title += "  (%d point(s) did not converge)" % failed
     fig.suptitle(title, fontsize=11)
@@ -80,7 +108,7 @@ def plot_sweep(plt, sweep_dir):
                           "(a) strains at the final state")
     plot_steps.plot_panel(axes[1], x, keep, units, plot_steps.STIFFNESS,
                           "(b) diagonal stiffness", log_if_positive=True)
-    return save(plt, fig, axes, units, sweep_dir, "", len(ok) - sum(ok))
+    return save(plt, fig, axes, units, sweep_dir, "", len(ok) - sum(ok), stability_of(keep))
 
 
 def main(argv):
