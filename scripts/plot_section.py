@@ -100,6 +100,28 @@ def reexec_with_system_python():
     os.execve(system, [system, os.path.abspath(sys.argv[0])] + sys.argv[1:], env)
 
 
+def lagrange_quad_grid(c):
+    """The point ids of a VTK Lagrange quadrilateral as grid[j][i], i, j = 0..p:
+    VTK orders its corners, then the edges (0-1, 1-2, 3-2, 0-3, each in
+    increasing parameter), then the interior (i fastest)."""
+    p = int(round(len(c) ** 0.5)) - 1
+    g = [[None] * (p + 1) for _ in range(p + 1)]
+    g[0][0], g[0][p], g[p][p], g[p][0] = c[0], c[1], c[2], c[3]
+    k = 4
+    for i in range(1, p):
+        g[0][i] = c[k]; k += 1
+    for j in range(1, p):
+        g[j][p] = c[k]; k += 1
+    for i in range(1, p):
+        g[p][i] = c[k]; k += 1
+    for j in range(1, p):
+        g[j][0] = c[k]; k += 1
+    for j in range(1, p):
+        for i in range(1, p):
+            g[j][i] = c[k]; k += 1
+    return g
+
+
 def main(argv):
     if len(argv) not in (3, 4):
         sys.stderr.write(USAGE)
@@ -132,13 +154,22 @@ def main(argv):
     else:
         x, y = points[0::3], points[1::3]
         where = "reference section"
-    # Quadrilaterals (VTK type 9) split into two triangles each.
+    # Quadrilaterals (VTK type 9) split into two triangles each; Lagrange
+    # quadrilaterals (type 70, the suite's Q_p cells) into their p x p
+    # sub-quadrilaterals first.
     triangles, start = [], 0
     conn = cells["connectivity"]
     for end, kind in zip(cells["offsets"], cells["types"]):
         c = conn[start:end]
         if kind == 9 and len(c) == 4:
             triangles += [(c[0], c[1], c[2]), (c[0], c[2], c[3])]
+        elif kind == 70:
+            grid = lagrange_quad_grid(c)
+            p = len(grid) - 1
+            for j in range(p):
+                for i in range(p):
+                    a, b, d, e = grid[j][i], grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]
+                    triangles += [(a, b, d), (a, d, e)]
         start = end
     tri = mtri.Triangulation(x, y, triangles)
     values = fields[field][0]

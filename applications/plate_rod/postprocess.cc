@@ -338,7 +338,8 @@ namespace cosmo
               const auto gf = plate_growth.factors(r, load_parameter);
               vtu.set_values(k, {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
                                  gf[1], N[0], N[1], N[2], M[0], M[1], M[2]});
-              vtu.set_position(k, Point<3>(X[0] + values[k][0], X[1] + values[k][1], values[k][2]));
+              // Reference points + displacement (Warp By Vector shows X + u).
+              vtu.set_position(k, Point<3>(X[0], X[1], 0));
             }
           vtu.end_patch();
         }
@@ -362,7 +363,7 @@ namespace cosmo
       std::vector<std::vector<Tensor<1, 2>>> grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
       const auto        rod   = rod_law();
       const double      g_rod = rod_growth_at(load_parameter);
-      io::VTUPatches<1> vtu({{"d1", 3}, {"d2", 3}, {"d3", 3}, {"nu1", 1}, {"nu2", 1}, {"nu3", 1},
+      io::VTUPatches<1> vtu({{"displacement", 3}, {"d1", 3}, {"d2", 3}, {"d3", 3}, {"nu1", 1}, {"nu2", 1}, {"nu3", 1},
                              {"kappa1", 1}, {"kappa2", 1}, {"kappa3", 1}, {"n1", 1}, {"n2", 1},
                              {"n3", 1}, {"m1", 1}, {"m2", 1}, {"m3", 1}});
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -396,6 +397,8 @@ namespace cosmo
                     z, frame, {{law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}});
                   const Tensor<2, 3> L = kinematics::rim_rotation(z[6], z[7], z[10], frame.Lambda0);
                   unsigned int       col = 0;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    vtu.set_value(col++, k, values[k][c]);
                   for (unsigned int j = 0; j < 3; ++j)
                     for (unsigned int i = 0; i < 3; ++i)
                       vtu.set_value(col++, k, L[i][j]);
@@ -407,7 +410,7 @@ namespace cosmo
                     vtu.set_value(col++, k, e[j]);
                   for (unsigned int j = 0; j < 6; ++j)
                     vtu.set_value(col++, k, resultants[j]);
-                  vtu.set_position(k, Point<3>(X[0] + values[k][0], X[1] + values[k][1], values[k][2]));
+                  vtu.set_position(k, Point<3>(X[0], X[1], 0)); // reference + displacement
                 }
               vtu.end_patch();
             }

@@ -224,13 +224,16 @@ namespace cosmo
         // by the displacement.
         io::VTUPatches<2> vtu({{"displacement", 3}, {"position", 3}, {"traction_E3", 3},
                                {"von_Mises_stress", 1}, {"mean_stress", 1}, {"growth_J", 1},
-                               {"elastic_J", 1}, {"energy_density", 1}, {"region", 1}});
-        // The columns of DataOut's patches: the displacement, then the postprocessor's.
+                               {"elastic_J", 1}, {"energy_density", 1}},
+                              {"region"});
+        // The columns of DataOut's patches: the displacement, then the
+        // postprocessor's; its last one, the region, becomes integer cell data.
         const unsigned int n_data = vtu.n_columns();
         for (const auto &p2 : data_out.get_patches())
           {
             AssertThrow(p2.data.n_rows() >= n_data, ExcInternalError()); // fields as declared above
             vtu.begin_patch(p2.n_subdivisions);
+            vtu.set_cell_value(0, static_cast<int>(std::lround(p2.data(n_data, 0))));
             const unsigned int n_points = p2.data.n_cols();
             const unsigned int np       = p2.n_subdivisions + 1;
             for (unsigned int k = 0; k < n_points; ++k)
@@ -239,7 +242,7 @@ namespace cosmo
                   vtu.set_value(r, k, p2.data(r, k));
                 Point<2> x;
                 if (p2.points_are_available)
-                  x = Point<2>(p2.data(n_data, k), p2.data(n_data + 1, k));
+                  x = Point<2>(p2.data(n_data + 1, k), p2.data(n_data + 2, k));
                 else
                   {
                     const double xi = double(k % np) / p2.n_subdivisions,
@@ -341,7 +344,7 @@ namespace cosmo
       Vector<double>              u(solution.begin(), solution.begin() + n_u());
       std::vector<Vector<double>> u_values(unit_points.size(), Vector<double>(3));
 
-      io::VTUPatches<3>  vtu({{"arc_length", 1}, {"region", 1}});
+      io::VTUPatches<3>  vtu({{"arc_length", 1}, {"displacement", 3}}, {"region"});
       const unsigned int n_slices = rod_piece_slices;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
@@ -350,6 +353,7 @@ namespace cosmo
           for (unsigned int s = 0; s < n_slices; ++s)
             {
               vtu.begin_patch(p);
+              vtu.set_cell_value(0, cell->material_id());
               for (unsigned int k = 0; k < np; ++k)
                 {
                   const double                     X3 = L * (s + double(k) / p) / n_slices;
@@ -360,8 +364,12 @@ namespace cosmo
                         fev.quadrature_point(ij),
                         Tensor<1, 3>({u_values[ij][0], u_values[ij][1], u_values[ij][2]}));
                       const unsigned int pt = k * np * np + ij;
-                      vtu.set_values(pt, {X3, double(cell->material_id())});
-                      vtu.set_position(pt, Point<3>(helix.place(w)));
+                      // Reference points (X1, X2, X3) of the straight rod; Warp
+                      // By Vector by the displacement gives the rod on its helix.
+                      const Point<2>     X  = fev.quadrature_point(ij);
+                      const Tensor<1, 3> x  = helix.place(w);
+                      vtu.set_values(pt, {X3, x[0] - X[0], x[1] - X[1], x[2] - X3});
+                      vtu.set_position(pt, Point<3>(X[0], X[1], X3));
                     }
                 }
               vtu.end_patch();

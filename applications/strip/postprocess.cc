@@ -127,7 +127,7 @@ namespace cosmo
       FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
       Vector<double>              field(solution.begin(), solution.begin() + n_field);
       std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
-      io::VTUPatches<2> vtu({{"eta", 1}, {"arc_length", 1}, {"director", 3}});
+      io::VTUPatches<2> vtu({{"eta", 1}, {"arc_length", 1}, {"displacement", 3}, {"director", 3}});
       const unsigned int np = degree + 1;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
@@ -146,8 +146,11 @@ namespace cosmo
                       const Tensor<1, 3> q   = kinematics::strip_director(values[i][3], values[i][4]);
                       const Tensor<1, 3> y({eta + values[i][0], values[i][1], values[i][2]});
                       const Tensor<1, 3> d = helix.R * q;
-                      vtu.set_values(j * np + i, {eta, X3, d[0], d[1], d[2]});
-                      vtu.set_position(j * np + i, Point<3>(helix.place(y)));
+                      // Reference points: the flat strip (eta, 0, X3); Warp By
+                      // Vector by the displacement gives the strip on its helix.
+                      const Tensor<1, 3> x = helix.place(y);
+                      vtu.set_values(j * np + i, {eta, X3, x[0] - eta, x[1], x[2] - X3, d[0], d[1], d[2]});
+                      vtu.set_position(j * np + i, Point<3>(eta, 0, X3));
                     }
                 }
               vtu.end_patch();
@@ -225,7 +228,7 @@ namespace cosmo
       FEValues<1>                 fev(*fe, nodes, update_values | update_quadrature_points);
       Vector<double>              field(U.begin(), U.begin() + n_field);
       std::vector<Vector<double>> values(nodes.size(), Vector<double>(5));
-      io::VTUPatches<1> vtu({{"eta", 1}, {"director", 3}});
+      io::VTUPatches<1> vtu({{"eta", 1}, {"displacement", 3}, {"director", 3}});
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fev.reinit(cell);
@@ -235,8 +238,9 @@ namespace cosmo
             {
               const double       eta = fev.quadrature_point(k)[0];
               const Tensor<1, 3> q   = kinematics::strip_director(values[k][3], values[k][4]);
-              vtu.set_values(k, {eta, q[0], q[1], q[2]});
-              vtu.set_position(k, Point<3>(eta + values[k][0], values[k][1], values[k][2]));
+              // Reference points (eta, 0, 0) + displacement (Warp By Vector: the section).
+              vtu.set_values(k, {eta, values[k][0], values[k][1], values[k][2], q[0], q[1], q[2]});
+              vtu.set_position(k, Point<3>(eta, 0, 0));
             }
           vtu.end_patch();
         }

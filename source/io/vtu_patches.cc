@@ -4,13 +4,17 @@
 #include <cosmo/io/vtu_patches.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace cosmo
 {
   namespace io
   {
     template <int dim>
-    VTUPatches<dim>::VTUPatches(const std::vector<std::pair<std::string, unsigned int>> &fields)
+    VTUPatches<dim>::VTUPatches(const std::vector<std::pair<std::string, unsigned int>> &fields,
+                                const std::vector<std::string> &cell_fields)
+      : cell_names(cell_fields)
+      , cell_values(cell_fields.size())
     {
       for (const auto &f : fields)
         {
@@ -39,7 +43,17 @@ namespace cosmo
       // Data rows, then the three coordinates of the points.
       patch.data.reinit(names.size() + 3, n_points);
       patches.push_back(std::move(patch));
+      for (auto &v : cell_values)
+        v.push_back(0);
       open = true;
+    }
+
+    template <int dim>
+    void
+    VTUPatches<dim>::set_cell_value(const unsigned int field, const int value)
+    {
+      AssertThrow(open && field < cell_values.size(), ExcMessage("set_cell_value() outside a patch"));
+      cell_values[field].back() = value;
     }
 
     template <int dim>
@@ -93,12 +107,34 @@ namespace cosmo
     {
       AssertThrow(!open, ExcMessage("write() before end_patch()"));
       DataOutBase::VtkFlags flags;
-      flags.write_higher_order_cells = false;
+      // One Lagrange cell per patch (of its degree): the element as computed.
+      flags.write_higher_order_cells = true;
       if (std::isfinite(time))
         flags.time = time; // FieldData TIME: ParaView animates in the load parameter
-      write_file_atomically(file, [&](std::ostream &out) {
-        DataOutBase::write_vtu(patches, names, vectors, flags, out);
-      });
+      std::ostringstream xml;
+      DataOutBase::write_vtu(patches, names, vectors, flags, xml);
+      std::string text = xml.str();
+      if (!cell_names.empty())
+        {
+          // deal.II writes point data only: the integer cell fields go in a
+          // CellData block before the PointData (one cell per patch).
+          std::ostringstream cells;
+          cells << "    <CellData>\n";
+          for (unsigned int f = 0; f < cell_names.size(); ++f)
+            {
+              cells << "    <DataArray type=\"Int32\" Name=\"" << cell_names[f]
+                    << "\" format=\"ascii\">\n";
+              for (const int v : cell_values[f])
+                cells << v << ' ';
+              cells << "\n    </DataArray>\n";
+            }
+          cells << "    </CellData>\n";
+          const std::size_t at = text.find("<PointData");
+          AssertThrow(at != std::string::npos, ExcInternalError());
+          const std::size_t line = text.rfind('\n', at);
+          text.insert(line == std::string::npos ? at : line + 1, cells.str());
+        }
+      write_file_atomically(file, [&](std::ostream &out) { out << text; });
     }
 
     template class VTUPatches<1>;

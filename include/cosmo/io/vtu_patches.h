@@ -16,7 +16,12 @@
  * 3-vectors stay 3-vectors. Each patch is a Q_p cell with (p + 1)^dim points
  * in lexicographic order (first index fastest), each with a position in 3D
  * and the values of the fields; scalars and 3-vectors (named once, written
- * as VTU vectors) in the order given. Written atomically (io::write_file_atomically).
+ * as VTU vectors) in the order given; integer cell fields (e.g. the region)
+ * one value per patch. Each patch is written as one VTK Lagrange cell of its
+ * degree (ParaView >= 5.5 draws it curved; its Nonlinear Subdivision Level
+ * refines the view), so a Q2 field is shown as Q2, not as linear pieces.
+ * TIME field data carries the load parameter. Written atomically
+ * (io::write_file_atomically).
  */
 namespace cosmo
 {
@@ -29,7 +34,8 @@ namespace cosmo
     {
     public:
       /// The fields: (name, 1) for a scalar, (name, 3) for a vector.
-      explicit VTUPatches(const std::vector<std::pair<std::string, unsigned int>> &fields);
+      explicit VTUPatches(const std::vector<std::pair<std::string, unsigned int>> &fields,
+                          const std::vector<std::string> &cell_fields = {});
 
       /// Start a patch of n_subdivisions per direction (the element degree).
       void
@@ -46,6 +52,10 @@ namespace cosmo
       /// Point k of the current patch: all columns at once, in order.
       void
       set_values(unsigned int k, const std::vector<double> &values);
+
+      /// The current patch's value of integer cell field `field` (order of the constructor).
+      void
+      set_cell_value(unsigned int field, int value);
 
       /// Close the current patch (its corner vertices are its corner points).
       void
@@ -75,6 +85,8 @@ namespace cosmo
                              DataComponentInterpretation::DataComponentInterpretation>>
                                              vectors;
       std::vector<DataOutBase::Patch<dim, 3>> patches;
+      std::vector<std::string>                cell_names;
+      std::vector<std::vector<int>>           cell_values; ///< per cell field, per patch
       bool                                    open = false;
       double                                  time = std::numeric_limits<double>::quiet_NaN();
     };

@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""ParaView-ready output, read with VTK (the library ParaView is built on;
+Debian: python3-vtk9): run one example of each application on a coarse
+mesh and check every VTU and PVD they write:
+
+- every PVD entry names an existing VTU; in a per-branch collection
+  (stem-branch-K.pvd) and a single-branch run's collection its timestep
+  equals that VTU's TIME field data (the load parameter t: ParaView's
+  animation runs in t) and is monotone; a collection in path order
+  (stem.pvd beside stem-branch-K.pvd) counts the steps 0, 1, 2, ...;
+- VTK reads every VTU without error, with as many cells as the file says,
+  each cell a VTK Lagrange cell (curve 68, quadrilateral 70, hexahedron
+  72) or a linear one of degree 1, of a consistent number of points;
+- integer cell data: `region` is an Int32 cell array where it is written
+  (rod_cross_section), with the ids of the section's regions;
+- the displacement field, where written, is finite, and the points are
+  the reference ones (one convention: Warp By Vector by `displacement`
+  gives the deformed body): for the section, points + displacement =
+  the `position` field (the deformed section); the plate's and the rim's
+  points lie in the plane z = 0 (Float32 output: 1e-6).
+
+usage: vtu_readable.py <rod_cross_section> <strip> <plate_rod> <repository root> <scratch dir>
+"""
+import glob, os, re, shutil, subprocess, sys
+import xml.etree.ElementTree as ET
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+import numpy as np
+
+rod, strip, plate, root, scratch = (os.path.abspath(a) for a in sys.argv[1:6])
+shutil.rmtree(scratch, ignore_errors=True)
+os.makedirs(scratch)
+failures = 0
+
+
+def check(what, ok, detail=""):
+    global failures
+    print(("  ok    " if ok else "  FAIL  ") + what + ("  (" + detail + ")" if detail else ""))
+    failures += 0 if ok else 1
+
+
+def run(exe, example, name, edits):
+    text = open(os.path.join(root, example)).read()
+    text = re.sub(r"set Output directory *=.*", "set Output directory = " + os.path.join(scratch, name), text)
+    for pattern, value in edits:
+        text = re.sub(pattern, value, text)
+    prm = os.path.join(scratch, name + ".prm")
+    open(prm, "w").write(text)
+    subprocess.run([exe, "--quiet", prm], check=True, cwd=root)
+    return os.path.join(scratch, name)
+
+
+LAGRANGE = {68, 70, 72}
+dirs = {
+    "rod_cross_section": run(rod, "parameter_files/rod_cross_section/bilayer.prm", "bilayer",
+                             [(r"set VTU output *=.*", "set VTU output = every step")]),
+    "strip": run(strip, "parameter_files/strip/twist_buckling.prm", "twist",
+                 [(r"set Number of cells *=.*", "set Number of cells = 8"),
+                  (r"set Maximum number of steps *=.*", "set Maximum number of steps = 12")]),
+    "plate_rod": run(plate, "parameter_files/plate_rod/dome.prm", "dome",
+                     [(r"set Global refinements *=.*", "set Global refinements = 1"),
+                      (r"set Maximum number of steps *=.*", "set Maximum number of steps = 8")]),
+}
+for app, d in dirs.items():
+    pvds = sorted(glob.glob(os.path.join(d, "*.pvd")))
+    check("%s: writes PVD collections" % app, len(pvds) > 0, ", ".join(os.path.basename(p) for p in pvds))
+    seen = set()
+    for pvd in pvds:
+        entries = list(ET.parse(pvd).getroot().iter("DataSet"))
+        path_order = os.path.exists(pvd[:-4] + "-branch-0.pvd")
+        if path_order:
+            steps = [float(e.get("timestep")) for e in entries]
+            if steps != list(range(len(steps))):
+                check("%s: %s counts the steps" % (app, os.path.basename(pvd)), False, str(steps[:5]))
+        times = []
+        for e in entries:
+            f = os.path.join(d, e.get("file"))
+            t = float(e.get("timestep"))
+            times.append(t)
+            if not os.path.isfile(f):
+                check("%s: %s names an existing file" % (app, os.path.basename(pvd)), False, e.get("file"))
+                continue
+            r = vtk.vtkXMLUnstructuredGridReader()
+            r.SetFileName(f)
+            r.Update()
+            grid = r.GetOutput()
+            fd = grid.GetFieldData().GetArray("TIME")
+            if fd is None or (not path_order and abs(fd.GetValue(0) - t) > 1e-6 * max(1, abs(t))):
+                check("%s: TIME of %s = its PVD timestep %g" % (app, e.get("file"), t), False,
+                      "TIME %s" % (fd.GetValue(0) if fd else None))
+            if f in seen:
+                continue
+            seen.add(f)
+            n = grid.GetNumberOfCells()
+            types = {grid.GetCellType(i) for i in range(n)}
+            ok = n > 0 and types <= (LAGRANGE | {3, 9, 12})
+            if not ok:
+                check("%s: %s has readable cells" % (app, e.get("file")), False, "%d cells, types %s" % (n, types))
+            region = grid.GetCellData().GetArray("region")
+            if region is not None and region.GetDataTypeAsString() != "int":
+                check("%s: region of %s is integer" % (app, e.get("file")), False, region.GetDataTypeAsString())
+            disp = grid.GetPointData().GetArray("displacement")
+            if disp is not None and not np.isfinite(vtk_to_numpy(disp)).all():
+                check("%s: displacement of %s finite" % (app, e.get("file")), False)
+        if not path_order:
+            if times != sorted(times) and times != sorted(times, reverse=True):
+                check("%s: %s monotone in t" % (app, os.path.basename(pvd)), False, str(times))
+    check("%s: every VTU read by VTK, TIME = PVD timestep, cells Lagrange, fields sane (%d files)" % (app, len(seen)),
+          failures == 0)
+# The section's regions as integer cell data.
+r = vtk.vtkXMLUnstructuredGridReader()
+r.SetFileName(sorted(glob.glob(os.path.join(dirs["rod_cross_section"], "solution-*.vtu")))[-1])
+r.Update()
+g = r.GetOutput()
+region = g.GetCellData().GetArray("region")
+check("bilayer: region is Int32 cell data with the two layers' ids 1 and 2",
+      region is not None and region.GetDataTypeAsString() == "int" and
+      set(vtk_to_numpy(region).tolist()) == {1, 2})
+check("bilayer: the section's cells are Q2 Lagrange quadrilaterals (9 points each)",
+      {g.GetCellType(i) for i in range(g.GetNumberOfCells())} == {70} and
+      g.GetCell(0).GetNumberOfPoints() == 9)
+pts = vtk_to_numpy(g.GetPoints().GetData())
+disp = vtk_to_numpy(g.GetPointData().GetArray("displacement"))
+pos = vtk_to_numpy(g.GetPointData().GetArray("position"))
+check("section: reference points + displacement = the deformed position",
+      np.abs(pts + disp - pos).max() < 1e-6 * max(1, np.abs(pos).max()), "%.2g" % np.abs(pts + disp - pos).max())
+for stem in ("plate", "rim"):
+    f = sorted(glob.glob(os.path.join(dirs["plate_rod"], stem + "-*.vtu")))[-1]
+    r = vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(f)
+    r.Update()
+    z = vtk_to_numpy(r.GetOutput().GetPoints().GetData())[:, 2]
+    w = vtk_to_numpy(r.GetOutput().GetPointData().GetArray("displacement"))[:, 2]
+    check("%s: reference points in z = 0, the deflection in the displacement (max |w| %.3g)" % (stem, np.abs(w).max()),
+          np.abs(z).max() < 1e-12 and np.abs(w).max() > 0)
+print("%d check(s) FAILED" % failures if failures else "all checks passed")
+sys.exit(1 if failures else 0)
