@@ -986,13 +986,15 @@ Physical Curve("outer", 1) = {1:6};
   }
 
   // Two materials: the elastic centre is the modulus-weighted centroid,
-  // where the 6x6's axial force causes no curvature.
+  // where the 6x6's axial force causes no curvature; the mass centre and
+  // moments are density-weighted.
   void
   section_properties_composite()
   {
     const double E1 = 1, E2 = 3, W = 1, H = 0.5, poisson = 0.3;
     auto p = make_problem(section(" set Shape = bilayer\n set Width = 1\n set Height = 0.5", 4) +
-                          material(1, "lower", E1, poisson) + material(2, "upper", E2, poisson) +
+                          material(1, "lower", E1, poisson, " set Density = 1") +
+                          material(2, "upper", E2, poisson, " set Density = 2") +
                           strains_block("prescribed strains", reference_strains));
     const auto lp = p->linear_section_properties();
     const auto a  = analysis::analyse_stiffness(p->solve().stiffness);
@@ -1003,6 +1005,14 @@ Physical Curve("outer", 1) = {1:6};
     check_close("composite: EA = (E1 + E2) W H / 2", lp.EA, (E1 + E2) * W * H / 2, 1e-12);
     check_point("composite: elastic centre (E-weighted centroid)", lp.elastic_centre, Point<2>(0, x2), 1e-12);
     check_close("composite: EI11 about the elastic centre", lp.EI11, EI11, 1e-12);
+    // Mass properties with densities 1 and 2 (polynomials on straight cells: round-off).
+    const double rho1 = 1, rho2 = 2, y_m = (rho2 - rho1) / (rho1 + rho2) * H / 4;
+    check_close("composite: mass per length (rho1 + rho2) W H / 2", lp.mass, (rho1 + rho2) * W * H / 2, 1e-12);
+    check_point("composite: mass centre (density-weighted)", lp.mass_centre, Point<2>(0, y_m), 1e-12);
+    check_close("composite: mass moment about E1 at the mass centre", lp.mass_moment11,
+                (rho1 + rho2) * W * std::pow(H / 2, 3) / 12 + rho1 * W * H / 2 * std::pow(-H / 4 - y_m, 2) +
+                  rho2 * W * H / 2 * std::pow(H / 4 - y_m, 2), 1e-12);
+    check_close("composite: mass moment about E2", lp.mass_moment22, (rho1 + rho2) * H / 2 * W * W * W / 12, 1e-12);
     // Equal Poisson ratios: under axial force both layers contract alike, the
     // 3D solution is uniaxial and the 6x6's tension centre is the E-weighted
     // centroid exactly (measured 4e-14).

@@ -125,6 +125,12 @@ namespace cosmo
       prm.declare_entry("Output directory", "output/plate_rod", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, plate.pvd, "
                         "rim.pvd with their VTU files, event VTUs and log.txt.");
+      prm.declare_entry("Sector as full disc", "false", Patterns::Bool(),
+                        "With Domain = sector: write the plate VTUs as the full disc, the "
+                        "sector's mirror images (reflected about its edge theta = 0 and "
+                        "rotated by multiples of twice the sector angle; vectors turned with "
+                        "them, N_rt and M_rt change sign under a reflection). The rim stays "
+                        "the sector's.");
       prm.leave_subsection();
     }
 
@@ -346,7 +352,8 @@ namespace cosmo
       arclength_settings.stop_at_first_event =
         arclength_settings.stop_at_first_event || stop_at_first_event;
       prm.enter_subsection("Output");
-      output_directory = prm.get("Output directory");
+      output_directory    = prm.get("Output directory");
+      sector_as_full_disc = prm.get_bool("Sector as full disc");
       prm.leave_subsection();
 
       // Growth must stay positive along the path.

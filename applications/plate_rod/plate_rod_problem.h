@@ -235,6 +235,7 @@ namespace cosmo
       std::string                        thickness_profile_text = "1";
       std::string                    domain = "full disc";
       unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
+      bool                           sector_as_full_disc = false; ///< plate VTUs: the sector's 2 n images
       unsigned int                   refinements = 3, degree = 2;
       /// The registered plate model named by 'Model / Model' (kinematics/plate_model.h).
       std::unique_ptr<kinematics::PlateModel> model;

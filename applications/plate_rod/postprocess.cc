@@ -284,9 +284,10 @@ namespace cosmo
     void
     PlateRodProblem::write_plate(const std::string &file, const Vector<double> &U) const
     {
-      // The deformed mid-surface phi = X + u in 3D with the displacement, the
+      // The mid-surface at its reference points with the displacement, the
       // director, the growth factors and the membrane forces and bending
-      // moments (polar components, plate law of the chosen model) as fields.
+      // moments (polar components, plate law of the chosen model) as fields;
+      // a sector optionally as the full disc, its 2 n mirror images.
       std::vector<Point<2>> unit;
       for (unsigned int j = 0; j <= degree; ++j)
         for (unsigned int i = 0; i <= degree; ++i)
@@ -304,7 +305,7 @@ namespace cosmo
           fev.reinit(cell);
           fev.get_function_values(U, values);
           fev.get_function_gradients(U, grads);
-          vtu.begin_patch(degree);
+          std::vector<std::vector<double>> node_values(nodes.size());
           for (unsigned int k = 0; k < nodes.size(); ++k)
             {
               const Point<2>               X = fev.quadrature_point(k);
@@ -336,12 +337,44 @@ namespace cosmo
               const auto N   = polar(law.membrane_force(st.membrane));
               const auto M   = polar(law.bending_moment(st.bending));
               const auto gf = plate_growth.factors(r, load_parameter);
-              vtu.set_values(k, {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
-                                 gf[1], N[0], N[1], N[2], M[0], M[1], M[2]});
-              // Reference points + displacement (Warp By Vector shows X + u).
-              vtu.set_position(k, Point<3>(X[0], X[1], 0));
+              node_values[k] = {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
+                                gf[1], N[0], N[1], N[2], M[0], M[1], M[2]};
             }
-          vtu.end_patch();
+          // The images: rotations by 2 pi k / n, each also after the
+          // reflection y -> -y (the sector 0 <= theta <= pi/n has mirror
+          // conditions on both edges); just the identity otherwise.
+          const unsigned int n_rotations =
+            (domain == "sector" && sector_as_full_disc) ? sector_n : 1;
+          for (unsigned int rot = 0; rot < n_rotations; ++rot)
+            for (const double reflect : {1., -1.})
+              {
+                if (reflect < 0 && n_rotations == 1)
+                  continue;
+                const double phi = 2 * M_PI * rot / sector_n, c = std::cos(phi), sn = std::sin(phi);
+                // T v = Rot(phi) diag(1, reflect) v, on the (x, y) components.
+                auto turn = [&](const double x, const double y) {
+                  return std::array<double, 2>{{c * x - sn * reflect * y, sn * x + c * reflect * y}};
+                };
+                vtu.begin_patch(degree);
+                for (unsigned int k = 0; k < nodes.size(); ++k)
+                  {
+                    std::vector<double> v = node_values[k];
+                    for (const unsigned int first : {0u, 3u}) // displacement, director
+                      {
+                        const auto xy = turn(v[first], v[first + 1]);
+                        v[first]      = xy[0];
+                        v[first + 1]  = xy[1];
+                      }
+                    v[10] *= reflect; // N_rt
+                    v[13] *= reflect; // M_rt
+                    vtu.set_values(k, v);
+                    // Reference points + displacement (Warp By Vector shows X + u).
+                    const Point<2> X  = fev.quadrature_point(k);
+                    const auto     XY = turn(X[0], X[1]);
+                    vtu.set_position(k, Point<3>(XY[0], XY[1], 0));
+                  }
+                vtu.end_patch();
+              }
         }
       vtu.set_time(load_parameter);
       vtu.write(file);

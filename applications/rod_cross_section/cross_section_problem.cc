@@ -710,7 +710,8 @@ namespace cosmo
               I[i][i] = 1;
             materials.material(cell->material_id()).evaluate(I, I, true, d);
             const double mu = d.C[9 * 1 + 1], lambda = d.C[9 * 0 + 4];
-            moduli[cell->material_id()] = {mu * (3 * lambda + 2 * mu) / (lambda + mu), mu};
+            moduli[cell->material_id()] = {mu * (3 * lambda + 2 * mu) / (lambda + mu), mu,
+                                           materials.material(cell->material_id()).density};
           }
       return analysis::linear_section_properties(triangulation, *mapping, degree,
                                                  [&moduli](const types::material_id id) {

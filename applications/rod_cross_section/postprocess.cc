@@ -455,7 +455,9 @@ namespace cosmo
           << io::format_significant(p.principal_bending[1], 5) << ")\n"
           << "    GJ " << io::format_significant(p.GJ, 5) << "; shear centre " << pt(p.shear_centre_flexure)
           << " (Trefftz " << pt(p.shear_centre_trefftz) << "); shear factors "
-          << io::format_significant(p.shear_factors[0], 4) << ", " << io::format_significant(p.shear_factors[1], 4);
+          << io::format_significant(p.shear_factors[0], 4) << ", " << io::format_significant(p.shear_factors[1], 4)
+          << "\n    mass per length " << io::format_significant(p.mass, 5) << ", mass centre "
+          << pt(p.mass_centre) << ", polar mass moment " << io::format_significant(p.mass_moment11 + p.mass_moment22, 5);
       say(out.str());
     }
 

@@ -77,7 +77,7 @@ namespace cosmo
       const unsigned int dpc = fe.n_dofs_per_cell(), nq = quadrature.size();
 
       // Pass 1: areas and first and second moments (geometric and E-weighted).
-      double Sx = 0, Sy = 0, ESx = 0, ESy = 0;
+      double Sx = 0, Sy = 0, ESx = 0, ESy = 0, RSx = 0, RSy = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fe_values.reinit(cell);
@@ -93,8 +93,12 @@ namespace cosmo
               p.GA += m.shear * dA;
               ESx += m.young * x[0] * dA;
               ESy += m.young * x[1] * dA;
+              p.mass += m.density * dA;
+              RSx += m.density * x[0] * dA;
+              RSy += m.density * x[1] * dA;
             }
         }
+      p.mass_centre = Point<2>(RSx / p.mass, RSy / p.mass);
       p.centroid       = Point<2>(Sx / p.area, Sy / p.area);
       p.elastic_centre = Point<2>(ESx / p.EA, ESy / p.EA);
       const Point<2> &xe = p.elastic_centre;
@@ -122,6 +126,10 @@ namespace cosmo
               p.EI11 += m.young * X2 * X2 * dA;
               p.EI22 += m.young * X1 * X1 * dA;
               p.EI12 += m.young * X1 * X2 * dA;
+              const double Y1 = x[0] - p.mass_centre[0], Y2 = x[1] - p.mass_centre[1];
+              p.mass_moment11 += m.density * Y2 * Y2 * dA;
+              p.mass_moment22 += m.density * Y1 * Y1 * dA;
+              p.mass_moment12 += m.density * Y1 * Y2 * dA;
               const Tensor<1, 2> rot({-x[1], x[0]});
               for (unsigned int i = 0; i < dpc; ++i)
                 {
@@ -248,6 +256,10 @@ namespace cosmo
       j["shear_centre_flexure"] = point_json(shear_centre_flexure);
       j["shear_stiffness"]      = matrix_json(shear_stiffness);
       j["shear_factors"]        = io::JSON::array({shear_factors[0], shear_factors[1]});
+      j["mass_per_length"]      = mass;
+      j["mass_centre"]          = point_json(mass_centre);
+      j["mass_moments"]         = io::JSON::array({mass_moment11, mass_moment22, mass_moment12});
+      j["polar_mass_moment"]    = mass_moment11 + mass_moment22;
       j["dofs"]                 = n_dofs;
       return j;
     }

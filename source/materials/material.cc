@@ -105,6 +105,9 @@ namespace cosmo
           prm.declare_entry("Poisson's ratio", "0.3", Patterns::Double(-0.999, 0.49999),
                             "Small-strain Poisson's ratio (below 1/2; nearly "
                             "incompressible materials need element degree >= 2).");
+          prm.declare_entry("Density", "1", Patterns::Double(0),
+                            "Mass per reference volume (only for the section's mass "
+                            "properties: mass per length, mass centre, mass moments).");
           GrowthTensor::declare_parameters(prm);
           prm.leave_subsection();
         }
@@ -157,6 +160,7 @@ namespace cosmo
               m.law = HyperelasticLaw::create(prm.get("Hyperelastic law"), E,
                                               prm.get_double("Poisson's ratio"));
               m.growth.parse_parameters(prm, section);
+              m.density = prm.get_double("Density");
               for (const int r : regions)
                 {
                   if (region_to_material.count(r))

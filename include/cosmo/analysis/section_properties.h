@@ -42,8 +42,9 @@ namespace cosmo
     /// Small-strain moduli of a region.
     struct RegionModuli
     {
-      double young = 1;
-      double shear = 1.0 / 2.6;
+      double young   = 1;
+      double shear   = 1.0 / 2.6;
+      double density = 1;
     };
 
     struct LinearSectionProperties
@@ -66,6 +67,12 @@ namespace cosmo
       FullMatrix<double> shear_stiffness{2, 2};
       /// k_a = shear_stiffness(a, a) / GA.
       std::array<double, 2> shear_factors{{0, 0}};
+      /// Mass per unit length, mass centre, and the mass moments of inertia
+      /// per length about it: rho11 = int rho X2^2, rho22 = int rho X1^2,
+      /// rho12 = int rho X1 X2, polar = rho11 + rho22 (rotary inertia of the rod).
+      double                mass = 0;
+      Point<2>              mass_centre;
+      double                mass_moment11 = 0, mass_moment22 = 0, mass_moment12 = 0;
       unsigned int          n_dofs = 0;
 
       io::JSON

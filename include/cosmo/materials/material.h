@@ -44,6 +44,7 @@ namespace cosmo
       /// The registered stored energy named by 'Hyperelastic law' (shared: materials are copied).
       std::shared_ptr<const HyperelasticLaw> law;
       GrowthTensor    growth;
+      double          density = 1; ///< mass per reference volume (mass properties only)
 
       /// Jg W(F Fg^-1) and dW/dF; second derivatives if `tangent`.
       void
