@@ -798,30 +798,14 @@ namespace cosmo
       const bool keep_output = write_output;
       write_output           = false; // no per-point files
       set_load_parameter(1.);
-      Vector<double>               start;
-      assembly::TableCheckpointing cp;
-      cp.write      = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
-      cp.save_start = [&](io::CheckpointWriter &w) { w.put_vector(start); };
-      cp.load_start = [&](io::CheckpointReader &r) {
-        r.get_vector(start);
-        solution = start;
-      };
-      if (record.resuming())
-        cp.resume = &record.checkpoint();
       assembly::TableDescription d;
       d.application     = "rod_cross_section";
       d.version         = COSMO_VERSION;
       d.parameters      = io::checkpoint_parameters(prm);
       d.free_strains    = strain_is_free;
       d.held_resultants = resultants_at(1.);
-      table.run(target_strains, strains_of(solution),
-                [this](const std::array<double, 6> &e) { return resolve(e); },
-                [&]() { start = solution; },
-                [&]() { solution = start; },
-                output_directory,
-                record.reporter(),
-                d,
-                cp);
+      table.run_in(record, solution, target_strains, strains_of(solution),
+                   [this](const std::array<double, 6> &e) { return resolve(e); }, output_directory, d);
       write_output = keep_output;
     }
 

@@ -343,24 +343,9 @@ namespace cosmo
             io::PhaseTimer::Scope scope(timer, "constitutive table");
             write_output = false; // no per-point files
             set_load_parameter(1.);
-            Vector<double>                           start;
-            assembly::TableCheckpointing               cp;
-            cp.write      = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
-            cp.save_start = [&](io::CheckpointWriter &w) { w.put_vector(start); };
-            cp.load_start = [&](io::CheckpointReader &r) {
-              r.get_vector(start);
-              solution = start;
-            };
-            if (record.resuming())
-              cp.resume = &record.checkpoint();
-            table.run(target_strains, strains_of(solution),
-                      [this](const std::array<double, 6> &e) { return resolve(e); },
-                      [&]() { start = solution; },
-                      [&]() { solution = start; },
-                      output_directory,
-                      record.reporter(),
-                      table_description(prm),
-                      cp);
+            table.run_in(record, solution, target_strains, strains_of(solution),
+                         [this](const std::array<double, 6> &e) { return resolve(e); },
+                         output_directory, table_description(prm));
             write_output = true;
           }
         else if (arclength_settings.enabled)

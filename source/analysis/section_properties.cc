@@ -336,7 +336,9 @@ namespace cosmo
       const double det = C(3, 3) * C(4, 4) - C(3, 4) * C(4, 3);
       std::tie(s.principal_angle, s.principal_bending) =
         principal(C(4, 4) / det, -C(3, 4) / det, C(3, 3) / det);
-      s.principal_stiffness = transform_stiffness(K, s.tension_centre, s.principal_angle);
+      // (Equal bending stiffnesses: every axis is principal, keep E1.)
+      s.principal_stiffness =
+        transform_stiffness(K, s.tension_centre, std::isfinite(s.principal_angle) ? s.principal_angle : 0.);
       return s;
     }
 

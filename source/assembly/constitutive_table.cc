@@ -185,6 +185,29 @@ namespace cosmo
     }
 
     void
+    ConstitutiveTable::run_in(RunRecordRef                 record,
+                              Vector<double> &             solution,
+                              const std::array<double, 6> &base,
+                              const std::array<double, 6> &start_strains,
+                              const Resolver &             resolve,
+                              const std::string &          directory,
+                              const TableDescription &     description) const
+    {
+      Vector<double>     start;
+      TableCheckpointing cp;
+      cp.write      = [&record](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
+      cp.save_start = [&](io::CheckpointWriter &w) { w.put_vector(start); };
+      cp.load_start = [&](io::CheckpointReader &r) {
+        r.get_vector(start);
+        solution = start;
+      };
+      if (record.resuming())
+        cp.resume = &record.checkpoint();
+      run(base, start_strains, resolve, [&]() { start = solution; }, [&]() { solution = start; },
+          directory, record.reporter(), description, cp);
+    }
+
+    void
     ConstitutiveTable::check_axes(const std::array<bool, 6> &free_strains) const
     {
       if (is_enabled)

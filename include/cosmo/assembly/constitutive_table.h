@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cosmo/io/checkpoint.h>
+#include <cosmo/io/run_record.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 
 #include <functional>
@@ -55,6 +56,8 @@ namespace cosmo
       std::array<double, 6> held_resultants{};
     };
 
+    using RunRecordRef = io::RunRecord &;
+
     class ConstitutiveTable
     {
     public:
@@ -93,6 +96,21 @@ namespace cosmo
           const std::function<void(const std::string &)> &progress,
           const TableDescription &     description,
           const TableCheckpointing &   checkpointing = {}) const;
+
+      /**
+       * run() as an application calls it: around `base` from the state in
+       * `solution` (which the points overwrite), with the run's checkpoints
+       * and --resume (the start of the next point kept in the checkpoint),
+       * progress to the run's log, and the files in `directory`.
+       */
+      void
+      run_in(RunRecordRef                 record,
+             Vector<double> &             solution,
+             const std::array<double, 6> &base,
+             const std::array<double, 6> &start,
+             const Resolver &             resolve,
+             const std::string &          directory,
+             const TableDescription &     description) const;
 
       unsigned int first = 3, second = 5; ///< strain indices
       double       from1 = 0, to1 = 1, from2 = 0, to2 = 1;
