@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """ParaView-ready output, read with VTK (the library ParaView is built on;
-Debian: python3-vtk9): run one example of each application on a coarse
+Debian: python3-paraview, which conflicts with python3-vtk9): run one example of each application on a coarse
 mesh and check every VTU and PVD they write:
 
 - every PVD entry names an existing VTU; in a per-branch collection
@@ -113,6 +113,21 @@ for app, d in dirs.items():
                 check("%s: %s monotone in t" % (app, os.path.basename(pvd)), False, str(times))
     check("%s: every VTU read by VTK, TIME = PVD timestep, cells Lagrange, fields sane (%d files)" % (app, len(seen)),
           failures == 0)
+# The strip's steps.csv tells mirror branches apart by the section's
+# out-of-plane deflection at its edges and centre: zero on the flat primary
+# branch, and on the first bifurcated branch (an antisymmetric mode,
+# doc/user-guide-strip.md) odd: u2(-w/2) = -u2(w/2), u2(0) = 0 (1e-10 of
+# the edge deflection: the Newton tolerance).
+import csv
+rows = list(csv.DictReader(open(os.path.join(dirs["strip"], "steps.csv"))))
+col = lambda r, name: float(next(v for k, v in r.items() if k.split(" [")[0] == name))
+primary = [r for r in rows if r["branch"] == "0"]
+first = [r for r in rows if r["branch"] == "1" and abs(col(r, "u2_right_edge")) > 1e-6]
+check("strip: the flat branch has no deflection columns above round-off",
+      max(abs(col(r, c)) for r in primary for c in ("u2_left_edge", "u2_centre", "u2_right_edge")) < 1e-12)
+check("strip: the first bifurcated branch is odd in the deflection columns (%d states)" % len(first),
+      len(first) > 0 and all(abs(col(r, "u2_left_edge") + col(r, "u2_right_edge")) < 1e-10 * abs(col(r, "u2_right_edge"))
+                             and abs(col(r, "u2_centre")) < 1e-10 * abs(col(r, "u2_right_edge")) for r in first))
 # The section's regions as integer cell data.
 r = vtk.vtkXMLUnstructuredGridReader()
 r.SetFileName(sorted(glob.glob(os.path.join(dirs["rod_cross_section"], "solution-*.vtu")))[-1])

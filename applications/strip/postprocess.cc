@@ -1,5 +1,6 @@
 // What part 2 reports: the steps table, the mode's width-wise symmetry, the
 // strip swept along its helix and the cross-section VTU files.
+#include <deal.II/numerics/vector_tools.h>
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -94,6 +95,15 @@ namespace cosmo
         row.push_back(s.stiffness(k, k));
       row.push_back(s.n_negative);
       row.push_back(smallest);
+      {
+        const Vector<double> field(solution.begin(), solution.begin() + n_field);
+        Vector<double>       value(fe->n_components());
+        for (const double eta : {-0.5 * strip_width, 0., 0.5 * strip_width})
+          {
+            VectorTools::point_value(dof_handler, field, Point<1>(eta), value);
+            row.push_back(value[1]);
+          }
+      }
       steps_table.add_row(row);
       steps_table.write(output_directory + "/steps.csv");
       const std::string tag = Utilities::int_to_string(report.step, 4);

@@ -336,6 +336,11 @@ namespace cosmo
         steps_table.add_column("K_" + s + "_" + s);
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("smallest_eigenvalue");
+      // The section's out-of-plane deflection at both edges and the centre:
+      // mirror-image branches (+phi, -phi of a pitchfork) have the same strains
+      // and energy, these tell them apart.
+      for (const auto &c : {"u2_left_edge", "u2_centre", "u2_right_edge"})
+        steps_table.add_column(c, "L");
 
       record.attempt([&]() {
         if (table.enabled())
