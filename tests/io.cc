@@ -8,6 +8,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/solvers/arclength.h>
 
 #include "test_tools.h"
 
@@ -145,6 +146,26 @@ main()
           }
         check("JSON: '" + bad + "' is refused with the position", thrown);
       }
+  }
+  // The end-of-run path summary: per branch the states, the t range and
+  // the stable count with the largest number of negative eigenvalues; the events.
+  {
+    std::vector<cosmo::solvers::PathRow> rows = {{0, 0., 0}, {0, 0.5, 0}, {0, 1., 2}, {1, 0.5, 0}, {1, 0.8, 0}};
+    cosmo::solvers::BifurcationProblem::Event e;
+    e.kind              = cosmo::solvers::BifurcationProblem::Event::Kind::branch_point;
+    e.lambda            = 0.75;
+    e.n_negative_before = 0;
+    e.n_negative_after  = 2;
+    const std::string text =
+      cosmo::solvers::path_summary(rows, {e}, [](unsigned int) { return std::string(", mode n = 3"); });
+    std::cout << text << "\n";
+    cosmo_test::check("path summary: counts", text.find("2 branches, 5 states, 1 event") != std::string::npos);
+    cosmo_test::check("path summary: branch 0 has 2 of 3 stable states, at most 2 negative",
+                      text.find("2 of 3 (2)") != std::string::npos);
+    cosmo_test::check("path summary: branch 1 from t = 0.5 to 0.8, stable",
+                      text.find("0.5 .. 0.8") != std::string::npos && text.find("2 of 2 (0)") != std::string::npos);
+    cosmo_test::check("path summary: the event with its extra words",
+                      text.find("at t = 0.75 on branch 0, negative eigenvalues 0 -> 2, mode n = 3") != std::string::npos);
   }
   return cosmo_test::report();
 }

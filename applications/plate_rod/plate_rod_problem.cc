@@ -848,6 +848,25 @@ namespace cosmo
               "start the path below the first critical growth (t = 0 always is)");
         follow_branches();
       });
+      if (!states.empty())
+        {
+          std::vector<solvers::PathRow>                 rows;
+          std::vector<solvers::BifurcationProblem::Event> ev;
+          for (const auto &st : states)
+            rows.push_back({st.branch, st.t, st.n_negative});
+          for (const auto &e : located_events)
+            ev.push_back(e.event);
+          say(solvers::path_summary(rows, ev, [this](const unsigned int k) {
+            std::string words = ", mismatch Delta = " + io::format_significant(mismatch(located_events[k].event.lambda), 6);
+            if (!located_events[k].mode.empty())
+              {
+                const Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
+                const auto           c = classify_mode(mode);
+                words += ", mode n = " + std::to_string(c.first) + (c.second ? " out of plane" : " planar");
+              }
+            return words;
+          }));
+        }
 
       io::JSON j       = record.summary();
       j["model"]       = model->name();

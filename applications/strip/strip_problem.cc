@@ -364,6 +364,17 @@ namespace cosmo
             solve();
           }
       });
+      if (!table.enabled() && path().size() > 1)
+        {
+          std::vector<solvers::PathRow> rows;
+          for (const auto &p : path())
+            rows.push_back({p.branch, p.t, p.n_negative});
+          say(solvers::path_summary(rows, events(), [this](const unsigned int k) {
+            return k < event_parities.size() && std::isfinite(event_parities[k]) ?
+                     ", mode " + symmetry_name(event_parities[k]) :
+                     std::string();
+          }));
+        }
       io::JSON j       = record.summary();
       j["width"]       = strip_width;
       j["thickness"]   = thickness;

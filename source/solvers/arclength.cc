@@ -34,6 +34,55 @@ namespace cosmo
       return status;
     }
 
+    std::string
+    path_summary(const std::vector<PathRow> &                     rows,
+                 const std::vector<BifurcationProblem::Event> &   events,
+                 const std::function<std::string(unsigned int)> & extra)
+    {
+      std::map<unsigned int, std::vector<const PathRow *>> by_branch;
+      for (const auto &r : rows)
+        by_branch[r.branch].push_back(&r);
+      std::ostringstream o;
+      o << "Summary: " << by_branch.size() << " branch" << (by_branch.size() == 1 ? "" : "es") << ", "
+        << rows.size() << " states, " << events.size() << " event" << (events.size() == 1 ? "" : "s")
+        << "\n  branch  states  t from .. to                stable states (max. negative eigenvalues)\n";
+      for (const auto &[b, list] : by_branch)
+        {
+          unsigned int stable = 0, known = 0;
+          int          most   = 0;
+          for (const PathRow *r : list)
+            if (r->n_negative >= 0)
+              {
+                ++known;
+                stable += r->n_negative == 0;
+                most = std::max(most, r->n_negative);
+              }
+          std::ostringstream range;
+          range << std::setprecision(6) << list.front()->t << " .. " << list.back()->t;
+          o << "  " << std::setw(6) << b << "  " << std::setw(6) << list.size() << "  " << std::left
+            << std::setw(26) << range.str() << std::right << "  ";
+          if (known == 0)
+            o << "(not computed)";
+          else
+            o << stable << " of " << known << " (" << most << ")";
+          o << "\n";
+        }
+      for (unsigned int k = 0; k < events.size(); ++k)
+        {
+          const auto &e = events[k];
+          o << "  event " << k + 1 << ": " << e.name() << " at t = " << std::setprecision(10) << e.lambda
+            << " on branch " << e.branch << ", negative eigenvalues " << e.n_negative_before << " -> "
+            << e.n_negative_after;
+          if (extra)
+            o << extra(k);
+          o << "\n";
+        }
+      std::string text = o.str();
+      if (!text.empty() && text.back() == '\n')
+        text.pop_back();
+      return text;
+    }
+
     double
     path_fraction(const StepReport &report, const ArclengthSettings &arclength)
     {

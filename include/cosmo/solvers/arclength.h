@@ -231,6 +231,25 @@ namespace cosmo
       parse_parameters(ParameterHandler &prm);
     };
 
+    /// One converged state of a path, for path_summary().
+    struct PathRow
+    {
+      unsigned int branch     = 0;
+      double       t          = 0;
+      int          n_negative = -1; ///< -1: not computed
+    };
+
+    /**
+     * The end-of-run table of a path: per branch the number of states, the
+     * range of t, how many states are stable (no negative eigenvalue) and
+     * the largest count of negative eigenvalues; then every event (kind, t,
+     * branch, the count before and after). `extra(k)` may add words to event k.
+     */
+    std::string
+    path_summary(const std::vector<PathRow> &                           rows,
+                 const std::vector<BifurcationProblem::Event> &         events,
+                 const std::function<std::string(unsigned int)> &       extra = {});
+
     /**
      * The share of a path done at a step, for an ETA: t of a natural-parameter
      * path to t = 1; on the first branch of an arclength path, t/lambda_max
