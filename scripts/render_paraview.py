@@ -28,6 +28,10 @@ from paraview.simple import (ColorBy, GetActiveViewOrCreate, PVDReader, SaveScre
                              Tube, WarpByVector)
 
 
+class NoRender(Exception):
+    pass
+
+
 def last_time(reader):
     times = reader.TimestepValues
     if isinstance(times, (int, float)):
@@ -46,13 +50,15 @@ def warped(pvd, view):
 
 
 def branch_file(run, stem, branch):
+    """stem-branch-K.pvd (K = branch, else the last one), else stem.pvd;
+    NoRender if there is none."""
     files = sorted(glob.glob(os.path.join(run, stem + "-branch-*.pvd")),
                    key=lambda f: int(f.rsplit("-", 1)[1][:-4]))
-    if branch is not None:
-        f = os.path.join(run, "%s-branch-%d.pvd" % (stem, branch))
-        return f if os.path.exists(f) else None
-    return files[-1] if files else (os.path.join(run, stem + ".pvd")
-                                    if os.path.exists(os.path.join(run, stem + ".pvd")) else None)
+    f = (os.path.join(run, "%s-branch-%d.pvd" % (stem, branch)) if branch is not None else
+         files[-1] if files else os.path.join(run, stem + ".pvd"))
+    if not os.path.exists(f):
+        raise NoRender("no %s PVD (%s) in %s" % (stem, os.path.basename(f), run))
+    return f
 
 
 def main(argv):
@@ -77,9 +83,6 @@ def main(argv):
         what = "section at t = %g, von Mises stress" % t
     elif app == "strip":
         pvd = branch_file(run, "strip", branch)
-        if pvd is None:
-            sys.stderr.write("render_paraview.py: no strip PVD in %s\n" % run)
-            return 1
         strip, t = warped(pvd, view)
         d = Show(strip, view)
         ColorBy(d, ("POINTS", "director", "Z"))
@@ -88,9 +91,6 @@ def main(argv):
         what = "%s at t = %g, director Z" % (os.path.basename(pvd), t)
     elif app == "plate_rod":
         pvd = branch_file(run, "plate", branch)
-        if pvd is None:
-            sys.stderr.write("render_paraview.py: no plate PVD in %s\n" % run)
-            return 1
         plate, t = warped(pvd, view)
         d = Show(plate, view)
         ColorBy(d, ("POINTS", "displacement", "Z"))
@@ -115,7 +115,11 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    status = main(sys.argv)
+    try:
+        status = main(sys.argv)
+    except NoRender as e:
+        sys.stderr.write("render_paraview.py: %s\n" % e)
+        status = 1
     sys.stdout.flush()
     sys.stderr.flush()
     # Debian's pvbatch 5.11 crashes in its teardown after the work is done

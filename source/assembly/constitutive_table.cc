@@ -185,7 +185,7 @@ namespace cosmo
     }
 
     void
-    ConstitutiveTable::run_in(RunRecordRef                 record,
+    ConstitutiveTable::run_in(io::RunRecord &              record,
                               Vector<double> &             solution,
                               const std::array<double, 6> &base,
                               const std::array<double, 6> &start_strains,

@@ -266,10 +266,9 @@ namespace cosmo
               (*R)[nf + k] = cu;
             }
           const auto eP = prescribed_strains_at(load_parameter);
+          const auto nP = resultants_at(load_parameter);
           for (unsigned int k = 0; k < n_strains; ++k)
-            (*R)[nf + n_gauge + k] = strain_is_free[k] ?
-                                       integrals.resultants[k] - resultants_at(load_parameter)[k] :
-                                       e[k] - eP[k];
+            (*R)[nf + n_gauge + k] = strain_is_free[k] ? integrals.resultants[k] - nP[k] : e[k] - eP[k];
         }
       if (jacobian)
         {

@@ -56,8 +56,6 @@ namespace cosmo
       std::array<double, 6> held_resultants{};
     };
 
-    using RunRecordRef = io::RunRecord &;
-
     class ConstitutiveTable
     {
     public:
@@ -104,7 +102,7 @@ namespace cosmo
        * progress to the run's log, and the files in `directory`.
        */
       void
-      run_in(RunRecordRef                 record,
+      run_in(io::RunRecord &              record,
              Vector<double> &             solution,
              const std::array<double, 6> &base,
              const std::array<double, 6> &start,
