@@ -21,6 +21,10 @@
 #                                   Cosserat and Kirchhoff against h/R
 #   doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
 #                                   the critical curve against the independent study
+# It then records what made each figure (the example's parameter file, the
+# regression key numbers of that example, the plotting script) in
+# doc/figures/provenance.json; the test doc.figures_current fails when any of
+# these changed after the figure was made.
 # Exit status 1 if an expected input is missing (run run_examples.sh).
 set -euo pipefail
 
@@ -76,6 +80,7 @@ else
   missing=1
 fi
 python3 scripts/plot_section.py "output/$SECTION" "doc/figures/section_$SECTION.png" von_Mises_stress >/dev/null
+python3 scripts/figure_provenance.py --write
 for f in doc/figures/*.png; do
   printf '[cosmo] %-55s %6s bytes\n' "$f" "$(wc -c <"$f")"
 done

@@ -8,6 +8,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/run_record.h>
 #include <cosmo/solvers/arclength.h>
 
 #include "test_tools.h"
@@ -166,6 +167,19 @@ main()
                       text.find("0.5 .. 0.8") != std::string::npos && text.find("2 of 2 (0)") != std::string::npos);
     cosmo_test::check("path summary: the event with its extra words",
                       text.find("at t = 0.75 on branch 0, negative eigenvalues 0 -> 2, mode n = 3") != std::string::npos);
+  }
+  {
+    // The step line's progress: "step k of ~N" with N = k / fraction,
+    // rounded up; nothing about steps or an ETA outside (0.01, 1).
+    cosmo::io::RunRecord record("test");
+    const std::string quarter = record.progress(0.25, 10);
+    std::cout << "progress(0.25, 10) = '" << quarter << "'\n";
+    cosmo_test::check("progress: step 10 of ~40 and an ETA",
+                      quarter.find("step 10 of ~40, ETA") != std::string::npos);
+    cosmo_test::check("progress: ~N rounded up (3 / 0.7 -> 5)",
+                      record.progress(0.7, 3).find("step 3 of ~5,") != std::string::npos);
+    cosmo_test::check("progress: no step count without a fraction",
+                      record.progress(std::numeric_limits<double>::quiet_NaN(), 7).find("step") == std::string::npos);
   }
   return cosmo_test::report();
 }

@@ -12,6 +12,7 @@
 
 #include "test_tools.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -445,6 +446,179 @@ namespace
     check_close("Wagner: torsional stiffness grows by N w^2/12", K - GJ0, N * w * w / 12, 0,
                 6 * strain * (GJ0 + N * w * w / 12));
   }
+
+  // Torque control past the first branch point: twist kappa3 free under a
+  // prescribed torque t T (Rod strains / Resultants), followed by arclength
+  // onto the bifurcated branch. The equilibria are those of twist control,
+  // parametrized by the torque instead of the twist, so
+  // (a) the branch point is at the same twist and torque (both located to
+  //     ~1e-11 in t, the log's round-off resolution);
+  // (b) the post-buckled branch under torque control lies on the twist-
+  //     controlled branch's torque-twist curve T(kappa3), to the resolution
+  //     of interpolating that curve (a local quadratic through the nearest
+  //     three states; its error measured by leaving each state out);
+  // (c) the stability counts obey Haynsworth's inertia formula: with the
+  //     twist free the Hessian gains the Schur complement dT/dkappa3 along
+  //     the twist-controlled branch, so n(torque) = n(twist) + [dT/dkappa3 < 0].
+  //     The torque falls after buckling (the pitchfork is subcritical under
+  //     a dead torque: the strip snaps) and rises again past a minimum;
+  // (d) that minimum is a fold of the torque-controlled path (1 -> 0), at
+  //     the least torque of the twist-controlled branch.
+  void
+  torque_buckling()
+  {
+    using Point = assembly::ReducedRodProblem::PathPoint;
+    const std::string nu3_free = "subsection Rod strains\n set Free strains = nu3\nend\n";
+    const std::string path_settings =
+      "subsection Path following\n set Method = arclength\nend\n"
+      "subsection Arclength continuation\n set Initial step = 0.02\n set Maximum step = 0.05\n"
+      " set Maximum number of branches = 2\n set Maximum number of steps = 60\n";
+    // twist control, kappa3 = 2 t up to 3.5, onto the first bifurcated branch
+    auto twist = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 2}},
+                            nu3_free + path_settings + " set Parameter range = 0, 1.75\nend\n", 40);
+    twist->follow_branches();
+    check("twist control: a branch point first", !twist->events().empty());
+    if (twist->events().empty())
+      return;
+    const double tau_c = 2 * twist->events()[0].lambda;
+    const double T_c = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, tau_c}}, nu3_free)->solve().resultants[5];
+    const double T   = make_strip(1, 0.02, 0.3, {{0, 0, 1, 0, 0, 1.0}}, nu3_free)->solve().resultants[5];
+    std::ostringstream torque;
+    torque << std::setprecision(17)
+           << "subsection Rod strains\n set Free strains = nu3, kappa3\n set Resultants = 0, 0, 0, 0, 0, " << T
+           << "\nend\n"
+           << path_settings << " set Parameter range = 0, 1\nend\n";
+    auto p = make_strip(1, 0.02, 0.3, reference, torque.str(), 40);
+    p->follow_branches();
+    const auto &records = p->event_records();
+    check("torque control: the first event is a simple branch point (0 -> 1)",
+          !records.empty() && records[0].event.kind == solvers::BifurcationProblem::Event::Kind::branch_point &&
+            records[0].event.n_negative_before == 0 && records[0].event.n_negative_after == 1);
+    if (records.empty())
+      return;
+    Vector<double> Uc(records[0].state.begin(), records[0].state.end());
+    const double   twist_at_event = p->strains_of(Uc)[5];
+    std::cout << "branch point: twist control tau_c = " << tau_c << ", T_c = " << T_c
+              << "; torque control t_c T = " << records[0].event.lambda * T << ", kappa3 = " << twist_at_event
+              << "\n";
+    check_close("(a) torque control: the branch point at the critical twist", twist_at_event, tau_c, 1e-6);
+    check_close("(a) torque control: the critical torque", records[0].event.lambda * T, T_c, 1e-6);
+
+    // (b) the bifurcated branch (branch 1) against the twist-controlled one
+    struct Node
+    {
+      double kappa, torque;
+      int    n_negative;
+      bool   operator<(const Node &o) const { return kappa < o.kappa; }
+    };
+    std::vector<Node> curve;
+    for (const Point &pt : twist->path())
+      if (pt.branch == 1)
+        curve.push_back({pt.strains[5], pt.resultants[5], pt.n_negative});
+    std::sort(curve.begin(), curve.end());
+    check("twist control followed the bifurcated branch (>= 4 states)", curve.size() >= 4);
+    if (curve.size() < 4)
+      return;
+    // the local quadratic through the three nodes nearest x (skipping one)
+    auto nearest3 = [&](const double x, const int skip) {
+      std::vector<std::pair<double, unsigned int>> d;
+      for (unsigned int i = 0; i < curve.size(); ++i)
+        if (int(i) != skip)
+          d.push_back({std::abs(curve[i].kappa - x), i});
+      std::sort(d.begin(), d.end());
+      return std::array<unsigned int, 3>{{d[0].second, d[1].second, d[2].second}};
+    };
+    auto interpolate = [&](const double x, const int skip, double *slope) {
+      const auto nodes = nearest3(x, skip);
+      double     value = 0, derivative = 0;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          const double xi = curve[nodes[i]].kappa;
+          double       l = 1, dl = 0;
+          for (unsigned int j = 0; j < 3; ++j)
+            if (j != i)
+              {
+                const double xj = curve[nodes[j]].kappa;
+                dl              = dl * (x - xj) / (xi - xj) + l / (xi - xj);
+                l *= (x - xj) / (xi - xj);
+              }
+          value += l * curve[nodes[i]].torque;
+          derivative += dl * curve[nodes[i]].torque;
+        }
+      if (slope)
+        *slope = derivative;
+      return value;
+    };
+    double              resolution = 0;
+    std::vector<double> local_error(curve.size(), 0.); // leave-one-out, at each interior node
+    for (unsigned int i = 1; i + 1 < curve.size(); ++i)
+      {
+        local_error[i] = std::abs(interpolate(curve[i].kappa, i, nullptr) - curve[i].torque);
+        resolution     = std::max(resolution, local_error[i]);
+      }
+    local_error.front() = local_error[1];
+    local_error.back()  = local_error[curve.size() - 2];
+    double       worst = 0;
+    unsigned int compared = 0, haynsworth = 0, haynsworth_checked = 0, falling = 0;
+    for (const Point &pt : p->path())
+      {
+        const double k = pt.strains[5];
+        if (pt.branch != 1 || curve.size() < 4 || k <= curve[1].kappa || k >= curve[curve.size() - 2].kappa)
+          continue;
+        ++compared;
+        double slope = 0;
+        worst = std::max(worst, std::abs(pt.resultants[5] - interpolate(k, -1, &slope)));
+        // (c), where the slope's sign is clear of the interpolation error
+        // (resolution over the nodes' spacing) and both counts are those of
+        // neighbouring nodes on both sides
+        const auto nodes = nearest3(k, -1);
+        const double spacing = std::abs(curve[nodes[0]].kappa - curve[nodes[1]].kappa) + 1e-300;
+        const double local = std::max({local_error[nodes[0]], local_error[nodes[1]], local_error[nodes[2]]});
+        if (std::abs(slope) < 10 * local / spacing || curve[nodes[0]].n_negative != curve[nodes[1]].n_negative)
+          continue;
+        ++haynsworth_checked;
+        falling += slope < 0;
+        haynsworth += pt.n_negative == curve[nodes[0]].n_negative + (slope < 0 ? 1 : 0);
+      }
+    std::cout << "post-buckled branch: " << compared << " torque-controlled states inside the twist-controlled"
+              << " branch (" << curve.size() << " states, kappa3 " << curve.front().kappa << " .. "
+              << curve.back().kappa << "); largest torque gap " << worst
+              << ", interpolation resolution (leave-one-out) " << resolution << "\n";
+    check("(b) torque control followed the bifurcated branch (>= 8 states compared)", compared >= 8);
+    check_close("(b) post-buckled branch: torque control on twist control's T(kappa3)", worst, 0, 0,
+                std::max(2 * resolution, 1e-9 * T));
+    check("(c) Haynsworth: n(torque) = n(twist) + [dT/dkappa3 < 0] (" + std::to_string(haynsworth) + " of " +
+            std::to_string(haynsworth_checked) + " states; " + std::to_string(falling) + " where T falls)",
+          haynsworth_checked >= 6 && haynsworth == haynsworth_checked && falling > 0 && falling < haynsworth_checked);
+
+    // (d) the fold: the least torque of the twist-controlled branch
+    const solvers::EventRecord *fold = nullptr;
+    for (const auto &r : records)
+      if (r.event.kind == solvers::BifurcationProblem::Event::Kind::fold && r.event.branch == 1 &&
+          r.event.n_negative_before == 1 && r.event.n_negative_after == 0)
+        {
+          fold = &r;
+          break;
+        }
+    check("(d) torque control: a fold (1 -> 0) on the bifurcated branch", fold != nullptr);
+    if (!fold)
+      return;
+    unsigned int lowest = 0;
+    for (unsigned int i = 1; i < curve.size(); ++i)
+      if (curve[i].torque < curve[lowest].torque)
+        lowest = i;
+    double T_min = curve[lowest].torque;
+    if (lowest > 0 && lowest + 1 < curve.size())
+      for (double x = curve[lowest - 1].kappa; x <= curve[lowest + 1].kappa; x += 1e-4 * (curve[lowest + 1].kappa - curve[lowest - 1].kappa))
+        T_min = std::min(T_min, interpolate(x, -1, nullptr));
+    Vector<double> Uf(fold->state.begin(), fold->state.end());
+    std::cout << "fold: torque " << fold->event.lambda * T << " at kappa3 = " << p->strains_of(Uf)[5]
+              << "; least torque of the twist-controlled branch " << T_min << " near kappa3 = "
+              << curve[lowest].kappa << "\n";
+    check("(d) the minimum lies inside the twist-controlled branch", lowest > 0 && lowest + 1 < curve.size());
+    check_close("(d) the fold's torque = the least torque of the twist-controlled branch", fold->event.lambda * T,
+                T_min, 0, std::max(2 * resolution, 1e-9 * T));
+  }
 } // namespace
 
 int
@@ -460,6 +634,7 @@ main(int argc, char **argv)
                                    {"cubic_twist", cubic_twist},
                                    {"anticlastic_bending", anticlastic_bending},
                                    {"scale_invariance", scale_invariance},
-                                   {"resultant_control", resultant_control}};
+                                   {"resultant_control", resultant_control},
+                                   {"torque_buckling", torque_buckling}};
   return cosmo_test::run_case("test_strip", "", cases, argc, argv, 2, 2);
 }

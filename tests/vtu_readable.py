@@ -171,6 +171,39 @@ check("full disc: %d images of the sector's %d cells" % (images, sector.GetNumbe
 check("full disc: covers every angle (points in each quadrant) with the sector's deflections",
       all(((theta >= a) & (theta < a + np.pi / 2)).any() for a in (-np.pi, -np.pi / 2, 0, np.pi / 2)) and
       abs(wd.max() - ws.max()) < 1e-7 * max(1e-30, abs(ws).max()) and abs(wd.min() - ws.min()) < 1e-7 * max(1e-30, abs(ws).max()))
+# The rim as the full ring: 2 n images of its cells, on the circle at every
+# angle, the same deflection extremes, and one continuous ring: where two
+# images meet (the same point written twice), every field agrees, the frame
+# d1, d2, d3 included (a reflection reverses the ring's direction, so d3,
+# the shears and the twist change sign there; a wrong sign would split the
+# frame at the seams). Float32 output: 1e-6 of each field's largest value.
+rim_last = os.path.basename(sorted(glob.glob(os.path.join(dirs["plate_rod"], "rim-*.vtu")))[-1])
+rim_s, rim_f = grid_of(os.path.join(dirs["plate_rod"], rim_last)), grid_of(os.path.join(full, rim_last))
+rxy = vtk_to_numpy(rim_f.GetPoints().GetData())[:, :2]
+rth = np.arctan2(rxy[:, 1], rxy[:, 0])
+rw_s = vtk_to_numpy(rim_s.GetPointData().GetArray("displacement"))[:, 2]
+rw_f = vtk_to_numpy(rim_f.GetPointData().GetArray("displacement"))[:, 2]
+check("full disc: the rim as %d images of the sector's %d rim cells, on the circle at every angle" %
+      (images, rim_s.GetNumberOfCells()),
+      rim_f.GetNumberOfCells() == images * rim_s.GetNumberOfCells() and
+      np.ptp(np.hypot(rxy[:, 0], rxy[:, 1])) < 1e-6 and
+      all(((rth >= a) & (rth < a + np.pi / 2)).any() for a in (-np.pi, -np.pi / 2, 0, np.pi / 2)))
+check("full disc: the rim's deflection extremes are the sector's",
+      abs(rw_f.max() - rw_s.max()) < 1e-7 * max(1e-30, abs(rw_s).max()) and
+      abs(rw_f.min() - rw_s.min()) < 1e-7 * max(1e-30, abs(rw_s).max()))
+pd = rim_f.GetPointData()
+fields = {pd.GetArrayName(i): vtk_to_numpy(pd.GetArray(i)).reshape(len(rxy), -1) for i in range(pd.GetNumberOfArrays())}
+seams, worst, worst_field = 0, 0.0, ""
+order = np.lexsort((np.round(rxy[:, 1], 6), np.round(rxy[:, 0], 6)))
+for a, b in zip(order[:-1], order[1:]):
+    if np.hypot(*(rxy[a] - rxy[b])) < 1e-9:
+        seams += 1
+        for name, v in fields.items():
+            gap = np.abs(v[a] - v[b]).max() / max(1e-30, np.abs(v).max())
+            if gap > worst:
+                worst, worst_field = gap, name
+check("full disc: the rim is continuous where its images meet (%d seam points; largest gap %.2g of the field, in %s)" %
+      (seams, worst, worst_field or "-"), seams >= images - 1 and worst < 1e-6)
 for stem in ("plate", "rim"):
     f = sorted(glob.glob(os.path.join(dirs["plate_rod"], stem + "-*.vtu")))[-1]
     r = vtk.vtkXMLUnstructuredGridReader()

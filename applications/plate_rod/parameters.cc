@@ -129,8 +129,9 @@ namespace cosmo
                         "With Domain = sector: write the plate VTUs as the full disc, the "
                         "sector's mirror images (reflected about its edge theta = 0 and "
                         "rotated by multiples of twice the sector angle; vectors turned with "
-                        "them, N_rt and M_rt change sign under a reflection). The rim stays "
-                        "the sector's.");
+                        "them, N_rt and M_rt change sign under a reflection), and the rim VTUs "
+                        "as the full ring (under a reflection the ring's direction reverses: "
+                        "d3, the shears nu1, nu2, the twist kappa3 and n1, n2, m3 change sign).");
       prm.leave_subsection();
     }
 

@@ -164,7 +164,7 @@ namespace cosmo
            << std::setprecision(5) << mismatch(report.t) << "  Newton " << report.newton_iterations
            << "  dome " << std::setprecision(4) << s.w_centre << "  neg.eig. " << s.n_negative
            << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue
-           << record.progress(solvers::path_fraction(report, arclength_settings));
+           << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       say(line.str());
       if (!write_output)
         return;
@@ -406,7 +406,8 @@ namespace cosmo
               fev.reinit(cell, f);
               fev.get_function_values(U, values);
               fev.get_function_gradients(U, grads);
-              vtu.begin_patch(degree);
+              std::vector<std::vector<double>> node_values(nodes.size());
+              std::vector<Point<2>>            node_points(nodes.size());
               for (unsigned int k = 0; k < nodes.size(); ++k)
                 {
                   const Point<2> X     = fev.quadrature_point(k);
@@ -429,23 +430,57 @@ namespace cosmo
                   const auto e          = model->rim_strains(
                     z, frame, {{law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}});
                   const Tensor<2, 3> L = kinematics::rim_rotation(z[6], z[7], z[10], frame.Lambda0);
-                  unsigned int       col = 0;
+                  std::vector<double> &v = node_values[k];
                   for (unsigned int c = 0; c < 3; ++c)
-                    vtu.set_value(col++, k, values[k][c]);
+                    v.push_back(values[k][c]);
                   for (unsigned int j = 0; j < 3; ++j)
                     for (unsigned int i = 0; i < 3; ++i)
-                      vtu.set_value(col++, k, L[i][j]);
+                      v.push_back(L[i][j]);
                   // The stress-free curvature includes the rim's natural curvature (assembly).
                   for (unsigned int j = 0; j < 3; ++j)
                     law.reference_strains[3 + j] += load_parameter * rod_natural_curvature[j];
                   const auto resultants = law.resultants(e, g_rod);
                   for (unsigned int j = 0; j < 6; ++j)
-                    vtu.set_value(col++, k, e[j]);
+                    v.push_back(e[j]);
                   for (unsigned int j = 0; j < 6; ++j)
-                    vtu.set_value(col++, k, resultants[j]);
-                  vtu.set_position(k, Point<3>(X[0], X[1], 0)); // reference + displacement
+                    v.push_back(resultants[j]);
+                  node_points[k] = X;
                 }
-              vtu.end_patch();
+              // The images of a sector's rim as for the plate (write_plate).
+              // A reflection reverses the rim's direction of travel, so
+              // the full ring's frame there is (P d1, P d2, -P d3) and the
+              // strains and resultants odd under it are the shears nu1,
+              // nu2 and the twist kappa3 (n1, n2, m3).
+              const unsigned int n_rotations = (domain == "sector" && sector_as_full_disc) ? sector_n : 1;
+              for (unsigned int rot = 0; rot < n_rotations; ++rot)
+                for (const double reflect : {1., -1.})
+                  {
+                    if (reflect < 0 && n_rotations == 1)
+                      continue;
+                    const double phi = 2 * M_PI * rot / sector_n, c = std::cos(phi), sn = std::sin(phi);
+                    auto         turn = [&](const double x, const double y) {
+                      return std::array<double, 2>{{c * x - sn * reflect * y, sn * x + c * reflect * y}};
+                    };
+                    vtu.begin_patch(degree);
+                    for (unsigned int k = 0; k < nodes.size(); ++k)
+                      {
+                        std::vector<double> v = node_values[k];
+                        for (const unsigned int first : {0u, 3u, 6u, 9u}) // displacement, d1, d2, d3
+                          {
+                            const auto xy = turn(v[first], v[first + 1]);
+                            v[first]      = xy[0];
+                            v[first + 1]  = xy[1];
+                          }
+                        if (reflect < 0)
+                          for (const unsigned int odd : {9u, 10u, 11u, 12u, 13u, 17u, 18u, 19u, 23u})
+                            v[odd] = -v[odd]; // d3, nu1, nu2, kappa3, n1, n2, m3
+                        for (unsigned int col = 0; col < v.size(); ++col)
+                          vtu.set_value(col, k, v[col]);
+                        const auto XY = turn(node_points[k][0], node_points[k][1]);
+                        vtu.set_position(k, Point<3>(XY[0], XY[1], 0)); // reference + displacement
+                      }
+                    vtu.end_patch();
+                  }
             }
       vtu.set_time(load_parameter);
       vtu.write(file);

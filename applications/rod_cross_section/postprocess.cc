@@ -179,7 +179,7 @@ namespace cosmo
             line << (k ? ", " : "") << io::format_significant(s.strains[k], 6);
           line << ")";
         }
-      line << record.progress(solvers::path_fraction(report, arclength_settings));
+      line << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       say(line.str());
 
       if (!write_output)

@@ -83,7 +83,7 @@ namespace cosmo
            << "  min|eig| " << std::setprecision(3) << smallest << "  strains (";
       for (unsigned int k = 0; k < 6; ++k)
         line << (k ? ", " : "") << std::setprecision(6) << s.strains[k];
-      line << ")" << record.progress(solvers::path_fraction(report, arclength_settings));
+      line << ")" << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       say(line.str());
       if (!write_output)
         return;

@@ -37,12 +37,6 @@ namespace cosmo
         return k < 3 ? "1" : "1/" + d.length_unit;
       }
 
-      std::string
-      unit_of_resultant(const unsigned int k, const TableDescription &d)
-      {
-        return k < 3 ? d.force_unit : d.moment_unit;
-      }
-
       /**
        * table.h5: the datasets with their units and meaning as attributes,
        * the strain axes as HDF5 dimension scales (h5py: dataset.dims), the

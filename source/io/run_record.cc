@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -19,7 +20,7 @@ namespace cosmo
     {}
 
     std::string
-    RunRecord::progress(const double fraction) const
+    RunRecord::progress(const double fraction, const unsigned int step) const
     {
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - opened_at).count();
@@ -35,7 +36,12 @@ namespace cosmo
       };
       std::string out = "  [" + format(seconds);
       if (fraction > 0.01 && fraction < 1)
-        out += ", ETA " + format(seconds * (1 - fraction) / fraction);
+        {
+          if (step > 0)
+            out += ", step " + std::to_string(step) + " of ~" +
+                   std::to_string(static_cast<unsigned long>(std::ceil(step / fraction - 1e-9)));
+          out += ", ETA " + format(seconds * (1 - fraction) / fraction);
+        }
       return out + "]";
     }
 

@@ -6,6 +6,11 @@
 #  include <mpi.h>
 #endif
 
+#ifdef COSMO_WITH_METIS
+#  include <metis.h>
+#endif
+
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -23,10 +28,71 @@ namespace cosmo
       return s;
     }
 
+    std::vector<bool>
+    dense_rows(const SparsityPattern &sp)
+    {
+      const std::size_t n = sp.n_rows();
+      std::vector<bool> dense(n, false);
+      if (n == 0)
+        return dense;
+      std::vector<unsigned int> length(n);
+      for (std::size_t i = 0; i < n; ++i)
+        length[i] = sp.row_length(i);
+      std::vector<unsigned int> sorted = length;
+      std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+      const unsigned int median = sorted[n / 2];
+      for (std::size_t i = 0; i < n; ++i)
+        dense[i] = length[i] > 8 * median;
+      return dense;
+    }
+
+    std::vector<int>
+    border_last_ordering(const SparsityPattern &sp)
+    {
+#ifdef COSMO_WITH_METIS
+      const std::vector<bool> dense = dense_rows(sp);
+      const std::size_t       n     = sp.n_rows();
+      std::vector<idx_t>      local(n, -1);
+      idx_t                   nv = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (!dense[i])
+          local[i] = nv++;
+      if (nv == idx_t(n) || nv < 2) // no border, or nothing but border
+        return {};
+      std::vector<idx_t> xadj(nv + 1, 0), adjacency;
+      adjacency.reserve(sp.n_nonzero_elements());
+      for (std::size_t i = 0; i < n; ++i)
+        if (!dense[i])
+          {
+            for (auto it = sp.begin(i); it != sp.end(i); ++it)
+              if (it->column() != i && !dense[it->column()])
+                adjacency.push_back(local[it->column()]);
+            xadj[local[i] + 1] = adjacency.size();
+          }
+      idx_t options[METIS_NOPTIONS];
+      METIS_SetDefaultOptions(options);
+      options[METIS_OPTION_NUMBERING] = 0;
+      std::vector<idx_t> perm(nv), iperm(nv);
+      if (METIS_NodeND(&nv, xadj.data(), adjacency.data(), nullptr, options, perm.data(), iperm.data()) !=
+          METIS_OK)
+        return {};
+      // MUMPS' PERM_IN(i): the (1-based) position of unknown i in the pivot order.
+      std::vector<int> position(n);
+      int              next = nv;
+      for (std::size_t i = 0; i < n; ++i)
+        position[i] = dense[i] ? ++next : iperm[local[i]] + 1;
+      return position;
+#else
+      (void)sp;
+      return {};
+#endif
+    }
+
     struct SparseDirectSolver::MumpsData
     {
 #ifdef COSMO_WITH_MUMPS
       DMUMPS_STRUC_C     id;
+      std::vector<int>   perm_in; // user ordering, 1-based positions
       std::vector<int>   irn, jcn; // 1-based, upper triangle
       std::vector<double> values;
       std::vector<bool>   upper; // storage position is in the upper triangle
@@ -128,8 +194,22 @@ namespace cosmo
           // the bordered Hessians separately (measured fastest of MUMPS'
           // orderings on these matrices, see benchmarks/README.md).
           id.icntl[6] = 6;
+          int ordering = id.icntl[6];
           if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
-            id.icntl[6] = std::atoi(o);
+            ordering = std::atoi(o);
+          // 100: METIS nested dissection of the sparse block, the dense
+          // border rows last (a user ordering, ICNTL(7) = 1).
+          if (ordering == 100)
+            {
+              mumps->perm_in = border_last_ordering(sp);
+              if (!mumps->perm_in.empty())
+                {
+                  id.perm_in  = mumps->perm_in.data();
+                  id.icntl[6] = 1;
+                }
+            }
+          else
+            id.icntl[6] = ordering;
           // The upper triangle in coordinate format; the pattern is fixed,
           // so the index map is computed once.
           mumps->irn.clear();

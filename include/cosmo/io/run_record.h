@@ -55,9 +55,12 @@ namespace cosmo
        * For a step line: "  [12.3 s]" (wall time since open()), with
        * ", ETA 40 s" when `fraction` (the share of the run done, e.g. t of a
        * path to t = 1) is in (0.01, 1): the remaining share at the speed so far.
+       * Given the step number as well, "step 12 of ~40" before the ETA: the
+       * number of steps the path takes at its mean step so far (an estimate:
+       * the step length adapts).
        */
       std::string
-      progress(double fraction = std::numeric_limits<double>::quiet_NaN()) const;
+      progress(double fraction = std::numeric_limits<double>::quiet_NaN(), unsigned int step = 0) const;
 
       /// say() as a function, for the library's progress callbacks.
       std::function<void(const std::string &)>

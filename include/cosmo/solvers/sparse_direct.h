@@ -35,6 +35,26 @@ namespace cosmo
     double
     absolute_quadratic_form(const SparseMatrix<double> &A, const Vector<double> &v);
 
+    /**
+     * The rows of a bordered matrix that are dense: longer than 8 times the
+     * median row (the gauge and strain rows couple to a whole field; a
+     * field row to its element neighbours only).
+     */
+    std::vector<bool>
+    dense_rows(const SparsityPattern &sp);
+
+    /**
+     * A fill-reducing order for the LDL^T of a bordered matrix: METIS's
+     * nested dissection of the graph without the dense rows, those rows
+     * last, as MUMPS's PERM_IN (1-based position of each unknown). Empty if
+     * there is no border or no METIS. The null pivots of a singular block
+     * (rigid motions fixed by the gauge rows) are delayed by MUMPS into the
+     * last front, with the border: the LDL^T and its inertia are those of
+     * the whole matrix.
+     */
+    std::vector<int>
+    border_last_ordering(const SparsityPattern &sp);
+
     class SparseDirectSolver
     {
     public:
