@@ -50,6 +50,9 @@ def _figures():
     f["strip_shearing_branches.png"] = ["parameter_files/strip/shearing.prm",
                                         f"{REF}/strip_shearing.output",
                                         "scripts/plot_branches.py"]
+    f["strip_torque_buckling_branches.png"] = ["parameter_files/strip/torque_buckling.prm",
+                                               f"{REF}/strip_torque_buckling.output",
+                                               "scripts/plot_branches.py"]
     f["strip_ribbons.png"] = ["parameter_files/strip/ribbon_comparison.prm",
                               f"{REF}/strip_ribbon_comparison.output",
                               "scripts/ribbon_models.py"]

@@ -9,7 +9,11 @@ parameter t against the resultant that the path drives (the one of the
 largest prescribed strain change: m3 for twisting, n1 for shearing, m1 for
 bending; the same panel shows the energy), one line per branch, solid where
 the state is stable (no negative eigenvalue) and dashed where it is not; the
-located events are marked. Exit status 0, 1 bad usage, 2 no matplotlib.
+located events are marked. Under resultant control (a resultant of the
+driven strain held at t times a target, `Rod strains / Resultants`) the left
+panel is that strain against its resultant instead (e.g. twist against
+torque: the fold of a snap shows as a turning point), events as dots.
+Exit status 0, 1 bad usage, 2 no matplotlib.
 """
 
 import json
@@ -44,11 +48,18 @@ def plot_run(plt, run_dir):
     spread = {s: max((abs(columns[s][i] - columns[s][first[0]]) for i in others), default=0)
               for s in STRAINS if s in columns and s != driven}
     order = max(spread, key=spread.get) if spread and max(spread.values()) > 1e-8 else "energy"
+    # resultant control: the driven strain is free, its resultant held at t x target
+    target = None
+    if resultant in summary.get("held_resultants", {}):
+        ratios = [columns[resultant][i] / columns["t"][i] for i in range(len(columns["t"]))
+                  if abs(columns["t"][i]) > 1e-12]
+        target = ratios[-1] if ratios and abs(ratios[-1]) > 0 else None
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     branches = sorted(set(int(b) for b in columns["branch"]))
     for b in branches:
         rows = [i for i, x in enumerate(columns["branch"]) if int(x) == b]
-        for ax, name in zip(axes, (resultant, order)):
+        for k, (ax, name) in enumerate(zip(axes, (resultant, order))):
+            xname = driven if (k == 0 and target is not None) else "t"
             # Split into runs of equal stability so that stable is solid.
             start = 0
             while start < len(rows):
@@ -58,15 +69,24 @@ def plot_run(plt, run_dir):
                         (columns["n_negative_eigenvalues"][rows[end + 1]] == 0) == stable:
                     end += 1
                 seg = rows[start:end + 2] if end + 1 < len(rows) else rows[start:end + 1]
-                ax.plot([columns["t"][i] for i in seg], [columns[name][i] for i in seg],
+                ax.plot([columns[xname][i] for i in seg], [columns[name][i] for i in seg],
                         "-" if stable else "--", color="C%d" % b,
                         label=("branch %d" % b) if start == 0 else None)
                 start = end + 1
     for e in summary.get("events", []):
-        for ax in axes:
-            ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
-    for ax, name in zip(axes, (resultant, order)):
-        ax.set_xlabel("load parameter t (%s prescribed)" % driven)
+        for k, ax in enumerate(axes):
+            if k == 0 and target is not None:
+                ax.plot([e.get("strains", {}).get(driven, math.nan)], [e.get("t", math.nan) * target],
+                        "o", color="k", ms=4)
+            else:
+                ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
+    for k, (ax, name) in enumerate(zip(axes, (resultant, order))):
+        if target is None:
+            ax.set_xlabel("load parameter t (%s prescribed)" % driven)
+        elif k == 0:
+            ax.set_xlabel("%s (free; %s held, dots: events)" % (driven, resultant))
+        else:
+            ax.set_xlabel("load parameter t (%s held at t x %.4g)" % (resultant, target))
         ax.set_ylabel(name)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)

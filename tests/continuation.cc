@@ -7,10 +7,14 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/sparse_direct.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include "test_tools.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 
@@ -486,6 +490,101 @@ namespace
     check("stability: straight unstable beyond lambda_c, buckled stable (" + std::to_string(wrong) + " wrong)",
           wrong == 0);
   }
+
+  // The bordered ordering (solvers/sparse_direct.h): a grid Laplacian with
+  // free boundaries (singular: the constants), shifted by -sigma so that it
+  // is indefinite, bordered by a gauge row (the mean) and a dense coupling
+  // row, like the Hessians of the sections. The border rows are found; the
+  // LDL^T with METIS's nested dissection of the block and the border last
+  // solves as QAMD's does (to round-off times the condition) and has the
+  // inertia of the whole matrix (LAPACK's eigenvalues), for shifts that make
+  // the block singular (sigma = 0: MUMPS delays the null pivot into the
+  // border's front) and indefinite.
+  void
+  bordered_ordering()
+  {
+    const unsigned int m = 30, n_block = m * m, n = n_block + 2;
+    for (const double sigma : {0., 0.35})
+      {
+        DynamicSparsityPattern dsp(n, n);
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              const unsigned int k = i * m + j;
+              dsp.add(k, k);
+              if (i + 1 < m)
+                dsp.add(k, k + m), dsp.add(k + m, k);
+              if (j + 1 < m)
+                dsp.add(k, k + 1), dsp.add(k + 1, k);
+              for (const unsigned int b : {n_block, n_block + 1})
+                dsp.add(k, b), dsp.add(b, k);
+            }
+        dsp.add(n_block + 1, n_block + 1);
+        SparsityPattern sp;
+        sp.copy_from(dsp);
+        SparseMatrix<double> A(sp);
+        FullMatrix<double>   dense(n, n);
+        auto                 set = [&](const unsigned int a, const unsigned int b, const double v) {
+          A.add(a, b, v);
+          dense(a, b) += v;
+        };
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              const unsigned int k = i * m + j;
+              set(k, k, -sigma);
+              if (i + 1 < m)
+                set(k, k, 1), set(k + m, k + m, 1), set(k, k + m, -1), set(k + m, k, -1);
+              if (j + 1 < m)
+                set(k, k, 1), set(k + 1, k + 1, 1), set(k, k + 1, -1), set(k + 1, k, -1);
+              set(k, n_block, 1. / n_block), set(n_block, k, 1. / n_block);
+              const double c = 0.01 * std::sin(0.7 * k);
+              set(k, n_block + 1, c), set(n_block + 1, k, c);
+            }
+        set(n_block + 1, n_block + 1, 2.);
+        const auto found = solvers::dense_rows(sp);
+        unsigned int n_found = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          n_found += found[i];
+        check("bordered ordering: the two border rows found, no other", n_found == 2 && found[n_block] && found[n_block + 1]);
+        Vector<double> b(n);
+        for (unsigned int i = 0; i < n; ++i)
+          b[i] = std::cos(0.3 * i);
+        std::vector<Vector<double>> x;
+        std::vector<int>            negative;
+        for (const char *ordering : {"6", "100"})
+          {
+            setenv("COSMO_MUMPS_ORDERING", ordering, 1);
+            solvers::SparseDirectSolver solver;
+            solver.factorize(A);
+            Vector<double> y = b;
+            solver.solve(y);
+            x.push_back(y);
+            negative.push_back(solver.n_negative_eigenvalues());
+          }
+        unsetenv("COSMO_MUMPS_ORDERING");
+        LAPACKFullMatrix<double> L(n, n);
+        L = dense;
+        L.compute_eigenvalues();
+        int    lapack_negative = 0;
+        double smallest        = 1e300;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            lapack_negative += L.eigenvalue(i).real() < 0;
+            smallest = std::min(smallest, std::abs(L.eigenvalue(i).real()));
+          }
+        Vector<double> d = x[1];
+        d -= x[0];
+        std::cout << "sigma = " << sigma << ": negative pivots QAMD " << negative[0] << ", bordered ND "
+                  << negative[1] << ", LAPACK " << lapack_negative << " (smallest |eigenvalue| " << smallest
+                  << "); solutions differ by " << d.linfty_norm() / x[0].linfty_norm() << "\n";
+        check("bordered ordering: the inertia of the whole matrix", negative[1] == lapack_negative &&
+                                                                       negative[0] == lapack_negative);
+        // round-off eps times the condition number (|lambda|max ~ 8 over the smallest)
+        check("bordered ordering: the same solution as QAMD",
+              d.linfty_norm() <= 1e3 * 2.2e-16 * 8 / smallest * x[0].linfty_norm());
+      }
+  }
 } // namespace
 
 int
@@ -493,6 +592,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
-                                   {"secondary_bifurcation", secondary_bifurcation}};
+                                   {"secondary_bifurcation", secondary_bifurcation},
+                                   {"bordered_ordering", bordered_ordering}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }
