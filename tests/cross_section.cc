@@ -943,6 +943,15 @@ Physical Curve("outer", 1) = {1:8};
         check_close("channel: GJ against G (2 b + h) t^3 / 3", lp.GJ,
                     E / (2 * (1 + poisson)) * (2 * b + h) * t * t * t / 3, t / b);
         check_close("channel: 6x6 condensed torsion = GJ", a.condensed[5], lp.GJ, 1e-4);
+        // Vlasov's warping constant of the thin-walled channel (equal walls),
+        // Cw = t b^3 h^2 (3 b + 2 h) / (12 (6 b + h)) on the midlines; the
+        // solid section adds the walls' own (secondary) warping and corner
+        // terms: relative O(t/b).
+        const double Cw_thin = t * b * b * b * h * h * (3 * b + 2 * h) / (12 * (6 * b + h));
+        std::cout << "channel t = " << t << ": E Gamma / E = " << lp.EGamma / E << ", thin-walled Cw " << Cw_thin
+                  << ", relative difference " << (lp.EGamma / E - Cw_thin) / Cw_thin << "\n";
+        errors["channel warping"].push_back(std::abs(lp.EGamma / E - Cw_thin) / Cw_thin);
+        check_close("channel: warping constant against thin-walled Cw (t/b)", lp.EGamma / E, Cw_thin, t / b);
         check_point("channel: 6x6 tension centre = elastic centre", a.tension_centre, lp.elastic_centre, 1e-6);
       }
     for (const double t : {0.1, 0.05})
@@ -974,6 +983,15 @@ Physical Curve("outer", 1) = {1:6};
                     lp.shear_centre_flexure, thin, 3 * (t / L) * (t / L) * c);
         check_point("angle: Trefftz = flexural", lp.shear_centre_trefftz, lp.shear_centre_flexure, 1e-6);
         check_point("angle: 6x6 = flexural", a.shear_centre, lp.shear_centre_flexure, 1e-9 * c);
+        // Thin-walled theory: Cw = 0 (both midlines pass through the shear
+        // centre); what is left is the legs' own warping across their
+        // thickness, (t^3/36) (b1^3 + b2^3) with b = L - t/2 (Galambos),
+        // itself exact only to O(t/b).
+        const double Cw_secondary = t * t * t / 36 * 2 * std::pow(L - t / 2, 3);
+        std::cout << "angle t = " << t << ": E Gamma / E = " << lp.EGamma / E << ", secondary warping "
+                  << Cw_secondary << "\n";
+        check_close("angle: warping constant = the legs' secondary warping (t/L)", lp.EGamma / E, Cw_secondary,
+                    t / L);
         check_close("angle: principal axis along the symmetry line (deg, mod 180)",
                     std::min(std::abs(axis_angle_error(lp.principal_angle, 45)),
                              std::abs(axis_angle_error(lp.principal_angle, -45))), 0, 0, 1e-6);

@@ -453,7 +453,8 @@ namespace cosmo
           << axis_angle(p.principal_angle) << " (EI "
           << io::format_significant(p.principal_bending[0], 5) << ", "
           << io::format_significant(p.principal_bending[1], 5) << ")\n"
-          << "    GJ " << io::format_significant(p.GJ, 5) << "; shear centre " << pt(p.shear_centre_flexure)
+          << "    GJ " << io::format_significant(p.GJ, 5) << ", warping stiffness E Gamma "
+          << io::format_significant(p.EGamma, 5) << "; shear centre " << pt(p.shear_centre_flexure)
           << " (Trefftz " << pt(p.shear_centre_trefftz) << "); shear factors "
           << io::format_significant(p.shear_factors[0], 4) << ", " << io::format_significant(p.shear_factors[1], 4)
           << "\n    mass per length " << io::format_significant(p.mass, 5) << ", mass centre "

@@ -191,6 +191,7 @@ namespace cosmo
 
       // Pass 3: integrals of the warping functions.
       double                  Iw1 = 0, Iw2 = 0; // int E X_a omega
+      double                  Iw0 = 0, Iww = 0; // int E omega, int E omega^2
       std::array<double, 2>   moment{{0, 0}};   // int (x tau2 - y tau1) per load
       FullMatrix<double>      flexibility(2, 2);
       std::vector<double>     w(nq);
@@ -210,6 +211,8 @@ namespace cosmo
               const double    dA = fe_values.JxW(q);
               const Tensor<1, 2> rot({-x[1], x[0]});
               p.GJ += m.shear * (grads[0][q] + rot).norm_square() * dA;
+              Iw0 += m.young * w[q] * dA;
+              Iww += m.young * w[q] * w[q] * dA;
               Iw1 += m.young * (x[0] - xe[0]) * w[q] * dA;
               Iw2 += m.young * (x[1] - xe[1]) * w[q] * dA;
               for (unsigned int a = 0; a < 2; ++a)
@@ -225,6 +228,12 @@ namespace cosmo
       // is orthogonal (E-weighted) to X1 and X2.
       p.shear_centre_trefftz =
         Point<2>((S12 * Iw1 - S11 * Iw2) / D, (S22 * Iw1 - S12 * Iw2) / D);
+      // Vlasov's warping stiffness E Gamma = int E omega_s^2 of the warping
+      // about the shear centre with zero E-weighted mean: omega less its
+      // E-weighted projection onto 1, X1, X2 (the same orthogonality that
+      // defines Trefftz's centre), so E Gamma = int E omega^2 minus that
+      // projection's energy.
+      p.EGamma = Iww - Iw0 * Iw0 / p.EA - (S22 * Iw1 * Iw1 - 2 * S12 * Iw1 * Iw2 + S11 * Iw2 * Iw2) / D;
       // The resultant n of the flexure stresses acts at s: s x n = moment.
       p.shear_centre_flexure = Point<2>(moment[1], -moment[0]);
       p.shear_stiffness.invert(flexibility);
@@ -252,6 +261,7 @@ namespace cosmo
       j["principal_angle_deg"]  = principal_angle * 180 / M_PI;
       j["principal_bending"]    = io::JSON::array({principal_bending[0], principal_bending[1]});
       j["GJ"]                   = GJ;
+      j["EGamma"]               = EGamma;
       j["shear_centre_trefftz"] = point_json(shear_centre_trefftz);
       j["shear_centre_flexure"] = point_json(shear_centre_flexure);
       j["shear_stiffness"]      = matrix_json(shear_stiffness);

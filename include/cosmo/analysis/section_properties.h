@@ -61,6 +61,9 @@ namespace cosmo
       double                principal_angle = 0;
       std::array<double, 2> principal_bending{{0, 0}}; ///< larger, smaller
       double                GJ = 0;                    ///< Saint-Venant torsional stiffness
+      /// Vlasov's warping stiffness E Gamma = int E omega^2 (omega the torsion
+      /// warping about the shear centre, zero E-weighted mean; E Cw for one material).
+      double EGamma = 0;
       Point<2>              shear_centre_trefftz;
       Point<2>              shear_centre_flexure;
       /// Shear stiffness matrix (forces n1, n2 against shear strains), from the flexure warping.
