@@ -60,5 +60,13 @@ main(int argc, char **argv)
                 << T.seconds("assembly (Jacobian)") / std::max(1u, T.calls("assembly (Jacobian)"))
                 << " s, factorization " << T.calls("factorization") << " x "
                 << T.seconds("factorization") / std::max(1u, T.calls("factorization")) << " s\n";
+      // The factorization against the machine: its flops (MUMPS's count)
+      // over its time; the FMA peak of one core is 16 double flops per cycle (AVX2).
+      const auto & solver = problem.bordered_system().solver();
+      const double flops  = solver.factorization_flops();
+      std::cout << "       factorization: " << std::setprecision(3) << flops / 1e9 << " GFlop, "
+                << solver.factor_entries() / 1e6 << " M entries in the factors, "
+                << flops / 1e9 / (T.seconds("factorization") / std::max(1u, T.calls("factorization")))
+                << " GFlop/s\n";
     }
 }

@@ -917,7 +917,7 @@ namespace cosmo
           ev.push_back(x);
         }
       j["events"] = ev;
-      record.finish(j, timer);
+      record.finish(j, timer, states.size());
     }
 
     void

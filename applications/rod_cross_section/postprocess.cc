@@ -424,7 +424,7 @@ namespace cosmo
       helix["curvature"]   = h.curvature;
       helix["torsion"]     = h.torsion;
       j["newton_iterations"] = total_newton_iterations;
-      record.finish(j, timer);
+      record.finish(j, timer, n_condensed_states);
     }
 
     namespace

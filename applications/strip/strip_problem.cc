@@ -390,7 +390,7 @@ namespace cosmo
             x["mode_symmetry"] = symmetry_name(event_parities[k]);
           }
       });
-      record.finish(j, timer);
+      record.finish(j, timer, n_condensed_states);
     }
 
     void

@@ -137,9 +137,24 @@ namespace cosmo
     }
 
     void
-    RunRecord::finish(JSON summary, const PhaseTimer &timer) const
+    RunRecord::finish(JSON summary, const PhaseTimer &timer, const unsigned int converged_states) const
     {
       summary["timings"] = timer.to_json();
+      // The work per converged state: what a faster solver has to reduce
+      // (factorizations and Jacobian assemblies come in pairs; event
+      // location and stability add to them).
+      if (converged_states > 0)
+        {
+          JSON w                  = JSON::object();
+          w["converged_states"]   = static_cast<double>(converged_states);
+          w["factorizations"]     = timer.calls("factorization") / double(converged_states);
+          w["jacobian_assemblies"] = timer.calls("assembly (Jacobian)") / double(converged_states);
+          w["residual_assemblies"] = timer.calls("assembly (residual)") / double(converged_states);
+          w["wall_seconds"] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - opened_at).count() /
+            converged_states;
+          summary["work_per_state"] = w;
+        }
       std::error_code ec;
       if (status == "interrupted" && std::filesystem::exists(output_directory + "/" + checkpoint_name, ec))
         {

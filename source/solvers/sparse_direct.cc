@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 namespace cosmo
@@ -262,6 +263,30 @@ namespace cosmo
         }
       n_negative = mumps->id.infog[11];
 #endif
+    }
+
+    double
+    SparseDirectSolver::factorization_flops() const
+    {
+#ifdef COSMO_WITH_MUMPS
+      if (solver_kind == Kind::mumps && mumps)
+        return mumps->id.rinfog[2];
+#endif
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    double
+    SparseDirectSolver::factor_entries() const
+    {
+#ifdef COSMO_WITH_MUMPS
+      if (solver_kind == Kind::mumps && mumps)
+        {
+          // INFOG(29); negative: millions of entries
+          const int e = mumps->id.infog[28];
+          return e >= 0 ? double(e) : -1e6 * e;
+        }
+#endif
+      return 0;
     }
 
     void

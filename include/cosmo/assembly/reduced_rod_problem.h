@@ -356,6 +356,8 @@ namespace cosmo
       std::vector<std::array<double, 6>> waypoints; ///< 'Path' (empty: straight ramp)
       io::PhaseTimer                  timer;
       unsigned int                    total_newton_iterations = 0;
+      /// condensed_state() calls: the converged states (path steps, table points) of a run.
+      unsigned int                    n_condensed_states = 0;
       std::vector<PathPoint>             visited;
       std::vector<Event>                 located_events;
       std::vector<std::array<double, 6>> strains_at_events;

@@ -100,12 +100,14 @@ namespace cosmo
       summary() const;
 
       /**
-       * Add the timings, write `summary` to summary.json (atomically) and
+       * Add the timings (and, given the number of converged states, the
+       * factorizations, assemblies and seconds per state as
+       * `work_per_state`), write `summary` to summary.json (atomically) and
        * then either say where the output is or, for a failed run, throw
        * io::RunFailure with its message (exit status 2).
        */
       void
-      finish(JSON summary, const PhaseTimer &timer) const;
+      finish(JSON summary, const PhaseTimer &timer, unsigned int converged_states = 0) const;
 
       const std::string &
       directory() const

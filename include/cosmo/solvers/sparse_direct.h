@@ -98,6 +98,15 @@ namespace cosmo
         return solver_kind;
       }
 
+      /// MUMPS: floating-point operations of the last factorization
+      /// (RINFOG(3)), NaN otherwise; with its time, the flop rate against
+      /// the machine's peak (benchmarks/).
+      double
+      factorization_flops() const;
+      /// MUMPS: entries in the factors (INFOG(29)), 0 otherwise.
+      double
+      factor_entries() const;
+
     private:
       Kind solver_kind;
       int  n_negative = -1;
