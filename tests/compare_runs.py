@@ -13,7 +13,7 @@ import json
 import math
 import sys
 
-SKIP = {"timings", "seconds", "parameter_file", "message", "pid"}
+SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid"}
 
 
 def close(x, y, scale):

@@ -142,7 +142,8 @@ namespace cosmo
       summary["timings"] = timer.to_json();
       // The work per converged state: what a faster solver has to reduce
       // (factorizations and Jacobian assemblies come in pairs; event
-      // location and stability add to them).
+      // location and stability add to them). Of this process: a resumed
+      // run counts from its resume, like its timings.
       if (converged_states > 0)
         {
           JSON w                  = JSON::object();

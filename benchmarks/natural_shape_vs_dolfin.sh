@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Part 1 side by side: the natural shape of the growing unit disc (neo-Hookean,
+# axial growth 1 + 0.3 X1, all six strains free, kappa2 = -0.3 exactly) by
+# rod_cross_section (Q2, MUMPS LDL^T of the bordered system) and by a legacy
+# DOLFIN script a user would write instead (benchmarks/natural_shape_dolfin.py:
+# P2, UFL's exact tangent, MUMPS). Whole processes, wall time, the median of
+# RUNS paired runs after one warm-up of each (DOLFIN's JIT cache); prints the
+# ratio and cosmo's split per phase (summary.json).
+#   bash benchmarks/natural_shape_vs_dolfin.sh [build dir] [refinements] [dolfin rings] [runs]
+# Defaults: build, 5 (61 839 DoFs), 40 (about 61 600 DoFs), 3.
+# Installs python3-dolfin if missing (as scripts/setup.sh installs packages).
+set -euo pipefail
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="$(realpath "${1:-$REPO/build}")" REF="${2:-5}" RINGS="${3:-40}" RUNS="${4:-3}"
+if ! dpkg-query -W -f='${Status}' python3-dolfin 2>/dev/null | grep -q "install ok installed"; then
+  SUDO=""; [[ $(id -u) -ne 0 ]] && SUDO="sudo"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q python3-dolfin >/dev/null
+fi
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cat > "$work/disc.prm" <<PRM
+subsection Cross-section
+  set Shape = circle
+  set Global refinements = $REF
+end
+subsection Material 1
+  set Growth kind = axial
+  set Growth factor = 1 + 0.3*x
+end
+subsection Rod strains
+  set Mode = natural shape
+end
+subsection Continuation
+  set Initial step = 1
+  set Maximum step = 1
+end
+subsection Output
+  set Output directory = $work/cosmo
+  set Stiffness at every step = false
+  set VTU output = none
+end
+PRM
+now() { date +%s.%N; }
+cosmo_times=() dolfin_times=()
+"$BUILD/rod_cross_section" --quiet "$work/disc.prm"
+(cd "$work" && /usr/bin/python3 "$REPO/benchmarks/natural_shape_dolfin.py" "$RINGS" >/dev/null 2>&1)
+for ((k = 0; k < RUNS; ++k)); do
+  a=$(now); "$BUILD/rod_cross_section" --quiet "$work/disc.prm"; b=$(now)
+  cosmo_times+=("$(echo "$b - $a" | bc -l)")
+  a=$(now); (cd "$work" && /usr/bin/python3 "$REPO/benchmarks/natural_shape_dolfin.py" "$RINGS" > "$work/dolfin.txt" 2>/dev/null); b=$(now)
+  dolfin_times+=("$(echo "$b - $a" | bc -l)")
+done
+median() { printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
+mc=$(median "${cosmo_times[@]}") md=$(median "${dolfin_times[@]}")
+/usr/bin/python3 - "$work/cosmo/summary.json" "$mc" "$md" "$work/dolfin.txt" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+t = s["timings"]
+mc, md = float(sys.argv[2]), float(sys.argv[3])
+print(open(sys.argv[4]).read().strip())
+print("cosmo:  %d DoFs (with 12 global), Newton %s, kappa2 error %.2e" %
+      (s["field_dofs"] + 12 if "field_dofs" in s else -1, s.get("newton_iterations"),
+       abs(s["strains"]["kappa2"] + 0.3)))
+for phase in ("assembly (residual)", "assembly (Jacobian)", "factorization", "solve"):
+    if phase in t:
+        c = t[phase]
+        print("  %-22s %3d x %.3f s = %.2f s" % (phase, c["calls"], c["seconds"] / c["calls"], c["seconds"]))
+jac, fac = t["assembly (Jacobian)"], t["factorization"]
+print("  one Newton iteration (Jacobian + factorization): %.3f s" %
+      (jac["seconds"] / jac["calls"] + fac["seconds"] / fac["calls"]))
+print("whole process, median of paired runs: cosmo %.2f s, dolfin %.2f s: cosmo %.2fx faster" % (mc, md, md / mc))
+PY
