@@ -19,6 +19,34 @@ namespace cosmo
 {
   namespace plate_rod
   {
+    namespace
+    {
+      /**
+       * A sector's images in the output (Output / Sector as full disc): the
+       * rotations by 2 pi k / n, each also after the reflection y -> -y (the
+       * sector 0 <= theta <= pi/n has mirror conditions on both edges); the
+       * identity alone if `images` is false. `image(turn, reflect)` writes
+       * one, with turn(x, y) = Rot(phi) diag(1, reflect) (x, y).
+       */
+      template <typename Image>
+      void
+      for_each_sector_image(const bool images, const unsigned int n, const Image &image)
+      {
+        for (unsigned int rot = 0; rot < (images ? n : 1u); ++rot)
+          for (const double reflect : {1., -1.})
+            {
+              if (reflect < 0 && !images)
+                continue;
+              const double phi = 2 * M_PI * rot / n, c = std::cos(phi), s = std::sin(phi);
+              image(
+                [=](const double x, const double y) {
+                  return std::array<double, 2>{{c * x - s * reflect * y, s * x + c * reflect * y}};
+                },
+                reflect);
+            }
+      }
+    } // namespace
+
     PlateRodState
     PlateRodProblem::analyse(const Vector<double> &U, const unsigned int n_modes) const
     {
@@ -340,21 +368,8 @@ namespace cosmo
               node_values[k] = {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
                                 gf[1], N[0], N[1], N[2], M[0], M[1], M[2]};
             }
-          // The images: rotations by 2 pi k / n, each also after the
-          // reflection y -> -y (the sector 0 <= theta <= pi/n has mirror
-          // conditions on both edges); just the identity otherwise.
-          const unsigned int n_rotations =
-            (domain == "sector" && sector_as_full_disc) ? sector_n : 1;
-          for (unsigned int rot = 0; rot < n_rotations; ++rot)
-            for (const double reflect : {1., -1.})
-              {
-                if (reflect < 0 && n_rotations == 1)
-                  continue;
-                const double phi = 2 * M_PI * rot / sector_n, c = std::cos(phi), sn = std::sin(phi);
-                // T v = Rot(phi) diag(1, reflect) v, on the (x, y) components.
-                auto turn = [&](const double x, const double y) {
-                  return std::array<double, 2>{{c * x - sn * reflect * y, sn * x + c * reflect * y}};
-                };
+          for_each_sector_image(
+            domain == "sector" && sector_as_full_disc, sector_n, [&](const auto &turn, const double reflect) {
                 vtu.begin_patch(degree);
                 for (unsigned int k = 0; k < nodes.size(); ++k)
                   {
@@ -374,7 +389,7 @@ namespace cosmo
                     vtu.set_position(k, Point<3>(XY[0], XY[1], 0));
                   }
                 vtu.end_patch();
-              }
+              });
         }
       vtu.set_time(load_parameter);
       vtu.write(file);
@@ -446,21 +461,13 @@ namespace cosmo
                     v.push_back(resultants[j]);
                   node_points[k] = X;
                 }
-              // The images of a sector's rim as for the plate (write_plate).
-              // A reflection reverses the rim's direction of travel, so
-              // the full ring's frame there is (P d1, P d2, -P d3) and the
-              // strains and resultants odd under it are the shears nu1,
-              // nu2 and the twist kappa3 (n1, n2, m3).
-              const unsigned int n_rotations = (domain == "sector" && sector_as_full_disc) ? sector_n : 1;
-              for (unsigned int rot = 0; rot < n_rotations; ++rot)
-                for (const double reflect : {1., -1.})
-                  {
-                    if (reflect < 0 && n_rotations == 1)
-                      continue;
-                    const double phi = 2 * M_PI * rot / sector_n, c = std::cos(phi), sn = std::sin(phi);
-                    auto         turn = [&](const double x, const double y) {
-                      return std::array<double, 2>{{c * x - sn * reflect * y, sn * x + c * reflect * y}};
-                    };
+              // The images of a sector's rim as for the plate. A reflection
+              // reverses the rim's direction of travel, so the full ring's
+              // frame there is (P d1, P d2, -P d3) and the strains and
+              // resultants odd under it are the shears nu1, nu2 and the
+              // twist kappa3 (n1, n2, m3).
+              for_each_sector_image(
+                domain == "sector" && sector_as_full_disc, sector_n, [&](const auto &turn, const double reflect) {
                     vtu.begin_patch(degree);
                     for (unsigned int k = 0; k < nodes.size(); ++k)
                       {
@@ -480,7 +487,7 @@ namespace cosmo
                         vtu.set_position(k, Point<3>(XY[0], XY[1], 0)); // reference + displacement
                       }
                     vtu.end_patch();
-                  }
+                  });
             }
       vtu.set_time(load_parameter);
       vtu.write(file);
