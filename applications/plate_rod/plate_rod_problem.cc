@@ -906,10 +906,13 @@ namespace cosmo
           if (!located_events[k].mode.empty())
             {
               Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
-              const auto     c = classify_mode(mode);
+              ModeMargins    margins;
+              const auto     c = classify_mode(mode, &margins);
               x["mode_number"]  = c.first;
               x["mode_type"]    = c.second ? "out of plane" : "planar";
               x["mode_type_out_of_plane"] = c.second ? 1 : 0;
+              x["mode_type_margin"]   = margins.type;
+              x["mode_number_margin"] = margins.number;
               x["mode_vtu"]     = "event-" + tag + "-mode.vtu";
               x["eigenvalue"]   = e.eigenvalue;
             }

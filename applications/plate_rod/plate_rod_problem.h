@@ -210,10 +210,20 @@ namespace cosmo
       /// Number of rim Fourier modes reported (m = k sector_step(), k = 0 .. n_modes - 1).
       static constexpr unsigned int n_modes = 9;
 
+      /// How clear a classification is: the smaller over the larger of the
+      /// two type measures (half the range of w, the largest in-plane
+      /// displacement) and of the two largest rim Fourier amplitudes; near 1
+      /// the mode is a mix (e.g. of a near-double eigenvalue) and its type or
+      /// number can flip under round-off.
+      struct ModeMargins
+      {
+        double type   = 0;
+        double number = 0;
+      };
       /// Mode type and number of a perturbation: dominant rim Fourier number and whether the
-      /// out-of-plane part dominates.
+      /// out-of-plane part dominates (and, if asked, how clearly).
       std::pair<unsigned int, bool>
-      classify_mode(const Vector<double> &mode) const;
+      classify_mode(const Vector<double> &mode, ModeMargins *margins = nullptr) const;
       /// The study's mode columns (critical_point_study.h): mode_number, mode_out_of_plane.
       std::vector<double>
       classify_critical_mode(const Vector<double> &mode) const;

@@ -119,7 +119,7 @@ namespace cosmo
     }
 
     std::pair<unsigned int, bool>
-    PlateRodProblem::classify_mode(const Vector<double> &mode) const
+    PlateRodProblem::classify_mode(const Vector<double> &mode, ModeMargins *margins) const
     {
       // Mode numbers up to what the rim resolves: one per rim face over the full circle
       // (beyond, the Fourier amplitudes of the sampled rim alias).
@@ -138,6 +138,16 @@ namespace cosmo
       for (unsigned int j = 1; j < a.size(); ++j)
         if (a[j] > a[k])
           k = j;
+      if (margins)
+        {
+          const double w = 0.5 * s.max_abs_w, p = s.max_abs_inplane;
+          margins->type  = std::max(w, p) > 0 ? std::min(w, p) / std::max(w, p) : 0.;
+          double second  = 0;
+          for (unsigned int j = 0; j < a.size(); ++j)
+            if (j != k)
+              second = std::max(second, a[j]);
+          margins->number = a[k] > 0 ? second / a[k] : 0.;
+        }
       return {k * sector_step(), out};
     }
 
