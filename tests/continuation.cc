@@ -547,6 +547,10 @@ namespace
         for (unsigned int i = 0; i < n; ++i)
           n_found += found[i];
         check("bordered ordering: the two border rows found, no other", n_found == 2 && found[n_block] && found[n_block + 1]);
+        // the ordering exists (METIS is in the build), or the comparison below would be QAMD with itself
+        const auto position = solvers::border_last_ordering(sp);
+        check("bordered ordering: METIS's order, the border last",
+              position.size() == n && position[n_block] > int(n_block) && position[n_block + 1] > int(n_block));
         Vector<double> b(n);
         for (unsigned int i = 0; i < n; ++i)
           b[i] = std::cos(0.3 * i);
