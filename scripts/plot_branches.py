@@ -29,7 +29,10 @@ RESULTANTS = plot_steps.RESULTANTS
 
 
 def plot_run(plt, run_dir):
-    columns, _ = plot_steps.read_steps(os.path.join(run_dir, "steps.csv"))
+    columns, units = plot_steps.read_steps(os.path.join(run_dir, "steps.csv"))
+
+    def label(name):  # symbol with its unit, e.g. "$m_3$ [E w h L]"
+        return plot_steps.symbol(name) + (" [%s]" % units[name] if units.get(name) else "")
     if "branch" not in columns or not columns.get("t"):
         return None
     try:
@@ -82,14 +85,14 @@ def plot_run(plt, run_dir):
                 ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
     for k, (ax, name) in enumerate(zip(axes, (resultant, order))):
         if target is None:
-            ax.set_xlabel("load parameter t (%s prescribed)" % driven)
+            ax.set_xlabel("load parameter t (%s prescribed)" % plot_steps.symbol(driven))
         elif k == 0:
-            ax.set_xlabel("%s (free; %s held, dots: events)" % (driven, resultant))
+            ax.set_xlabel("%s (free; %s held; dots: events)" % (label(driven), plot_steps.symbol(resultant)))
         else:
-            ax.set_xlabel("load parameter t (%s held at t x %.4g)" % (resultant, target))
-        ax.set_ylabel(name)
+            ax.set_xlabel("load parameter t (%s held at t x %.4g)" % (plot_steps.symbol(resultant), target))
+        ax.set_ylabel(label(name))
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=9)
     n_events = len(summary.get("events", []))
     fig.suptitle("%s: %d branch(es), %d event(s); solid stable, dashed unstable"
                  % (os.path.basename(os.path.normpath(run_dir)), len(branches), n_events),
