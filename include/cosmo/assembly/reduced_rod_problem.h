@@ -367,6 +367,9 @@ namespace cosmo
       /// (condensed_state() reuses that factorization when asked at it).
       Vector<double> factorized_at;
       double         factorized_load = 0;
+      /// Whether the factorization in place is that of U at the current load.
+      bool
+      factorized_here(const Vector<double> &U) const;
       /// The next condensed_state() takes the last factorization as that of
       /// its state: a continued critical point, whose last Newton iterate
       /// differs from the located point by an update below the located
