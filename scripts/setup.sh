@@ -14,7 +14,7 @@ log() { echo "[cosmo] $*"; }
 
 # libopenblas0-pthread: MUMPS on Debian's reference BLAS factorizes ~2.5x
 # slower (measured, benchmarks/README.md); OpenBLAS takes over libblas.so.3.
-PACKAGES=(libdeal.ii-dev numdiff gmsh python3-matplotlib python3-numpy python3-scipy python3-sympy python3-h5py paraview python3-paraview xvfb xauth cmake g++ make ccache libopenblas0-pthread libmetis-dev)
+PACKAGES=(libdeal.ii-dev numdiff gmsh python3-matplotlib python3-numpy python3-scipy python3-sympy python3-h5py paraview python3-paraview xvfb xauth cmake g++ make ccache libopenblas0-pthread libmetis-dev openmpi-bin)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do

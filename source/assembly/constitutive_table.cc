@@ -4,6 +4,7 @@
 #include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/solvers/newton.h>
@@ -12,6 +13,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <numeric>
 #include <chrono>
 #include <filesystem>
 #include <sstream>
@@ -42,51 +44,114 @@ namespace cosmo
        * the strain axes as HDF5 dimension scales (h5py: dataset.dims), the
        * run's description as file attributes.
        */
+      /// The HDF5 coordinates (i, j, a, b, ...) of the entries of `points` (p = i n2 + j) in a
+      /// dataset [n1, n2, trailing...], in row-major order, and their values from `all`.
+      struct Selection
+      {
+        std::vector<hsize_t> coordinates;
+        std::vector<double>  values;
+      };
+      Selection
+      select(const std::vector<unsigned int> &points, const unsigned int n2,
+             const std::vector<hsize_t> &trailing, const std::vector<double> &all)
+      {
+        hsize_t per_point = 1;
+        for (const auto t : trailing)
+          per_point *= t;
+        Selection s;
+        for (const unsigned int p : points)
+          for (hsize_t c = 0; c < per_point; ++c)
+            {
+              s.coordinates.push_back(p / n2);
+              s.coordinates.push_back(p % n2);
+              hsize_t rest = c;
+              std::vector<hsize_t> tail(trailing.size());
+              for (int d = int(trailing.size()) - 1; d >= 0; --d)
+                {
+                  tail[d] = rest % trailing[d];
+                  rest /= trailing[d];
+                }
+              s.coordinates.insert(s.coordinates.end(), tail.begin(), tail.end());
+              s.values.push_back(all[per_point * p + c]);
+            }
+        return s;
+      }
+
+      /**
+       * table.h5, written by all ranks together (each its own points, a
+       * collective MPI-IO write; one rank alone without mpirun): the
+       * datasets with their units and meaning as attributes, the strain
+       * axes as HDF5 dimension scales (h5py: dataset.dims), the run's
+       * description as file attributes. `points`: the grid points (i n2 +
+       * j) this rank holds in energy, resultants, stiffness and converged.
+       */
       void
-      write_table_h5(const std::string &         file_name,
-                     const TableDescription &    d,
-                     const unsigned int          first,
-                     const unsigned int          second,
-                     const double                a1,
-                     const double                h1,
-                     const unsigned int          n1,
-                     const double                a2,
-                     const double                h2,
-                     const unsigned int          n2,
-                     const std::vector<double> & energy,
-                     const std::vector<double> & resultants,
-                     const std::vector<double> & stiffness,
-                     const std::vector<double> & converged)
+      write_table_h5(const std::string &              file_name,
+                     const TableDescription &         d,
+                     const unsigned int               first,
+                     const unsigned int               second,
+                     const double                     a1,
+                     const double                     h1,
+                     const unsigned int               n1,
+                     const double                     a2,
+                     const double                     h2,
+                     const unsigned int               n2,
+                     const std::vector<unsigned int> &points,
+                     const std::vector<double> &      energy,
+                     const std::vector<double> &      resultants,
+                     const std::vector<double> &      stiffness,
+                     const std::vector<double> &      converged)
       {
         const auto &names  = kinematics::strain_names;
         const auto &rnames = kinematics::resultant_names;
         {
-          HDF5::File          file(file_name, HDF5::File::FileAccessMode::create);
+          HDF5::File          file(file_name, HDF5::File::FileAccessMode::create, MPI_COMM_WORLD);
           std::vector<double> s1(n1), s2(n2);
           for (unsigned int i = 0; i < n1; ++i)
             s1[i] = a1 + h1 * i;
           for (unsigned int j = 0; j < n2; ++j)
             s2[j] = a2 + h2 * j;
-          auto write = [&](const std::string &name, const std::vector<hsize_t> &dims,
+          // The axes: the same values from every rank, written by rank 0.
+          auto write_axis = [&](const std::string &name, const std::vector<double> &data,
+                                const std::string &units, const std::string &what) {
+            auto ds = file.create_dataset<double>(name, {data.size()});
+            if (io::ranks::rank() == 0)
+              {
+                std::vector<hsize_t> c(data.size());
+                std::iota(c.begin(), c.end(), hsize_t(0));
+                ds.write_selection(data, c);
+              }
+            else
+              ds.write_none<double>();
+            ds.set_attribute("units", units);
+            ds.set_attribute("description", what);
+          };
+          auto write = [&](const std::string &name, const std::vector<hsize_t> &trailing,
                            const std::vector<double> &data, const std::string &units,
                            const std::string &what) {
-            auto ds = file.create_dataset<double>(name, dims);
-            ds.write(data);
+            std::vector<hsize_t> dims = {n1, n2};
+            dims.insert(dims.end(), trailing.begin(), trailing.end());
+            auto       ds  = file.create_dataset<double>(name, dims);
+            const auto sel = select(points, n2, trailing, data);
+            if (sel.values.empty())
+              ds.write_none<double>();
+            else
+              ds.write_selection(sel.values, sel.coordinates);
             ds.set_attribute("units", units);
             ds.set_attribute("description", what);
             return ds;
           };
-          write("strain_1", {n1}, s1, unit_of_strain(first, d),
-                "the first grid axis: values of the strain " + names[first]);
-          write("strain_2", {n2}, s2, unit_of_strain(second, d),
-                "the second grid axis: values of the strain " + names[second]);
-          write("energy", {n1, n2}, energy, d.energy_unit + " (per unit reference length)",
+          write_axis("strain_1", s1, unit_of_strain(first, d),
+                     "the first grid axis: values of the strain " + names[first]);
+          write_axis("strain_2", s2, unit_of_strain(second, d),
+                     "the second grid axis: values of the strain " + names[second]);
+          write("energy", {}, energy, d.energy_unit + " (per unit reference length)",
                 "energy per unit reference length Psi at (strain_1[i], strain_2[j]); NaN where not converged");
-          auto r = write("resultants", {n1, n2, 6}, resultants,
+          auto r = write("resultants", {6}, resultants,
                          d.force_unit + " (n1, n2, n3), " + d.moment_unit + " (m1, m2, m3)",
                          "resultants dPsi/d(strains) at (i, j), component k of `components`; NaN where not converged");
           r.set_attribute("components", joined({rnames.begin(), rnames.end()}));
-          auto K = write("stiffness", {n1, n2, 6, 6}, stiffness,
+          auto K = write("stiffness", {6, 6}, stiffness,
                          "unit of resultant a per unit of strain b",
                          "tangent stiffness K[i, j, a, b] = d(resultant a)/d(strain b), the "
                          "section's 6x6 with its field condensed and all six strains as variables "
@@ -94,15 +159,21 @@ namespace cosmo
                          "condense them: K_pp - K_pf K_ff^-1 K_fp); NaN where not converged");
           K.set_attribute("rows", joined({rnames.begin(), rnames.end()}));
           K.set_attribute("columns", joined({names.begin(), names.end()}));
-          std::vector<int> mask(converged.size());
-          for (unsigned int p = 0; p < mask.size(); ++p)
-            mask[p] = converged[p] != 0;
-          auto c = file.create_dataset<int>("converged", {n1, n2});
-          c.write(mask);
-          c.set_attribute("units", std::string("1"));
-          c.set_attribute("description",
-                          std::string("boolean mask: 1 where the point converged, 0 where it did not "
-                                      "(its other entries are NaN)"));
+          {
+            const auto       sel = select(points, n2, {}, converged);
+            std::vector<int> mask(sel.values.size());
+            for (unsigned int p = 0; p < mask.size(); ++p)
+              mask[p] = sel.values[p] != 0;
+            auto c = file.create_dataset<int>("converged", {n1, n2});
+            if (mask.empty())
+              c.write_none<int>();
+            else
+              c.write_selection(mask, sel.coordinates);
+            c.set_attribute("units", std::string("1"));
+            c.set_attribute("description",
+                            std::string("boolean mask: 1 where the point converged, 0 where it did not "
+                                        "(its other entries are NaN)"));
+          }
 
           file.set_attribute("application", d.application);
           file.set_attribute("version", d.version);
@@ -131,6 +202,10 @@ namespace cosmo
           file.set_attribute("length_unit", d.length_unit);
           file.set_attribute("parameters", d.parameters);
         }
+        // Closed by every rank; the dimension scales are rank 0's.
+        io::ranks::barrier();
+        if (io::ranks::rank() != 0)
+          return;
         // Dimension scales (HDF5 high-level API): energy, resultants, stiffness
         // and converged are indexed by (strain_1, strain_2, component...).
         const hid_t f = H5Fopen(file_name.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
@@ -272,15 +347,21 @@ namespace cosmo
         for (unsigned int b = a; b < 6; ++b)
           table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
 
+      // Under mpirun each rank takes a contiguous block of the serpentine
+      // (io/ranks.h) and continues from its own converged neighbour; rank
+      // k > 0 reaches its first point from the start in substeps.
+      const unsigned int n_ranks              = io::ranks::size();
+      const auto [block_begin, block_end]     = io::ranks::my_block(N);
       std::array<double, 6> last = start;
       save();
       unsigned int          n_failed = 0;
-      // Points are taken in serpentine order; `next` of them are done.
-      unsigned int next = 0;
+      // Points are taken in serpentine order; this rank's are done up to `next`.
+      unsigned int next = block_begin;
       auto write_checkpoint = [&]() {
         if (!checkpointing.write)
           return;
         io::CheckpointWriter w;
+        w.put(n_ranks);
         w.put(next);
         w.put(n_failed);
         w.put_vector(last);
@@ -295,6 +376,12 @@ namespace cosmo
       if (checkpointing.resume)
         {
           io::CheckpointReader &r = *checkpointing.resume;
+          const unsigned int    ranks_then = r.get_unsigned();
+          if (ranks_then != n_ranks)
+            throw io::InputError("--resume", "number of MPI ranks", std::to_string(n_ranks),
+                                 "the " + std::to_string(ranks_then) +
+                                   " ranks the table was begun with (its points are "
+                                   "divided among them)");
           next                    = r.get_unsigned();
           n_failed                = r.get_unsigned();
           const auto l            = r.get_vector();
@@ -306,13 +393,18 @@ namespace cosmo
           table.load(r);
           checkpointing.load_start(r);
           save();
-          if (energy.size() != N || next > N)
+          if (energy.size() != N || next > block_end || next < block_begin)
             throw std::runtime_error("the checkpoint's table has another size");
-          progress("  going on after " + std::to_string(next) + " of " + std::to_string(N) +
-                   " table points");
+          progress("  going on after " + std::to_string(next - block_begin) + " of " +
+                   std::to_string(block_end - block_begin) + " table points");
         }
+      if (n_ranks > 1)
+        progress("  table points " + std::to_string(block_begin + 1) + " to " +
+                 std::to_string(block_end) + " of " + std::to_string(N) + " on rank " +
+                 std::to_string(io::ranks::rank()) + " of " +
+                 std::to_string(n_ranks));
       auto last_checkpoint = std::chrono::steady_clock::now();
-      for (; next < N; ++next)
+      for (; next < block_end; ++next)
           {
             const unsigned int i = next / n2, jj = next % n2;
             const unsigned int    j = (i % 2 == 0) ? jj : n2 - 1 - jj; // serpentine
@@ -329,7 +421,13 @@ namespace cosmo
             e[second]               = value(from2, to2, n2, j);
             ReducedRodState s;
             bool            ok = false;
-            for (const unsigned int substeps : {1u, 4u, 16u})
+            // A block's first point away from the start: its path is
+            // longer than one grid step, so more substeps may be needed.
+            const std::vector<unsigned int> attempts =
+              next == block_begin && block_begin > 0 && table.row_values().empty() ?
+                std::vector<unsigned int>{1u, 4u, 16u, 64u, 256u} :
+                std::vector<unsigned int>{1u, 4u, 16u};
+            for (const unsigned int substeps : attempts)
               {
                 restore(); // from the last converged point
                 try
@@ -384,19 +482,44 @@ namespace cosmo
                 last_checkpoint = std::chrono::steady_clock::now();
               }
           }
-      table.write(directory + "/table.csv");
+      // Rank 0 writes the rows of all ranks (in rank order: the serpentine's).
+      const auto all_rows = io::ranks::gather_rows(table.row_values());
+      if (n_ranks > 1 && io::ranks::rank() == 0)
+        {
+          io::CSVTable whole = table;
+          whole.clear_rows();
+          for (const auto &row : all_rows)
+            whole.add_row(row);
+          whole.write(io::ranks::shared_directory() + "/table.csv");
+        }
+      else
+        table.write(directory + "/table.csv");
+      n_failed = io::ranks::sum(n_failed);
 
       // HDF5, written under a temporary name and renamed: complete or absent.
-      const std::string tmp = directory + "/table.h5.tmp", h5 = directory + "/table.h5";
+      const std::string shared = n_ranks > 1 ? io::ranks::shared_directory() : directory;
+      const std::string tmp = shared + "/table.h5.tmp", h5 = shared + "/table.h5";
+      std::vector<unsigned int> mine;
+      for (unsigned int q = block_begin; q < block_end; ++q)
+        {
+          const unsigned int i = q / n2, jj = q % n2;
+          mine.push_back(i * n2 + ((i % 2 == 0) ? jj : n2 - 1 - jj));
+        }
       write_table_h5(tmp, description, first, second, value(from1, to1, n1, 0), n1 > 1 ? value(from1, to1, n1, 1) - value(from1, to1, n1, 0) : 0.,
                      n1, value(from2, to2, n2, 0), n2 > 1 ? value(from2, to2, n2, 1) - value(from2, to2, n2, 0) : 0., n2,
-                     energy, resultants, stiffness, converged);
-      std::filesystem::rename(tmp, h5);
-      io::record_output_file(h5);
+                     mine, energy, resultants, stiffness, converged);
+      if (io::ranks::rank() == 0)
+        {
+          std::filesystem::rename(tmp, h5);
+          io::record_output_file(h5);
+        }
       std::ostringstream m;
       m << "constitutive table: " << n1 << " x " << n2 << " points of ("
         << kinematics::strain_names[first] << ", " << kinematics::strain_names[second] << "), "
-        << n_failed << " not converged; " << directory << "/table.csv, table.h5";
+        << n_failed << " not converged";
+      if (n_ranks > 1)
+        m << ", on " << n_ranks << " MPI ranks";
+      m << "; " << shared << "/table.csv, table.h5";
       progress(m.str());
       if (n_failed > 0)
         throw io::RunFailure(std::to_string(n_failed) + " table points did not converge");

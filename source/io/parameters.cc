@@ -4,6 +4,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 
 #include <filesystem>
@@ -208,14 +209,26 @@ namespace cosmo
                     const std::function<void(ParameterHandler &)> &           declare,
                     const std::function<void(ParameterHandler &, const RunOptions &)> &run)
     {
-      // MPI is initialised for HDF5/pvtu output and MUMPS; one process, one
-      // thread per core for the assembly.
+      // MPI is initialised for HDF5/pvtu output and MUMPS, and for the ranks
+      // of mpirun (io/ranks.h); the node's cores are divided among the
+      // ranks' assembly threads.
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
       // Errors below are reported by us, not by deal.II's abort-on-exception.
       deal_II_exceptions::disable_abort_on_exception();
       // SIGINT/SIGTERM end the run between steps, with its files complete.
       install_signal_handlers();
 
+      // A run that ends in an error under mpirun ends every rank: the others
+      // may wait in a gather the failed one never reaches (a signal or an
+      // error on one rank only), where MPI_Finalize would wait for ever.
+      auto ended = [](const int status) {
+        if (ranks::size() > 1)
+          {
+            std::cerr.flush();
+            MPI_Abort(MPI_COMM_WORLD, status);
+          }
+        return status;
+      };
       std::vector<std::string> args(argv + 1, argv + argc);
       RunOptions               options;
       try
@@ -318,7 +331,22 @@ namespace cosmo
               prm.set("Output directory", options.resume_directory);
               prm.leave_subsection();
             }
+          // Under mpirun, rank k > 0 runs in its own directory (io/ranks.h):
+          // only rank 0 speaks and writes the run's result set.
+          prm.enter_subsection("Output");
+          const std::string shared = prm.get("Output directory");
+          prm.set("Output directory", ranks::enter_run(shared));
+          prm.leave_subsection();
+          if (ranks::rank() > 0)
+            options.quiet = true;
+          ranks::share_cores();
           run(prm, options);
+          if (ranks::rank() > 0)
+            {
+              // Its results are in rank 0's files now; nothing to resume.
+              std::error_code ec;
+              std::filesystem::remove_all(ranks::private_directory(shared, ranks::rank()), ec);
+            }
           return 0;
         }
       catch (InputError &e)
@@ -327,7 +355,7 @@ namespace cosmo
           roll_back_unused_run_directories();
           std::cerr << "\n" << info.name << ": bad input in '" << options.parameter_file
                     << "' " << e.what() << "\n";
-          return 1;
+          return ended(1);
         }
       catch (Interrupted &e)
         {
@@ -335,30 +363,30 @@ namespace cosmo
                     << info.name << ": " << e.what()
                     << "; the files written so far are complete and summary.json (if the run "
                        "writes one) says \"interrupted\".\n";
-          return e.exit_status();
+          return ended(e.exit_status());
         }
       catch (RunFailure &e)
         {
           std::cerr << "\n" << info.name << ": the run could not proceed: " << e.what()
                     << "\nEverything written so far is kept.\n";
-          return 2;
+          return ended(2);
         }
       catch (std::runtime_error &e)
         {
           std::cerr << "\n" << info.name << ": " << e.what() << "\n";
-          return 1;
+          return ended(1);
         }
       catch (ExceptionBase &e)
         {
           std::ostringstream s;
           e.print_info(s);
           std::cerr << "\n" << info.name << ": error: " << s.str() << "\n";
-          return 1;
+          return ended(1);
         }
       catch (std::exception &e)
         {
           std::cerr << "\n" << info.name << ": error: " << e.what() << "\n";
-          return 1;
+          return ended(1);
         }
     }
   } // namespace io

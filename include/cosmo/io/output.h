@@ -44,6 +44,18 @@ namespace cosmo
       {
         return columns.size();
       }
+      /// The rows so far, in order (what the ranks of a run gather).
+      const std::vector<std::vector<double>> &
+      row_values() const
+      {
+        return rows;
+      }
+      /// The same columns, no rows.
+      void
+      clear_rows()
+      {
+        rows.clear();
+      }
       /// The rows, for a checkpoint (the columns are declared again by the run).
       void
       save(CheckpointWriter &w) const;

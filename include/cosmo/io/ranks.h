@@ -1,0 +1,97 @@
+#ifndef cosmo_io_ranks_h
+#define cosmo_io_ranks_h
+
+#include <string>
+#include <utility>
+#include <vector>
+
+/**
+ * The MPI ranks of a run (`mpirun -np N app file.prm`, doc/parallel-runs.md).
+ *
+ * What is spread over the ranks are the points of what consists of many
+ * independent or loosely coupled solves: a constitutive table (contiguous
+ * blocks of its serpentine, each rank continuing from its own converged
+ * neighbour) and a parameter study (contiguous blocks of its values). Every
+ * rank runs the application from the start (the mesh, the base state) and
+ * takes its block; rank 0 gathers the results and writes the one result
+ * set of the run in the output directory.
+ *
+ * So that no two ranks write the same file, rank k > 0 runs in its own
+ * directory, `<output directory>/rank-k` (its log.txt, its checkpoint, the
+ * base state's files it repeats); a run that ends (converged or failed)
+ * removes it. What the ranks write together (a study's point directories,
+ * the collective table.h5) is named from shared_directory().
+ *
+ * With one process (no mpirun) everything here is the identity: rank 0 of
+ * 1, the run as before.
+ */
+namespace cosmo
+{
+  namespace io
+  {
+    namespace ranks
+    {
+      /// This process' rank in MPI_COMM_WORLD, and their number (0 and 1 without MPI).
+      unsigned int
+      rank();
+      unsigned int
+      size();
+
+      /**
+       * The contiguous block [first, second) of `n` items that rank `r` of
+       * `p` takes: the first n % p ranks one more than the others, in order.
+       */
+      std::pair<unsigned int, unsigned int>
+      block(unsigned int n, unsigned int r, unsigned int p);
+
+      /// block() for this rank.
+      inline std::pair<unsigned int, unsigned int>
+      my_block(const unsigned int n)
+      {
+        return block(n, rank(), size());
+      }
+
+      /// Where rank k > 0 of a run into `directory` writes: `directory`/rank-k.
+      std::string
+      private_directory(const std::string &directory, unsigned int k);
+
+      /**
+       * Called by run_application before the run: remember `directory` (the
+       * output directory of the parameter file) as the shared one and return
+       * the directory this rank runs in (`directory` on rank 0).
+       */
+      std::string
+      enter_run(const std::string &directory);
+
+      /// The run's output directory as the parameter file names it (rank 0's).
+      const std::string &
+      shared_directory();
+
+      /// Rank 0 holds every rank's rows, in rank order (others: an empty list).
+      std::vector<std::vector<double>>
+      gather_rows(const std::vector<std::vector<double>> &mine);
+
+      /// Rank 0 holds every rank's lines, in rank order (others: an empty list).
+      std::vector<std::string>
+      gather_lines(const std::vector<std::string> &mine);
+
+      /// The sum over the ranks, on every rank.
+      unsigned int
+      sum(unsigned int mine);
+
+      /// Wait for every rank.
+      void
+      barrier();
+
+      /**
+       * One BLAS thread per rank when the ranks share the node's cores
+       * (OPENBLAS_NUM_THREADS, if set, is kept): the assembly's threads
+       * are divided among the ranks by deal.II already.
+       */
+      void
+      share_cores();
+    } // namespace ranks
+  }   // namespace io
+} // namespace cosmo
+
+#endif
