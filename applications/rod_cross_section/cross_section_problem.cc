@@ -13,6 +13,7 @@
 #include <cosmo/io/resources.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/kinematics/section.h>
 
 #include "cross_section_problem.h"
@@ -862,6 +863,12 @@ namespace cosmo
       auto &     log      = *log_file;
       log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
           ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
+      // Under mpirun each rank runs a contiguous block of the values
+      // (io/ranks.h), after rank 0 has taken the run's directory.
+      const unsigned int n_ranks          = io::ranks::size();
+      const auto [block_begin, block_end] = io::ranks::my_block(sweep.size());
+      const std::string shared            = n_ranks > 1 ? io::ranks::shared_directory() : base;
+      io::ranks::barrier();
 
       io::CSVTable table;
       table.add_column("point");
@@ -881,9 +888,14 @@ namespace cosmo
 
       unsigned int             n_failed = 0;
       std::vector<std::string> rejected;
-      unsigned int             k0 = 0;
+      unsigned int             k0 = block_begin;
       if (resume)
         {
+          if (const unsigned int then = resumed.get_unsigned(); then != n_ranks)
+            throw io::InputError("--resume", "number of MPI ranks", std::to_string(n_ranks),
+                                 "the " + std::to_string(then) +
+                                   " ranks the sweep was begun with (its values are divided "
+                                   "among them)");
           k0       = resumed.get_unsigned();
           n_failed = resumed.get_unsigned();
           rejected = resumed.get_strings();
@@ -892,7 +904,8 @@ namespace cosmo
           log("  resumed from the checkpoint: " + std::to_string(k0) + " of " +
               std::to_string(sweep.size()) + " values done");
         }
-      for (unsigned int k = k0; k < sweep.size(); ++k)
+      std::vector<std::string> point_lines; // this rank's, for rank 0's log
+      for (unsigned int k = k0; k < block_end; ++k)
         {
           auto interrupted = [&]() {
             log("interrupted; continue with: rod_cross_section --resume " + base);
@@ -900,7 +913,7 @@ namespace cosmo
           if (io::pending_signal() != 0)
             interrupted();
           io::check_interrupt(); // between points: sweep.csv holds every point done so far
-          sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(base, k));
+          sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(shared, k));
           io::RunOptions point_options = options;
           point_options.quiet          = true; // the point's log.txt has the details
           point_options.resume_directory.clear(); // a point is run whole again
@@ -953,10 +966,12 @@ namespace cosmo
               line << "  REJECTED: " << e.what();
             }
           log(line.str());
+          point_lines.push_back(line.str());
           // Rewritten after every point: a killed sweep leaves a complete table.
           table.add_row(row);
           table.write(base + "/sweep.csv");
           io::CheckpointWriter w;
+          w.put(n_ranks);
           w.put(k + 1);
           w.put(n_failed);
           w.put(rejected);
@@ -964,7 +979,25 @@ namespace cosmo
           io::write_checkpoint(base, "rod_cross_section sweep", parameters, w);
         }
       io::remove_checkpoint(base);
-      log("sweep table: " + base + "/sweep.csv");
+      if (n_ranks > 1)
+        {
+          // Rank 0 writes every rank's rows (in rank order: the values').
+          const auto rows  = io::ranks::gather_rows(table.row_values());
+          const auto lines = io::ranks::gather_lines(point_lines);
+          n_failed         = io::ranks::sum(n_failed);
+          rejected         = io::ranks::all_gather_lines(rejected);
+          if (io::ranks::rank() == 0)
+            {
+              log("the " + std::to_string(n_ranks) + " ranks' values:");
+              for (const auto &l : lines)
+                log(l);
+              table.clear_rows();
+              for (const auto &r : rows)
+                table.add_row(r);
+              table.write(shared + "/sweep.csv");
+            }
+        }
+      log("sweep table: " + shared + "/sweep.csv");
       if (!rejected.empty())
         {
           std::string values;

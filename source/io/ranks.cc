@@ -89,6 +89,17 @@ namespace cosmo
         return all;
       }
 
+      std::vector<std::string>
+      all_gather_lines(const std::vector<std::string> &mine)
+      {
+        if (size() == 1)
+          return mine;
+        std::vector<std::string> all;
+        for (auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, mine))
+          all.insert(all.end(), part.begin(), part.end());
+        return all;
+      }
+
       unsigned int
       sum(const unsigned int mine)
       {

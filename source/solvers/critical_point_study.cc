@@ -2,6 +2,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/output.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/critical_curve.h>
 #include <cosmo/io/checkpoint.h>
@@ -146,6 +147,13 @@ namespace cosmo
         io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt", resume);
       auto &     log      = *log_file;
       const bool curve    = sweep.critical_curve();
+      // Under mpirun each rank takes a contiguous block of the values
+      // (io/ranks.h), their point directories in the run's directory, which
+      // rank 0 has taken (the previous run's files moved) before any starts.
+      const unsigned int n_ranks = io::ranks::size();
+      const auto [block_begin, block_end] = io::ranks::my_block(sweep.size());
+      const std::string shared = n_ranks > 1 ? io::ranks::shared_directory() : directory;
+      io::ranks::barrier();
       log(study.application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
           ", " + (curve ? "critical curve" : "study") + " of '" + sweep.entry() + "' over " +
           std::to_string(sweep.size()) + " values");
@@ -178,9 +186,15 @@ namespace cosmo
       quiet.resume_directory.clear(); // a point is run whole again
       std::string  refused;
       unsigned int n_without = 0; // points without a located critical point
-      unsigned int k0        = 0;
+      unsigned int k0        = block_begin;
       if (resume)
         {
+          const unsigned int ranks_then = resumed.get_unsigned();
+          if (ranks_then != n_ranks)
+            throw io::InputError("--resume", "number of MPI ranks", std::to_string(n_ranks),
+                                 "the " + std::to_string(ranks_then) +
+                                   " ranks the study was begun with (its values are divided "
+                                   "among them)");
           k0 = resumed.get_unsigned();
           table.load(resumed);
           predictor.load(resumed);
@@ -194,17 +208,22 @@ namespace cosmo
           table.write(directory + "/sweep.csv");
           if (curve)
             table.write(directory + "/critical_curve.csv");
-          log("  resumed from the checkpoint: " + std::to_string(k0) + " of " +
-              std::to_string(sweep.size()) + " values done");
+          log("  resumed from the checkpoint: " + std::to_string(k0 - block_begin) + " of " +
+              std::to_string(block_end - block_begin) + " values done");
         }
+      if (n_ranks > 1)
+        log("  values " + std::to_string(block_begin + 1) + " to " + std::to_string(block_end) +
+            " of " + std::to_string(sweep.size()) + " on rank " +
+            std::to_string(io::ranks::rank()) + " of " + std::to_string(n_ranks));
+      std::vector<std::string> point_lines; // this rank's, for rank 0's log
       try
         {
-        for (unsigned int k = k0; k < sweep.size(); ++k)
+        for (unsigned int k = k0; k < block_end; ++k)
           {
             // Between points: sweep.csv holds every point done so far.
             io::check_interrupt();
             const auto        start = std::chrono::steady_clock::now();
-            const std::string point = io::ParameterSweep::point_directory(directory, k);
+            const std::string point = io::ParameterSweep::point_directory(shared, k);
             double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,
                    continued = 0, mode_change = 0, codim2_value = NAN, codim2_t = NAN;
             std::vector<double> mode_class(n_mode, NAN), further(n_more, NAN);
@@ -358,8 +377,10 @@ namespace cosmo
             if (!failure.empty())
               line << "; " << failure;
             log(line.str());
+            point_lines.push_back(line.str());
             // Everything the next points depend on: a killed study goes on from here (--resume).
             io::CheckpointWriter w;
+            w.put(n_ranks);
             w.put(k + 1);
             table.save(w);
             predictor.save(w);
@@ -379,12 +400,72 @@ namespace cosmo
           throw;
         }
       io::remove_checkpoint(directory);
-      log("output in " + directory + "/");
+      if (n_ranks > 1)
+        {
+          // Rank 0: every rank's rows (in rank order: the values' order) and
+          // lines. The blocks' first points were run without a previous
+          // one: a change of the critical mode at a seam between blocks is
+          // found here (without a codimension-2 estimate).
+          const auto rows  = io::ranks::gather_rows(table.row_values());
+          const auto lines = io::ranks::gather_lines(point_lines);
+          n_without        = io::ranks::sum(n_without);
+          const auto all_refused = io::ranks::all_gather_lines({refused});
+          refused.clear();
+          for (const auto &r : all_refused)
+            if (!r.empty())
+              refused += std::string(refused.empty() ? "" : "; ") + r;
+          if (io::ranks::rank() == 0)
+            {
+              log("the " + std::to_string(n_ranks) + " ranks' values:");
+              for (const auto &l : lines)
+                log(l);
+              io::CSVTable whole = table;
+              whole.clear_rows();
+              const std::size_t mode0 = 4 + n_more, change = mode0 + n_mode + 4; // ..., mode columns, dofs, seconds, factorizations, continued, mode_change
+              std::vector<double> last_class;
+              for (unsigned int r = 0; r < rows.size(); ++r)
+                {
+                  auto row = rows[r];
+                  const std::vector<double> c(row.begin() + mode0, row.begin() + mode0 + n_mode);
+                  const bool classified =
+                    n_mode > 0 && std::any_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
+                  if (classified)
+                    {
+                      bool seam = false;
+                      for (unsigned int q = 1; q < n_ranks; ++q)
+                        seam |= r == io::ranks::block(sweep.size(), q, n_ranks).first;
+                      if (seam && !last_class.empty() &&
+                          !std::equal(c.begin(), c.end(), last_class.begin(), last_class.end(),
+                                      [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); }))
+                        {
+                          row[change] = 1;
+                          std::ostringstream m;
+                          m << std::setprecision(6) << "  the critical mode changes from "
+                            << study.describe_mode(last_class) << " to " << study.describe_mode(c)
+                            << " between " << sweep.label() << " = " << sweep.value(r - 1)
+                            << " and " << sweep.value(r)
+                            << "; no codimension-2 estimate (the values are on different ranks)";
+                          log(m.str());
+                        }
+                      last_class = c;
+                    }
+                  whole.add_row(row);
+                }
+              whole.write(shared + "/sweep.csv");
+              if (curve)
+                whole.write(shared + "/critical_curve.csv");
+            }
+          else
+            {
+              log("the values of this rank are in " + shared + "/sweep.csv");
+            }
+        }
+      log("output in " + shared + "/");
       if (!refused.empty())
         throw io::InputError("Parameter sweep", "Values", sweep.entry(), refused);
       if (n_without > 0)
         throw io::RunFailure(std::to_string(n_without) + " of " + std::to_string(sweep.size()) +
-                             " values have no located critical point (see " + directory +
+                             " values have no located critical point (see " + shared +
                              "/sweep-log.txt)");
     }
   } // namespace solvers

@@ -75,6 +75,10 @@ namespace cosmo
       std::vector<std::string>
       gather_lines(const std::vector<std::string> &mine);
 
+      /// Every rank holds every rank's lines, in rank order.
+      std::vector<std::string>
+      all_gather_lines(const std::vector<std::string> &mine);
+
       /// The sum over the ranks, on every rank.
       unsigned int
       sum(unsigned int mine);

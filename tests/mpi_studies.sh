@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Parameter studies spread over 2 MPI ranks (mpirun -np 2, io/ranks.h)
+# against one process:
+#  - rod_cross_section's sweep curvature_vs_differential_growth: the points
+#    are independent runs, so sweep.csv is the one process's to 1e-12
+#    (tests/compare_runs.py; measured: bitwise);
+#  - plate_rod's critical curve critical_curve_mode_change_planar_lobes
+#    (6 values, blocks of 3): each block's first value is an independent
+#    run instead of a continued one, so the critical loads agree to the
+#    event location's resolution (the t_resolution column, ~1e-12; here
+#    10x it), the modes and the converged flags exactly, and the change of
+#    the critical mode (n = 16 to 14 between the 3rd and 4th value, on the
+#    seam between the ranks' blocks) is still found and flagged;
+# every point directory in the run's directory and no rank directory left.
+# usage: mpi_studies.sh <rod_cross_section> <plate_rod> <scratch dir>
+set -uo pipefail
+rod=$(realpath "$1") plate=$(realpath "$2") dir=$3
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+fail=0
+ok() { echo "  ok    $1"; }
+bad() { echo "  FAIL  $1"; fail=1; }
+as() { sed "s|^\( *set Output directory *=\).*|\1 $2|" "$here/../parameter_files/$1"; }
+as rod_cross_section/studies/curvature_vs_differential_growth.prm sweep_one > sweep_one.prm
+as rod_cross_section/studies/curvature_vs_differential_growth.prm sweep_two > sweep_two.prm
+as plate_rod/studies/critical_curve_mode_change_planar_lobes.prm curve_one > curve_one.prm
+as plate_rod/studies/critical_curve_mode_change_planar_lobes.prm curve_two > curve_two.prm
+timeout 600 "$rod" --quiet sweep_one.prm > sweep_one.txt 2>&1 || { bad "sweep, one process"; cat sweep_one.txt; }
+timeout 600 mpirun -np 2 "$rod" --quiet sweep_two.prm > sweep_two.txt 2>&1 || { bad "sweep, 2 ranks"; cat sweep_two.txt; }
+if /usr/bin/python3 "$here/compare_runs.py" sweep_one sweep_two sweep.csv; then
+  ok "rod_cross_section sweep on 2 ranks: sweep.csv of one process (1e-12)"
+else bad "rod_cross_section sweep on 2 ranks differs"; fi
+timeout 900 "$plate" --quiet curve_one.prm > curve_one.txt 2>&1 || { bad "curve, one process"; cat curve_one.txt; }
+timeout 900 mpirun -np 2 "$plate" --quiet curve_two.prm > curve_two.txt 2>&1 || { bad "curve, 2 ranks"; cat curve_two.txt; }
+/usr/bin/python3 - curve_one curve_two <<'PY' || fail=1
+import csv, math, sys
+a, b = [list(csv.DictReader(open(d + "/sweep.csv"))) for d in sys.argv[1:3]]
+key = lambda r, n: next(v for k, v in r.items() if k.split(" ")[0] == n)
+bad = []
+if len(a) != len(b) or len(a) != 6:
+    bad.append("%d against %d values" % (len(a), len(b)))
+worst = 0
+for ra, rb in zip(a, b):
+    for n in ("value", "converged", "mode_number", "mode_out_of_plane", "mode_change"):
+        if key(ra, n) != key(rb, n):
+            bad.append("%s: %s against %s at value %s" % (n, key(ra, n), key(rb, n), key(ra, "value")))
+    ta, tb = float(key(ra, "t_critical")), float(key(rb, "t_critical"))
+    res = max(float(key(ra, "t_resolution")), float(key(rb, "t_resolution")))
+    worst = max(worst, abs(ta - tb) / res)
+    if not abs(ta - tb) <= 10 * res:
+        bad.append("t_critical %r against %r (resolution %.2g)" % (ta, tb, res))
+changes = [key(r, "value") for r in b if key(r, "mode_change") == "1"]
+for m in bad:
+    print("  FAIL  " + m)
+if not bad:
+    print("  ok    critical curve on 2 ranks: the same modes, converged flags and mode change (at %s), "
+          "t_critical within %.2g of its resolution (tolerance 10)" % (changes, worst))
+sys.exit(1 if bad else 0)
+PY
+n=$(ls -d curve_two/point-0? 2>/dev/null | wc -l)
+if [ "$n" -eq 6 ] && [ ! -e curve_two/rank-1 ] && [ ! -e sweep_two/rank-1 ] && grep -q "on different ranks" curve_two/sweep-log.txt; then
+  ok "6 point directories in the run's directory, no rank directory left, the seam's mode change logged"
+else bad "point directories: $n; rank-1 left: $(ls -d */rank-1 2>/dev/null)"; fi
+exit $fail
