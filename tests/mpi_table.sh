@@ -43,22 +43,34 @@ else bad "mpirun -np 2: exit $s"; cat two_ranks.txt; fi
 /usr/bin/python3 "$here/compare_tables.py" one_thread two_threads two_ranks || fail=1
 
 # Interrupted under mpirun (SIGTERM to mpirun, which passes it to the
-# ranks), resumed by 2 ranks; refused with 1.
-table_of stopped 65 40 > stopped.prm
-table_of whole 65 40 > whole.prm
+# ranks) and resumed: on 2 ranks, the uninterrupted 2-rank table bitwise
+# (each rank goes on from its own checkpoint); on 1 rank and, begun on 1,
+# on 2 ranks, each point from the checkpoint of the rank that solved it or
+# solved from where an earlier rank stopped: the table of one process to
+# the tolerance above.
+table_of whole 49 40 > whole.prm
 mpi 2 "$exe" --quiet whole.prm > whole.txt 2>&1 || { bad "the uninterrupted 2-rank table failed"; cat whole.txt; }
-mpirun -np 2 "$exe" --quiet stopped.prm > stopped-0.txt 2>&1 & pid=$!
-for _ in $(seq 1 600); do
-  [ -f stopped/checkpoint.cosmo ] && [ -f stopped/rank-1/checkpoint.cosmo ] && break; sleep 0.1; done
-kill -TERM $pid; wait $pid 2>/dev/null; s1=$?
-rows=$(($(wc -l < stopped/table.csv) - 1))
-mpi 1 "$exe" --quiet --resume stopped > refused.txt 2>&1; s0=$?
-if [ $s0 -eq 1 ] && grep -q "number of MPI ranks" refused.txt && grep -q "2 ranks" refused.txt; then
-  ok "resuming a 2-rank table on 1 rank is refused (exit 1, the number of ranks named)"
-else bad "resume on 1 rank: exit $s0"; cat refused.txt; fi
-mpi 2 "$exe" --quiet --resume stopped > stopped-1.txt 2>&1; s2=$?
-if [ $s1 -ne 0 ] && [ $rows -ge 1 ] && [ $s2 -eq 0 ] && cmp -s whole/table.csv stopped/table.csv &&
-   [ -f stopped/table.h5 ] && [ ! -e stopped/checkpoint.cosmo ] && [ ! -e stopped/rank-1 ]; then
-  ok "a 2-rank table stopped by SIGTERM (exit $s1, $rows rows on rank 0) and resumed on 2 ranks: the uninterrupted table.csv"
-else bad "2-rank resume: exits $s1 $s2, $rows rows"; cat stopped-1.txt; diff whole/table.csv stopped/table.csv | head -4; fi
+for case in 2:2 2:1 1:2; do
+  from=${case%:*} to=${case#*:} d=stopped_$from-$to
+  table_of $d 49 40 > $d.prm
+  mpirun -np $from "$exe" --quiet $d.prm > $d-0.txt 2>&1 & pid=$!
+  for _ in $(seq 1 600); do
+    [ -f $d/checkpoint.cosmo ] && { [ $from = 1 ] || [ -f $d/rank-1/checkpoint.cosmo ]; } && break; sleep 0.1; done
+  kill -TERM $pid; wait $pid 2>/dev/null; s1=$?
+  rows=$(($(wc -l < $d/table.csv) - 1))
+  mpi $to "$exe" --quiet --resume $d > $d-1.txt 2>&1; s2=$?
+  if [ $s1 -ne 0 ] && [ $rows -ge 1 ] && [ $rows -lt 245 ] && [ $s2 -eq 0 ] && [ -f $d/table.h5 ] &&
+     [ ! -e $d/checkpoint.cosmo ] && [ ! -e $d/rank-1 ] && grep -q "going on\|resumed on" $d/log.txt; then
+    ok "a table on $from rank(s) stopped by SIGTERM (exit $s1, $rows rows on rank 0), resumed on $to: exit 0, no checkpoint or rank directory left"
+  else bad "$from-rank table resumed on $to: exits $s1 $s2, $rows rows"; cat $d-1.txt; fi
+  if [ $case = 2:2 ]; then
+    cmp -s whole/table.csv $d/table.csv && ok "  ... its table.csv is the uninterrupted one, bitwise" ||
+      { bad "  ... its table.csv differs from the uninterrupted one"; diff whole/table.csv $d/table.csv | head -4; }
+  else
+    # Against the uninterrupted 2-rank table: the round-off R between one
+    # and two threads of 49 x 5 points is not measured again; one's is.
+    /usr/bin/python3 "$here/compare_tables.py" one_thread two_threads one_thread --resumed > /dev/null
+    /usr/bin/python3 "$here/compare_tables.py" whole whole $d --resumed | grep -v "same datasets\|attributes\|dimension" || fail=1
+  fi
+done
 exit $fail

@@ -731,7 +731,7 @@ namespace cosmo
       driver.progress = [this](const std::string &s) { say(s); };
       if (write_output)
         {
-          if (record.resuming())
+          if (record.has_checkpoint())
             {
               driver.load(record.checkpoint());
               load_progress(record.checkpoint());
@@ -824,7 +824,7 @@ namespace cosmo
       record.attempt([&]() {
         if (critical_guess)
           return locate_from_guess();
-        if (record.resuming())
+        if (record.has_checkpoint())
           {
             follow_branches();
             return;

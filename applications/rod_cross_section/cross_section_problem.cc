@@ -783,7 +783,7 @@ namespace cosmo
         }
       // Checkpoints after every converged step; --resume goes on from the last.
       write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
-      if (record.resuming())
+      if (record.has_checkpoint())
         resume_from = &record.checkpoint();
       record.attempt([&]() { solve(); });
       if (!record.failed())

@@ -293,7 +293,7 @@ namespace cosmo
     StripProblem::connect_run_checkpoints()
     {
       write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
-      if (record.resuming())
+      if (record.has_checkpoint())
         resume_from = &record.checkpoint();
     }
 

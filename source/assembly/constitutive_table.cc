@@ -90,12 +90,8 @@ namespace cosmo
                      const TableDescription &         d,
                      const unsigned int               first,
                      const unsigned int               second,
-                     const double                     a1,
-                     const double                     h1,
-                     const unsigned int               n1,
-                     const double                     a2,
-                     const double                     h2,
-                     const unsigned int               n2,
+                     const std::vector<double> &      s1,
+                     const std::vector<double> &      s2,
                      const std::vector<unsigned int> &points,
                      const std::vector<double> &      energy,
                      const std::vector<double> &      resultants,
@@ -106,11 +102,7 @@ namespace cosmo
         const auto &rnames = kinematics::resultant_names;
         {
           HDF5::File          file(file_name, HDF5::File::FileAccessMode::create, MPI_COMM_WORLD);
-          std::vector<double> s1(n1), s2(n2);
-          for (unsigned int i = 0; i < n1; ++i)
-            s1[i] = a1 + h1 * i;
-          for (unsigned int j = 0; j < n2; ++j)
-            s2[j] = a2 + h2 * j;
+          const hsize_t       n1 = s1.size(), n2 = s2.size();
           // The axes: the same values from every rank, written by rank 0.
           auto write_axis = [&](const std::string &name, const std::vector<double> &data,
                                 const std::string &units, const std::string &what) {
@@ -210,14 +202,14 @@ namespace cosmo
         // and converged are indexed by (strain_1, strain_2, component...).
         const hid_t f = H5Fopen(file_name.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
         AssertThrow(f >= 0, ExcMessage("cannot reopen " + file_name));
-        const hid_t s1 = H5Dopen2(f, "strain_1", H5P_DEFAULT), s2 = H5Dopen2(f, "strain_2", H5P_DEFAULT);
-        H5DSset_scale(s1, names[first].c_str());
-        H5DSset_scale(s2, names[second].c_str());
+        const hid_t d1 = H5Dopen2(f, "strain_1", H5P_DEFAULT), d2 = H5Dopen2(f, "strain_2", H5P_DEFAULT);
+        H5DSset_scale(d1, names[first].c_str());
+        H5DSset_scale(d2, names[second].c_str());
         for (const char *name : {"energy", "resultants", "stiffness", "converged"})
           {
             const hid_t ds = H5Dopen2(f, name, H5P_DEFAULT);
-            H5DSattach_scale(ds, s1, 0);
-            H5DSattach_scale(ds, s2, 1);
+            H5DSattach_scale(ds, d1, 0);
+            H5DSattach_scale(ds, d2, 1);
             H5DSset_label(ds, 0, names[first].c_str());
             H5DSset_label(ds, 1, names[second].c_str());
             if (std::string(name) == "resultants")
@@ -229,8 +221,8 @@ namespace cosmo
               }
             H5Dclose(ds);
           }
-        H5Dclose(s1);
-        H5Dclose(s2);
+        H5Dclose(d1);
+        H5Dclose(d2);
         H5Fclose(f);
       }
     } // namespace
@@ -270,7 +262,14 @@ namespace cosmo
         r.get_vector(start);
         solution = start;
       };
-      if (record.resuming())
+      cp.set_start = [&](const std::vector<double> &v) {
+        start.reinit(v.size());
+        std::copy(v.begin(), v.end(), start.begin());
+        solution = start;
+      };
+      cp.read_in  = [&record](const std::string &d) { return record.read_checkpoint_in(d); };
+      cp.resuming = record.resuming();
+      if (record.has_checkpoint())
         cp.resume = &record.checkpoint();
       run(base, start_strains, resolve, [&]() { start = solution; }, [&]() { solution = start; },
           directory, record.reporter(), description, cp);
@@ -362,6 +361,7 @@ namespace cosmo
           return;
         io::CheckpointWriter w;
         w.put(n_ranks);
+        w.put(io::ranks::rank());
         w.put(next);
         w.put(n_failed);
         w.put_vector(last);
@@ -373,15 +373,54 @@ namespace cosmo
         checkpointing.save_start(w);
         checkpointing.write(w);
       };
+      // A point of an earlier run on another number of ranks, taken as it is.
+      struct Earlier
+      {
+        unsigned int          next = 0, begin = 0;
+        std::array<double, 6> last{};
+        std::vector<double>   start_state;
+        std::vector<std::vector<double>> rows;
+        std::vector<double>   energy, resultants, stiffness, converged;
+      };
+      std::vector<Earlier> earlier;
+      // The state of a point away from the last one solved here (a block's
+      // first point, or one after an earlier run's points): reached in
+      // substeps from the start, more of them than between neighbours.
+      bool far = block_begin > 0;
+      auto read_payload = [&](io::CheckpointReader &r, unsigned int &ranks_then) {
+        Earlier e;
+        ranks_then = r.get_unsigned();
+        const unsigned int rank_then = r.get_unsigned();
+        e.begin                      = io::ranks::block(N, rank_then, ranks_then).first;
+        e.next                       = r.get_unsigned();
+        r.get_unsigned(); // its failed points: counted again from its rows
+        const auto l = r.get_vector();
+        std::copy(l.begin(), l.end(), e.last.begin());
+        e.energy     = r.get_vector();
+        e.resultants = r.get_vector();
+        e.stiffness  = r.get_vector();
+        e.converged  = r.get_vector();
+        io::CSVTable t = table;
+        t.load(r);
+        e.rows        = t.row_values();
+        e.start_state = r.get_vector();
+        if (e.energy.size() != N || e.next > N || e.rows.size() != e.next - e.begin)
+          throw std::runtime_error("the checkpoint's table has another size");
+        return e;
+      };
+      unsigned int ranks_then = n_ranks;
       if (checkpointing.resume)
         {
           io::CheckpointReader &r = *checkpointing.resume;
-          const unsigned int    ranks_then = r.get_unsigned();
-          if (ranks_then != n_ranks)
-            throw io::InputError("--resume", "number of MPI ranks", std::to_string(n_ranks),
-                                 "the " + std::to_string(ranks_then) +
-                                   " ranks the table was begun with (its points are "
-                                   "divided among them)");
+          // Peek: the same number of ranks goes on exactly where it was.
+          io::CheckpointReader peek = r;
+          ranks_then                = peek.get_unsigned();
+        }
+      if (checkpointing.resume && ranks_then == n_ranks)
+        {
+          io::CheckpointReader &r = *checkpointing.resume;
+          r.get_unsigned();
+          r.get_unsigned();
           next                    = r.get_unsigned();
           n_failed                = r.get_unsigned();
           const auto l            = r.get_vector();
@@ -395,8 +434,36 @@ namespace cosmo
           save();
           if (energy.size() != N || next > block_end || next < block_begin)
             throw std::runtime_error("the checkpoint's table has another size");
+          far = next == block_begin && block_begin > 0;
           progress("  going on after " + std::to_string(next - block_begin) + " of " +
                    std::to_string(block_end - block_begin) + " table points");
+        }
+      else if (checkpointing.resuming)
+        {
+          // Begun on another number of ranks: every rank's points so far
+          // (rank 0's checkpoint in the run's directory, rank k's in
+          // rank-k/), each point of this rank's block taken from the one
+          // that did it; the others solved here, from the state an earlier
+          // rank stopped at where it stopped, else from this rank's last.
+          const std::string shared = io::ranks::shared_directory();
+          io::CheckpointReader r0  = checkpointing.read_in(shared);
+          earlier.push_back(read_payload(r0, ranks_then));
+          for (unsigned int k = 1; k < ranks_then; ++k)
+            {
+              const std::string d = io::ranks::private_directory(shared, k);
+              if (!std::filesystem::exists(d + "/" + io::checkpoint_name))
+                continue; // rank k had finished no point
+              io::CheckpointReader rk = checkpointing.read_in(d);
+              unsigned int         ignore;
+              earlier.push_back(read_payload(rk, ignore));
+            }
+          unsigned int taken = 0;
+          for (const auto &e : earlier)
+            for (unsigned int q = std::max(e.begin, block_begin); q < std::min(e.next, block_end); ++q)
+              ++taken;
+          progress("  resumed on " + std::to_string(n_ranks) + " ranks a table begun on " +
+                   std::to_string(ranks_then) + ": " + std::to_string(taken) + " of this rank's " +
+                   std::to_string(block_end - block_begin) + " points done before");
         }
       if (n_ranks > 1)
         progress("  table points " + std::to_string(block_begin + 1) + " to " +
@@ -419,14 +486,40 @@ namespace cosmo
             std::array<double, 6> e = base;
             e[first]                = value(from1, to1, n1, i);
             e[second]               = value(from2, to2, n2, j);
+            const unsigned int p    = i * n2 + j;
+            if (const auto done = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
+                  return x.begin <= next && next < x.next;
+                });
+                done != earlier.end())
+              {
+                // Solved by an earlier run: its row and values as they are.
+                table.add_row(done->rows[next - done->begin]);
+                converged[p] = done->converged[p];
+                energy[p]    = done->energy[p];
+                std::copy_n(done->resultants.begin() + 6 * p, 6, resultants.begin() + 6 * p);
+                std::copy_n(done->stiffness.begin() + 36 * p, 36, stiffness.begin() + 36 * p);
+                n_failed += converged[p] == 0;
+                far = true;
+                continue;
+              }
+            if (const auto stopped = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
+                  return x.next == next && x.next > x.begin;
+                });
+                stopped != earlier.end())
+              {
+                // An earlier rank stopped here: its state is this point's neighbour.
+                checkpointing.set_start(stopped->start_state);
+                save();
+                last = stopped->last;
+                far  = false;
+              }
             ReducedRodState s;
             bool            ok = false;
-            // A block's first point away from the start: its path is
+            // A point away from the last one solved here: its path is
             // longer than one grid step, so more substeps may be needed.
             const std::vector<unsigned int> attempts =
-              next == block_begin && block_begin > 0 && table.row_values().empty() ?
-                std::vector<unsigned int>{1u, 4u, 16u, 64u, 256u} :
-                std::vector<unsigned int>{1u, 4u, 16u};
+              far ? std::vector<unsigned int>{1u, 4u, 16u, 64u, 256u} :
+                    std::vector<unsigned int>{1u, 4u, 16u};
             for (const unsigned int substeps : attempts)
               {
                 restore(); // from the last converged point
@@ -445,10 +538,10 @@ namespace cosmo
                 catch (solvers::NewtonFailure &)
                   {}
               }
-            const unsigned int p = i * n2 + j;
             std::vector<double> row = {e[first], e[second], ok ? 1. : 0.};
             if (ok)
               {
+                far = false;
                 save();
                 last         = e;
                 converged[p] = 1;
@@ -505,9 +598,14 @@ namespace cosmo
           const unsigned int i = q / n2, jj = q % n2;
           mine.push_back(i * n2 + ((i % 2 == 0) ? jj : n2 - 1 - jj));
         }
-      write_table_h5(tmp, description, first, second, value(from1, to1, n1, 0), n1 > 1 ? value(from1, to1, n1, 1) - value(from1, to1, n1, 0) : 0.,
-                     n1, value(from2, to2, n2, 0), n2 > 1 ? value(from2, to2, n2, 1) - value(from2, to2, n2, 0) : 0., n2,
-                     mine, energy, resultants, stiffness, converged);
+      // The axes: the strains of the points, as table.csv has them.
+      std::vector<double> axis1(n1), axis2(n2);
+      for (unsigned int i = 0; i < n1; ++i)
+        axis1[i] = value(from1, to1, n1, i);
+      for (unsigned int j = 0; j < n2; ++j)
+        axis2[j] = value(from2, to2, n2, j);
+      write_table_h5(tmp, description, first, second, axis1, axis2, mine, energy, resultants,
+                     stiffness, converged);
       if (io::ranks::rank() == 0)
         {
           std::filesystem::rename(tmp, h5);

@@ -341,12 +341,16 @@ namespace cosmo
             options.quiet = true;
           ranks::share_cores();
           run(prm, options);
+          // Its results are in rank 0's files now; nothing to resume. Rank 0
+          // removes those of the ranks beyond this run's (a run resumed on
+          // fewer ranks than it was begun with).
+          std::error_code ec;
           if (ranks::rank() > 0)
-            {
-              // Its results are in rank 0's files now; nothing to resume.
-              std::error_code ec;
-              std::filesystem::remove_all(ranks::private_directory(shared, ranks::rank()), ec);
-            }
+            std::filesystem::remove_all(ranks::private_directory(shared, ranks::rank()), ec);
+          else
+            for (unsigned int k = std::max(1u, ranks::size());
+                 std::filesystem::is_directory(ranks::private_directory(shared, k), ec); ++k)
+              std::filesystem::remove_all(ranks::private_directory(shared, k), ec);
           return 0;
         }
       catch (InputError &e)

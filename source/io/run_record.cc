@@ -1,4 +1,5 @@
 #include <cosmo/config.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/run_record.h>
 
@@ -55,7 +56,12 @@ namespace cosmo
       parameters       = checkpoint_parameters(prm);
       resumed          = !options.resume_directory.empty();
       // A checkpoint of other parameters is refused before anything is touched.
-      if (resumed)
+      // Rank k > 0 of a run resumed on more ranks than it was begun with
+      // has no checkpoint of its own: its driver takes its points from the
+      // others' (io/ranks.h).
+      has_resume_data = resumed && !(ranks::rank() > 0 &&
+                                     !std::filesystem::exists(directory + "/" + checkpoint_name));
+      if (has_resume_data)
         resume_data = read_checkpoint(directory, application, parameters);
       log = open_run_directory(directory, prm, options.quiet, "log.txt", resumed);
       // Whoever looks now sees a run in progress, not the last run's result.
@@ -67,6 +73,12 @@ namespace cosmo
       say(application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file);
       if (resumed)
         say("  resumed from the checkpoint in " + directory + "/");
+    }
+
+    CheckpointReader
+    RunRecord::read_checkpoint_in(const std::string &directory) const
+    {
+      return read_checkpoint(directory, application, parameters);
     }
 
     void

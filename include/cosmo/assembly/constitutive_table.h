@@ -42,6 +42,17 @@ namespace cosmo
       std::function<void(io::CheckpointReader &)> load_start;
       /// Go on from this checkpoint's payload (nullptr: from the start).
       io::CheckpointReader *resume = nullptr;
+      /**
+       * The run is resumed (--resume), with or without a checkpoint of this
+       * rank's: begun on another number of MPI ranks, the points so far of
+       * every earlier rank are read (read_in: the run's checkpoint in
+       * another directory) and each rank takes those of its block; where
+       * an earlier rank stopped, its state (set_start) is the next point's
+       * start.
+       */
+      bool resuming = false;
+      std::function<io::CheckpointReader(const std::string &)> read_in;
+      std::function<void(const std::vector<double> &)>         set_start;
     };
 
     /// What a table's file records about its run (table.h5 attributes).

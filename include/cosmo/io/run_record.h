@@ -120,7 +120,16 @@ namespace cosmo
       {
         return resumed;
       }
-      /// The payload of the checkpoint the run resumes from (after open(), if resuming()).
+      /// A resumed run found a checkpoint of its own (rank k > 0 under mpirun may not).
+      bool
+      has_checkpoint() const
+      {
+        return has_resume_data;
+      }
+      /// The checkpoint of this run's application and parameters in another directory.
+      CheckpointReader
+      read_checkpoint_in(const std::string &directory) const;
+      /// The payload of the checkpoint the run resumes from (after open(), if has_checkpoint()).
       CheckpointReader &
       checkpoint()
       {
@@ -139,7 +148,7 @@ namespace cosmo
       std::string             message;
       int                     signal = 0; ///< of an interrupted run
       std::string             parameters; ///< checkpoint_parameters() of the run
-      bool                    resumed = false;
+      bool                    resumed = false, has_resume_data = false;
       CheckpointReader        resume_data;
       std::chrono::steady_clock::time_point opened_at = std::chrono::steady_clock::now();
     };
