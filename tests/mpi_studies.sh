@@ -11,7 +11,8 @@
 #    10x it), the modes and the converged flags exactly, and the change of
 #    the critical mode (n = 16 to 14 between the 3rd and 4th value, on the
 #    seam between the ranks' blocks) is still found and flagged;
-# every point directory in the run's directory and no rank directory left.
+# every point directory in the run's directory and no rank directory left;
+# and a 2-rank curve interrupted and resumed on one process.
 # usage: mpi_studies.sh <rod_cross_section> <plate_rod> <scratch dir>
 set -uo pipefail
 rod=$(realpath "$1") plate=$(realpath "$2") dir=$3
@@ -33,7 +34,8 @@ if /usr/bin/python3 "$here/compare_runs.py" sweep_one sweep_two sweep.csv; then
 else bad "rod_cross_section sweep on 2 ranks differs"; fi
 timeout 900 "$plate" --quiet curve_one.prm > curve_one.txt 2>&1 || { bad "curve, one process"; cat curve_one.txt; }
 timeout 900 mpirun -np 2 "$plate" --quiet curve_two.prm > curve_two.txt 2>&1 || { bad "curve, 2 ranks"; cat curve_two.txt; }
-/usr/bin/python3 - curve_one curve_two <<'PY' || fail=1
+same_curve() {
+/usr/bin/python3 - "$1" "$2" <<'PY' || fail=1
 import csv, math, sys
 a, b = [list(csv.DictReader(open(d + "/sweep.csv"))) for d in sys.argv[1:3]]
 key = lambda r, n: next(v for k, v in r.items() if k.split(" ")[0] == n)
@@ -54,12 +56,28 @@ changes = [key(r, "value") for r in b if key(r, "mode_change") == "1"]
 for m in bad:
     print("  FAIL  " + m)
 if not bad:
-    print("  ok    critical curve on 2 ranks: the same modes, converged flags and mode change (at %s), "
-          "t_critical within %.2g of its resolution (tolerance 10)" % (changes, worst))
+    print("  ok    critical curve %s: the same modes, converged flags and mode change (at %s), "
+          "t_critical within %.2g of its resolution (tolerance 10)" % (sys.argv[2], changes, worst))
 sys.exit(1 if bad else 0)
 PY
+}
+same_curve curve_one curve_two
 n=$(ls -d curve_two/point-0? 2>/dev/null | wc -l)
 if [ "$n" -eq 6 ] && [ ! -e curve_two/rank-1 ] && [ ! -e sweep_two/rank-1 ] && grep -q "on different ranks" curve_two/sweep-log.txt; then
   ok "6 point directories in the run's directory, no rank directory left, the seam's mode change logged"
 else bad "point directories: $n; rank-1 left: $(ls -d */rank-1 2>/dev/null)"; fi
+# A curve on 2 ranks stopped (SIGTERM) after rank 0's first value, resumed
+# on one process: the earlier value taken from rank 0's checkpoint, the
+# others run; the same curve as above.
+as plate_rod/studies/critical_curve_mode_change_planar_lobes.prm curve_stopped > curve_stopped.prm
+mpirun -np 2 "$plate" --quiet curve_stopped.prm > curve_stopped-0.txt 2>&1 & pid=$!
+for _ in $(seq 1 1200); do [ -f curve_stopped/checkpoint.cosmo ] && break; sleep 0.1; done
+kill -TERM $pid; wait $pid 2>/dev/null; s1=$?
+timeout 900 "$plate" --quiet --resume curve_stopped > curve_stopped-1.txt 2>&1; s2=$?
+if [ $s1 -ne 0 ] && [ $s2 -eq 0 ] && grep -q "resumed on 1 ranks a study begun on 2" curve_stopped/sweep-log.txt &&
+   grep -q "done before the resume" curve_stopped/sweep-log.txt && [ ! -e curve_stopped/rank-1 ] &&
+   [ ! -e curve_stopped/checkpoint.cosmo ]; then
+  ok "a 2-rank curve stopped part-way (exit $s1) and resumed on one process: exit 0, the values done taken as they were"
+else bad "2-rank curve resumed on 1: exits $s1 $s2"; cat curve_stopped-1.txt; tail -5 curve_stopped/sweep-log.txt; fi
+same_curve curve_one curve_stopped
 exit $fail

@@ -855,21 +855,6 @@ namespace cosmo
       // checkpoint of other parameters is refused before anything is touched.
       const std::string    parameters = io::checkpoint_parameters(prm);
       const bool           resume     = !options.resume_directory.empty();
-      io::CheckpointReader resumed;
-      if (resume)
-        resumed = io::read_checkpoint(base, "rod_cross_section sweep", parameters);
-      const auto log_file =
-        io::open_run_directory(base, prm, options.quiet, "sweep-log.txt", resume);
-      auto &     log      = *log_file;
-      log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
-          ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
-      // Under mpirun each rank runs a contiguous block of the values
-      // (io/ranks.h), after rank 0 has taken the run's directory.
-      const unsigned int n_ranks          = io::ranks::size();
-      const auto [block_begin, block_end] = io::ranks::my_block(sweep.size());
-      const std::string shared            = n_ranks > 1 ? io::ranks::shared_directory() : base;
-      io::ranks::barrier();
-
       io::CSVTable table;
       table.add_column("point");
       table.add_column("value", sweep.axis_label());
@@ -886,24 +871,41 @@ namespace cosmo
       table.add_column("helix_pitch", "L");
       table.add_column("n_negative_eigenvalues");
 
+      io::ranks::Resumed resumed;
+      if (resume)
+        resumed = io::ranks::resume_points(base, table, [&](const std::string &d) {
+          return io::read_checkpoint(d, "rod_cross_section sweep", parameters);
+        });
+      const auto log_file =
+        io::open_run_directory(base, prm, options.quiet, "sweep-log.txt", resume);
+      auto &     log      = *log_file;
+      log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
+          ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
+      // Under mpirun each rank runs a contiguous block of the values
+      // (io/ranks.h), after rank 0 has taken the run's directory.
+      const unsigned int n_ranks          = io::ranks::size();
+      const auto [block_begin, block_end] = io::ranks::my_block(sweep.size());
+      const std::string shared            = n_ranks > 1 ? io::ranks::shared_directory() : base;
+      io::ranks::barrier();
+
       unsigned int             n_failed = 0;
       std::vector<std::string> rejected;
       unsigned int             k0 = block_begin;
-      if (resume)
+      if (resume && resumed.same_ranks)
         {
-          if (const unsigned int then = resumed.get_unsigned(); then != n_ranks)
-            throw io::InputError("--resume", "number of MPI ranks", std::to_string(n_ranks),
-                                 "the " + std::to_string(then) +
-                                   " ranks the sweep was begun with (its values are divided "
-                                   "among them)");
-          k0       = resumed.get_unsigned();
-          n_failed = resumed.get_unsigned();
-          rejected = resumed.get_strings();
-          table.load(resumed);
+          k0       = resumed.own.next;
+          for (const auto &row : resumed.own.rows)
+            table.add_row(row);
+          n_failed = resumed.reader.get_unsigned();
+          rejected = resumed.reader.get_strings();
           table.write(base + "/sweep.csv");
-          log("  resumed from the checkpoint: " + std::to_string(k0) + " of " +
-              std::to_string(sweep.size()) + " values done");
+          log("  resumed from the checkpoint: " + std::to_string(k0 - block_begin) + " of " +
+              std::to_string(block_end - block_begin) + " values done");
         }
+      else if (resume)
+        log("  resumed on " + std::to_string(n_ranks) + " ranks a sweep begun on " +
+            std::to_string(resumed.ranks_then) +
+            ": the converged values done before are taken as they are, the others run again");
       std::vector<std::string> point_lines; // this rank's, for rank 0's log
       for (unsigned int k = k0; k < block_end; ++k)
         {
@@ -913,6 +915,15 @@ namespace cosmo
           if (io::pending_signal() != 0)
             interrupted();
           io::check_interrupt(); // between points: sweep.csv holds every point done so far
+          if (const auto done = resumed.done.find(k);
+              done != resumed.done.end() && done->second[2] == 1) // (converged)
+            {
+              table.add_row(done->second);
+              point_lines.push_back("point " + std::to_string(k + 1) + "/" +
+                                    std::to_string(sweep.size()) + ": done before the resume");
+              log(point_lines.back());
+              continue;
+            }
           sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(shared, k));
           io::RunOptions point_options = options;
           point_options.quiet          = true; // the point's log.txt has the details
@@ -971,14 +982,11 @@ namespace cosmo
           table.add_row(row);
           table.write(base + "/sweep.csv");
           io::CheckpointWriter w;
-          w.put(n_ranks);
-          w.put(k + 1);
+          io::ranks::put_point_header(w, block_begin, k + 1, table);
           w.put(n_failed);
           w.put(rejected);
-          table.save(w);
           io::write_checkpoint(base, "rod_cross_section sweep", parameters, w);
         }
-      io::remove_checkpoint(base);
       if (n_ranks > 1)
         {
           // Rank 0 writes every rank's rows (in rank order: the values').
@@ -997,6 +1005,8 @@ namespace cosmo
               table.write(shared + "/sweep.csv");
             }
         }
+      // Not before: a rank stopped while the others still run resumes from it.
+      io::remove_checkpoint(base);
       log("sweep table: " + shared + "/sweep.csv");
       if (!rejected.empty())
         {

@@ -4,6 +4,8 @@
 
 #include <dlfcn.h>
 
+#include <filesystem>
+
 #include <cstdlib>
 
 namespace cosmo
@@ -114,6 +116,63 @@ namespace cosmo
             const int ierr = MPI_Barrier(MPI_COMM_WORLD);
             AssertThrowMPI(ierr);
           }
+      }
+
+      void
+      put_point_header(CheckpointWriter &w, const unsigned int first, const unsigned int next,
+                       const CSVTable &rows)
+      {
+        w.put(size());
+        w.put(rank());
+        w.put(first);
+        w.put(next);
+        rows.save(w);
+      }
+
+      PointHeader
+      get_point_header(CheckpointReader &r, const CSVTable &columns)
+      {
+        PointHeader h;
+        h.n_ranks = r.get_unsigned();
+        h.rank    = r.get_unsigned();
+        h.first   = r.get_unsigned();
+        h.next    = r.get_unsigned();
+        CSVTable t = columns;
+        t.load(r);
+        h.rows = t.row_values();
+        if (h.next < h.first || h.rows.size() != h.next - h.first)
+          throw std::runtime_error("the checkpoint's rows do not match its points");
+        return h;
+      }
+
+      Resumed
+      resume_points(const std::string &directory, const CSVTable &columns,
+                    const std::function<CheckpointReader(const std::string &)> &read)
+      {
+        Resumed    out;
+        const bool own = rank() == 0 || std::filesystem::exists(directory + "/" + checkpoint_name);
+        if (own)
+          {
+            out.reader     = read(directory);
+            out.own        = get_point_header(out.reader, columns);
+            out.ranks_then = out.own.n_ranks;
+            out.same_ranks = out.own.n_ranks == size();
+            if (out.same_ranks)
+              return out;
+          }
+        // Begun on another number of ranks: every earlier rank's points.
+        const std::string shared = shared_directory().empty() ? directory : shared_directory();
+        auto take = [&](CheckpointReader r) {
+          const auto h = get_point_header(r, columns);
+          out.ranks_then = h.n_ranks;
+          for (unsigned int k = h.first; k < h.next; ++k)
+            out.done[k] = h.rows[k - h.first];
+        };
+        take(read(shared));
+        for (unsigned int k = 1; k < out.ranks_then; ++k)
+          if (std::filesystem::exists(private_directory(shared, k) + "/" + checkpoint_name))
+            take(read(private_directory(shared, k)));
+        return out;
       }
 
       void

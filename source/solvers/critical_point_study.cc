@@ -140,9 +140,22 @@ namespace cosmo
       const std::string  checkpoint_application = study.application + " study";
       const std::string  parameters             = io::checkpoint_parameters(prm);
       const bool         resume                 = !options.resume_directory.empty();
-      io::CheckpointReader resumed;
+      io::CSVTable table;
+      table.add_column("value", sweep.axis_label());
+      for (const auto &c : {"converged", "t_critical", "t_resolution"})
+        table.add_column(c);
+      for (const auto &c : study.further_columns)
+        table.add_column(c);
+      for (const auto &c : study.mode_columns)
+        table.add_column(c);
+      for (const auto &c : {"dofs", "seconds", "factorizations", "continued", "mode_change",
+                            "codim2_value", "codim2_t"})
+        table.add_column(c);
+      io::ranks::Resumed resumed;
       if (resume)
-        resumed = io::read_checkpoint(directory, checkpoint_application, parameters);
+        resumed = io::ranks::resume_points(directory, table, [&](const std::string &d) {
+          return io::read_checkpoint(d, checkpoint_application, parameters);
+        });
       const auto log_file =
         io::open_run_directory(directory, prm, options.quiet, "sweep-log.txt", resume);
       auto &     log      = *log_file;
@@ -157,17 +170,6 @@ namespace cosmo
       log(study.application + " " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
           ", " + (curve ? "critical curve" : "study") + " of '" + sweep.entry() + "' over " +
           std::to_string(sweep.size()) + " values");
-      io::CSVTable table;
-      table.add_column("value", sweep.axis_label());
-      for (const auto &c : {"converged", "t_critical", "t_resolution"})
-        table.add_column(c);
-      for (const auto &c : study.further_columns)
-        table.add_column(c);
-      for (const auto &c : study.mode_columns)
-        table.add_column(c);
-      for (const auto &c : {"dofs", "seconds", "factorizations", "continued", "mode_change",
-                            "codim2_value", "codim2_t"})
-        table.add_column(c);
       const std::size_t n_mode = study.mode_columns.size();
       const std::size_t n_more = study.further_columns.size();
 
@@ -187,30 +189,29 @@ namespace cosmo
       std::string  refused;
       unsigned int n_without = 0; // points without a located critical point
       unsigned int k0        = block_begin;
-      if (resume)
+      if (resume && resumed.same_ranks)
         {
-          const unsigned int ranks_then = resumed.get_unsigned();
-          if (ranks_then != n_ranks)
-            throw io::InputError("--resume", "number of MPI ranks", std::to_string(n_ranks),
-                                 "the " + std::to_string(ranks_then) +
-                                   " ranks the study was begun with (its values are divided "
-                                   "among them)");
-          k0 = resumed.get_unsigned();
-          table.load(resumed);
-          predictor.load(resumed);
-          previous.k          = resumed.get_unsigned();
-          previous.value      = resumed.get_double();
-          previous.t          = resumed.get_double();
-          previous.mode_class = resumed.get_vector();
-          previous.n_unknowns = resumed.get_size();
-          refused             = resumed.get_string();
-          n_without           = resumed.get_unsigned();
+          io::CheckpointReader &r = resumed.reader;
+          k0                      = resumed.own.next;
+          for (const auto &row : resumed.own.rows)
+            table.add_row(row);
+          predictor.load(r);
+          previous.k          = r.get_unsigned();
+          previous.value      = r.get_double();
+          previous.t          = r.get_double();
+          previous.mode_class = r.get_vector();
+          previous.n_unknowns = r.get_size();
+          refused             = r.get_string();
+          n_without           = r.get_unsigned();
           table.write(directory + "/sweep.csv");
           if (curve)
             table.write(directory + "/critical_curve.csv");
           log("  resumed from the checkpoint: " + std::to_string(k0 - block_begin) + " of " +
               std::to_string(block_end - block_begin) + " values done");
         }
+      else if (resume)
+        log("  resumed on " + std::to_string(n_ranks) + " ranks a study begun on " +
+            std::to_string(resumed.ranks_then) + ": the values done before are taken as they are");
       if (n_ranks > 1)
         log("  values " + std::to_string(block_begin + 1) + " to " + std::to_string(block_end) +
             " of " + std::to_string(sweep.size()) + " on rank " +
@@ -222,6 +223,25 @@ namespace cosmo
           {
             // Between points: sweep.csv holds every point done so far.
             io::check_interrupt();
+            if (const auto done = resumed.done.find(k); done != resumed.done.end())
+              {
+                // Done by a rank of the run begun on another number of ranks.
+                const auto &row = done->second;
+                table.add_row(row);
+                n_without += std::isfinite(row[2]) ? 0 : 1;
+                std::ostringstream line;
+                line << std::setprecision(10) << "  " << sweep.label() << " = " << sweep.value(k)
+                     << ": critical t = " << row[2] << " (done before the resume)";
+                log(line.str());
+                point_lines.push_back(line.str());
+                predictor.clear(); // the curve goes on from points solved here
+                if (std::isfinite(row[2]))
+                  previous = {k, sweep.value(k), row[2],
+                              std::vector<double>(row.begin() + 4 + n_more,
+                                                  row.begin() + 4 + n_more + n_mode),
+                              0}; // (no codimension-2 estimate from it: no state)
+                continue;
+              }
             const auto        start = std::chrono::steady_clock::now();
             const std::string point = io::ParameterSweep::point_directory(shared, k);
             double converged = 0, t = NAN, resolution = NAN, dofs = NAN, factorizations = 0,
@@ -380,9 +400,7 @@ namespace cosmo
             point_lines.push_back(line.str());
             // Everything the next points depend on: a killed study goes on from here (--resume).
             io::CheckpointWriter w;
-            w.put(n_ranks);
-            w.put(k + 1);
-            table.save(w);
+            io::ranks::put_point_header(w, block_begin, k + 1, table);
             predictor.save(w);
             w.put(previous.k);
             w.put(previous.value);
@@ -399,13 +417,13 @@ namespace cosmo
           log("interrupted; continue with: " + study.application + " --resume " + directory);
           throw;
         }
-      io::remove_checkpoint(directory);
-      if (n_ranks > 1)
+      if (n_ranks > 1 || !resumed.done.empty())
         {
           // Rank 0: every rank's rows (in rank order: the values' order) and
-          // lines. The blocks' first points were run without a previous
-          // one: a change of the critical mode at a seam between blocks is
-          // found here (without a codimension-2 estimate).
+          // lines. A block's first value (and one after values taken from
+          // a resumed run's checkpoints) was run without the previous one:
+          // a change of the critical mode there is found here, without a
+          // codimension-2 estimate.
           const auto rows  = io::ranks::gather_rows(table.row_values());
           const auto lines = io::ranks::gather_lines(point_lines);
           n_without        = io::ranks::sum(n_without);
@@ -416,12 +434,16 @@ namespace cosmo
               refused += std::string(refused.empty() ? "" : "; ") + r;
           if (io::ranks::rank() == 0)
             {
-              log("the " + std::to_string(n_ranks) + " ranks' values:");
-              for (const auto &l : lines)
-                log(l);
+              if (n_ranks > 1)
+                {
+                  log("the " + std::to_string(n_ranks) + " ranks' values:");
+                  for (const auto &l : lines)
+                    log(l);
+                }
               io::CSVTable whole = table;
               whole.clear_rows();
-              const std::size_t mode0 = 4 + n_more, change = mode0 + n_mode + 4; // ..., mode columns, dofs, seconds, factorizations, continued, mode_change
+              // ..., mode columns, dofs, seconds, factorizations, continued, mode_change
+              const std::size_t mode0 = 4 + n_more, change = mode0 + n_mode + 4;
               std::vector<double> last_class;
               for (unsigned int r = 0; r < rows.size(); ++r)
                 {
@@ -431,10 +453,7 @@ namespace cosmo
                     n_mode > 0 && std::any_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
                   if (classified)
                     {
-                      bool seam = false;
-                      for (unsigned int q = 1; q < n_ranks; ++q)
-                        seam |= r == io::ranks::block(sweep.size(), q, n_ranks).first;
-                      if (seam && !last_class.empty() &&
+                      if (row[change] == 0 && !last_class.empty() &&
                           !std::equal(c.begin(), c.end(), last_class.begin(), last_class.end(),
                                       [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); }))
                         {
@@ -444,7 +463,8 @@ namespace cosmo
                             << study.describe_mode(last_class) << " to " << study.describe_mode(c)
                             << " between " << sweep.label() << " = " << sweep.value(r - 1)
                             << " and " << sweep.value(r)
-                            << "; no codimension-2 estimate (the values are on different ranks)";
+                            << "; no codimension-2 estimate (the values were run apart: on "
+                               "different ranks, or before and after a resume)";
                           log(m.str());
                         }
                       last_class = c;
@@ -460,6 +480,8 @@ namespace cosmo
               log("the values of this rank are in " + shared + "/sweep.csv");
             }
         }
+      // Not before: a rank stopped while the others still run resumes from it.
+      io::remove_checkpoint(directory);
       log("output in " + shared + "/");
       if (!refused.empty())
         throw io::InputError("Parameter sweep", "Values", sweep.entry(), refused);

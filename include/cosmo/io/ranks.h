@@ -1,6 +1,11 @@
 #ifndef cosmo_io_ranks_h
 #define cosmo_io_ranks_h
 
+#include <cosmo/io/checkpoint.h>
+#include <cosmo/io/output.h>
+
+#include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,6 +91,46 @@ namespace cosmo
       /// Wait for every rank.
       void
       barrier();
+
+      /**
+       * The checkpoints of a driver of independent points (a study): their
+       * payload begins with the header put_point_header() writes, the
+       * number of ranks, the rank, its block and its rows so far, so that
+       * a run resumed on another number of ranks takes every point done
+       * from whichever rank did it.
+       */
+      void
+      put_point_header(CheckpointWriter &w, unsigned int first, unsigned int next,
+                       const CSVTable &rows);
+
+      /// What a header says: [first, next) done, their rows in order.
+      struct PointHeader
+      {
+        unsigned int                     n_ranks = 1, rank = 0, first = 0, next = 0;
+        std::vector<std::vector<double>> rows;
+      };
+      /// Read put_point_header()'s header (`columns`: the table's columns, no rows).
+      PointHeader
+      get_point_header(CheckpointReader &r, const CSVTable &columns);
+
+      /**
+       * A resumed run of a driver of independent points on this rank: its
+       * own checkpoint if it has one and was begun on as many ranks
+       * (`same_ranks`, the reader after its header), else the rows of
+       * every point any rank of the earlier run did (by index), read with
+       * `read` from the run's directory (rank 0's) and rank-k/.
+       */
+      struct Resumed
+      {
+        bool                                        same_ranks = false;
+        PointHeader                                 own;
+        CheckpointReader                            reader;
+        std::map<unsigned int, std::vector<double>> done;
+        unsigned int                                ranks_then = 1;
+      };
+      Resumed
+      resume_points(const std::string &directory, const CSVTable &columns,
+                    const std::function<CheckpointReader(const std::string &)> &read);
 
       /**
        * One BLAS thread per rank when the ranks share the node's cores
