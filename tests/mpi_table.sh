@@ -11,7 +11,9 @@
 #    Newton's stopping test (measured 1.9e-10);
 #  - table.h5 (written collectively) against its table.csv, with the same
 #    attributes and dimension scales as one process's;
-# and that no rank directory is left. Then a table interrupted by SIGTERM
+# that no rank directory is left, and that the seam check (rank 0 continues
+# one point into rank 1's block and compares) finds the two paths' states
+# equal to 1e-6 of their scales (the same branch: Newton's 1e-10 apart). Then a table interrupted by SIGTERM
 # under mpirun is resumed by 2 ranks from their checkpoints (the table of
 # the uninterrupted 2-rank run, bitwise), and resuming it with another
 # number of ranks is refused (exit 1) naming the number it was begun with.
@@ -37,8 +39,10 @@ DEAL_II_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 timeout 300 "$exe" --quiet one_thre
 DEAL_II_NUM_THREADS=2 OPENBLAS_NUM_THREADS=2 timeout 300 "$exe" --quiet two_threads.prm > two_threads.txt 2>&1 ||
   { bad "one process, two threads failed"; cat two_threads.txt; }
 mpi 2 "$exe" two_ranks.prm > two_ranks.txt 2>&1; s=$?
-if [ $s -eq 0 ] && grep -q "on 2 MPI ranks" two_ranks/log.txt && [ ! -e two_ranks/rank-1 ]; then
-  ok "mpirun -np 2: exit 0, '2 MPI ranks' in the log, no rank directory left"
+seam=$(sed -n 's/.*seam before point [0-9]*: .* agree to \([^ ]*\) .*/\1/p' two_ranks/log.txt)
+if [ $s -eq 0 ] && grep -q "on 2 MPI ranks" two_ranks/log.txt && [ ! -e two_ranks/rank-1 ] &&
+   [ -n "$seam" ] && python3 -c "import sys; sys.exit(not float('$seam') <= 1e-6)" && ! grep -q WARNING two_ranks/log.txt; then
+  ok "mpirun -np 2: exit 0, '2 MPI ranks' in the log, no rank directory left; the seam between the blocks checked: $seam (a warning above 1e-6)"
 else bad "mpirun -np 2: exit $s"; cat two_ranks.txt; fi
 /usr/bin/python3 "$here/compare_tables.py" one_thread two_threads two_ranks || fail=1
 

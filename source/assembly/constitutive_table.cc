@@ -470,6 +470,40 @@ namespace cosmo
                  std::to_string(block_end) + " of " + std::to_string(N) + " on rank " +
                  std::to_string(io::ranks::rank()) + " of " +
                  std::to_string(n_ranks));
+      // The state at strains e from the last converged one (`last`), in
+      // substeps if one step fails. A point away from the last one solved
+      // here (`far`): its path is longer than one grid step, so more
+      // substeps may be needed.
+      auto solve_point = [&](const std::array<double, 6> &e, const bool far, ReducedRodState &s) {
+        const std::vector<unsigned int> attempts =
+          far ? std::vector<unsigned int>{1u, 4u, 16u, 64u, 256u} : std::vector<unsigned int>{1u, 4u, 16u};
+        for (const unsigned int substeps : attempts)
+          {
+            restore(); // from the last converged point
+            try
+              {
+                for (unsigned int k = 1; k <= substeps; ++k)
+                  {
+                    std::array<double, 6> ek;
+                    for (unsigned int c = 0; c < 6; ++c)
+                      ek[c] = last[c] + (e[c] - last[c]) * k / substeps;
+                    s = resolve(ek);
+                  }
+                return true;
+              }
+            catch (solvers::NewtonFailure &)
+              {}
+          }
+        return false;
+      };
+      // The strains of serpentine point q.
+      auto strains_of_point = [&](const unsigned int q) {
+        const unsigned int    i = q / n2, jj = q % n2;
+        std::array<double, 6> e = base;
+        e[first]                = value(from1, to1, n1, i);
+        e[second]               = value(from2, to2, n2, (i % 2 == 0) ? jj : n2 - 1 - jj);
+        return e;
+      };
       auto last_checkpoint = std::chrono::steady_clock::now();
       for (; next < block_end; ++next)
           {
@@ -514,30 +548,7 @@ namespace cosmo
                 far  = false;
               }
             ReducedRodState s;
-            bool            ok = false;
-            // A point away from the last one solved here: its path is
-            // longer than one grid step, so more substeps may be needed.
-            const std::vector<unsigned int> attempts =
-              far ? std::vector<unsigned int>{1u, 4u, 16u, 64u, 256u} :
-                    std::vector<unsigned int>{1u, 4u, 16u};
-            for (const unsigned int substeps : attempts)
-              {
-                restore(); // from the last converged point
-                try
-                  {
-                    for (unsigned int k = 1; k <= substeps; ++k)
-                      {
-                        std::array<double, 6> ek;
-                        for (unsigned int c = 0; c < 6; ++c)
-                          ek[c] = last[c] + (e[c] - last[c]) * k / substeps;
-                        s = resolve(ek);
-                      }
-                    ok = true;
-                    break;
-                  }
-                catch (solvers::NewtonFailure &)
-                  {}
-              }
+            const bool      ok = solve_point(e, far, s);
             std::vector<double> row = {e[first], e[second], ok ? 1. : 0.};
             if (ok)
               {
@@ -575,8 +586,63 @@ namespace cosmo
                 last_checkpoint = std::chrono::steady_clock::now();
               }
           }
+      // The seams: a block's first point was reached from the start, not
+      // from its serpentine neighbour, and where the table crosses an
+      // instability the two paths can end on different branches. So each
+      // rank but the last continues one point further, to the next
+      // block's first, and rank 0 compares the two (a state from another
+      // path agrees to Newton's stopping test, 1e-10; another branch does
+      // not).
+      std::vector<std::vector<double>> seam;
+      if (io::ranks::rank() + 1 < n_ranks && block_end < N && block_end > block_begin)
+        {
+          ReducedRodState s;
+          if (solve_point(strains_of_point(block_end), far, s))
+            {
+              std::vector<double> v = {double(block_end), s.energy};
+              v.insert(v.end(), s.resultants.begin(), s.resultants.end());
+              seam.push_back(v);
+            }
+        }
+      const auto seams = io::ranks::gather_rows(seam);
       // Rank 0 writes the rows of all ranks (in rank order: the serpentine's).
       const auto all_rows = io::ranks::gather_rows(table.row_values());
+      if (io::ranks::rank() == 0 && !seams.empty())
+        {
+          // The energy against its largest value; a resultant a against
+          // sqrt(2 max K_aa max Psi) (Psi ~ K e^2/2, so K e ~ sqrt(2 K Psi)):
+          // a free strain's resultant is held at 0 and is round-off itself.
+          // (Row: strains, converged, energy, 6 resultants, K_ab for b >= a.)
+          auto max_of = [&](const unsigned int column) {
+            double m = 0;
+            for (const auto &row : all_rows)
+              if (std::isfinite(row[column]))
+                m = std::max(m, std::abs(row[column]));
+            return m;
+          };
+          std::vector<double> scale(7, max_of(3));
+          for (unsigned int a = 0, column = 10; a < 6; column += 6 - a, ++a)
+            scale[1 + a] = std::sqrt(2 * max_of(column) * scale[0]);
+          for (const auto &v : seams)
+            {
+              const auto &row = all_rows[static_cast<unsigned int>(v[0])];
+              if (row[2] != 1)
+                continue;
+              double gap = 0;
+              for (unsigned int c = 0; c < 7; ++c)
+                if (scale[c] > 0)
+                  gap = std::max(gap, std::abs(row[3 + c] - v[1 + c]) / scale[c]);
+              std::ostringstream m;
+              m << std::setprecision(3) << "  seam before point " << v[0] + 1
+                << ": the block's first state and its neighbour's continuation agree to " << gap
+                << " (energy and resultants, of their scales)";
+              if (gap > 1e-6)
+                m << "\nWARNING: they differ by more than 1e-6: the blocks followed different "
+                     "branches across an instability; run the table on one rank (or on ranks "
+                     "whose blocks do not start past it) to follow the serpentine's";
+              progress(m.str());
+            }
+        }
       if (n_ranks > 1 && io::ranks::rank() == 0)
         {
           io::CSVTable whole = table;
