@@ -12,10 +12,11 @@
 #    the critical mode (n = 16 to 14 between the 3rd and 4th value, on the
 #    seam between the ranks' blocks) is still found and flagged;
 # every point directory in the run's directory and no rank directory left;
-# and a 2-rank curve interrupted and resumed on one process.
-# usage: mpi_studies.sh <rod_cross_section> <plate_rod> <scratch dir>
+# a 2-rank curve interrupted and resumed on one process; and a single path
+# (strip twisting.prm) under mpirun: rank 0 alone, the result of one process.
+# usage: mpi_studies.sh <rod_cross_section> <plate_rod> <strip> <scratch dir>
 set -uo pipefail
-rod=$(realpath "$1") plate=$(realpath "$2") dir=$3
+rod=$(realpath "$1") plate=$(realpath "$2") strip=$(realpath "$3") dir=$4
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -66,6 +67,17 @@ n=$(ls -d curve_two/point-0? 2>/dev/null | wc -l)
 if [ "$n" -eq 6 ] && [ ! -e curve_two/rank-1 ] && [ ! -e sweep_two/rank-1 ] && grep -q "on different ranks" curve_two/sweep-log.txt; then
   ok "6 point directories in the run's directory, no rank directory left, the seam's mode change logged"
 else bad "point directories: $n; rank-1 left: $(ls -d */rank-1 2>/dev/null)"; fi
+# A single path has nothing to spread: rank 0 follows it alone (on all the
+# cores), the other ranks wait; the result is one process's.
+as strip/twisting.prm path_one > path_one.prm
+as strip/twisting.prm path_two > path_two.prm
+timeout 300 "$strip" --quiet path_one.prm > path_one.txt 2>&1 || { bad "path, one process"; cat path_one.txt; }
+timeout 300 mpirun -np 2 "$strip" path_two.prm > path_two.txt 2>&1; s=$?
+if [ $s -eq 0 ] && grep -q "which one rank follows" path_two.txt && [ ! -e path_two/rank-1 ] &&
+   /usr/bin/python3 "$here/compare_runs.py" path_one path_two steps.csv; then
+  ok "a single path under mpirun -np 2: rank 0's alone (said so), steps.csv of one process (1e-12)"
+else bad "a single path under mpirun: exit $s"; cat path_two.txt; fi
+
 # A curve on 2 ranks stopped (SIGTERM) after rank 0's first value, resumed
 # on one process: the earlier value taken from rank 0's checkpoint, the
 # others run; the same curve as above.

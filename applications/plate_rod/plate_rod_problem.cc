@@ -17,6 +17,7 @@
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/resources.h>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
 
@@ -947,6 +948,8 @@ namespace cosmo
         }
       PlateRodProblem problem;
       problem.parse_parameters(prm);
+      if (io::ranks::idle(false))
+        return;
       problem.run(options, prm);
     }
   } // namespace plate_rod

@@ -819,6 +819,8 @@ namespace cosmo
         {
           CrossSectionProblem problem;
           problem.parse_parameters(prm);
+          if (io::ranks::idle(assembly::ConstitutiveTable::enabled_in(prm)))
+            return;
           problem.run(options, prm);
           return;
         }

@@ -15,6 +15,7 @@
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/rotation.h>
 #include <cosmo/kinematics/strip.h>
@@ -402,6 +403,8 @@ namespace cosmo
         {
           StripProblem problem;
           problem.parse_parameters(prm);
+          if (io::ranks::idle(assembly::ConstitutiveTable::enabled_in(prm)))
+            return;
           problem.run(options, prm);
           return;
         }

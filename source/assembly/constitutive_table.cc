@@ -275,6 +275,15 @@ namespace cosmo
           directory, record.reporter(), description, cp);
     }
 
+    bool
+    ConstitutiveTable::enabled_in(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Constitutive table");
+      const bool enabled = prm.get_bool("Enabled");
+      prm.leave_subsection();
+      return enabled;
+    }
+
     void
     ConstitutiveTable::check_axes(const std::array<bool, 6> &free_strains) const
     {

@@ -341,6 +341,9 @@ namespace cosmo
             options.quiet = true;
           ranks::share_cores();
           run(prm, options);
+          // A rank done early sleeps until the others are, instead of
+          // spinning in MPI_Finalize.
+          ranks::wait_for_all();
           // Its results are in rank 0's files now; nothing to resume. Rank 0
           // removes those of the ranks beyond this run's (a run resumed on
           // fewer ranks than it was begun with).

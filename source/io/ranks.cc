@@ -1,10 +1,14 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <cosmo/io/ranks.h>
 
 #include <dlfcn.h>
 
+#include <chrono>
 #include <filesystem>
+#include <iostream>
+#include <thread>
 
 #include <cstdlib>
 
@@ -116,6 +120,40 @@ namespace cosmo
             const int ierr = MPI_Barrier(MPI_COMM_WORLD);
             AssertThrowMPI(ierr);
           }
+      }
+
+      void
+      wait_for_all()
+      {
+        if (size() == 1)
+          return;
+        MPI_Request request;
+        int         ierr = MPI_Ibarrier(MPI_COMM_WORLD, &request);
+        AssertThrowMPI(ierr);
+        for (int done = 0; !done;)
+          {
+            ierr = MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+            AssertThrowMPI(ierr);
+            if (!done)
+              std::this_thread::sleep_for(std::chrono::milliseconds(20));
+          }
+      }
+
+      bool
+      idle(const bool distributed)
+      {
+        if (size() == 1 || distributed)
+          return false;
+        if (rank() == 0)
+          std::cout << "(mpirun: this run is one path, which one rank follows; the other "
+                    << size() - 1
+                    << " wait. Only tables and studies are spread over ranks: "
+                       "doc/parallel-runs.md)"
+                    << std::endl;
+        // The others sleep: rank 0 takes the node's cores.
+        if (rank() == 0)
+          MultithreadInfo::set_thread_limit();
+        return rank() > 0;
       }
 
       void

@@ -80,6 +80,9 @@ namespace cosmo
       {
         return is_enabled;
       }
+      /// Is a table asked for in these (parsed) parameters?
+      static bool
+      enabled_in(ParameterHandler &prm);
 
       /// io::InputError naming the axis if an axis strain is free (its value would be ignored).
       void

@@ -23,9 +23,11 @@
  *
  * So that no two ranks write the same file, rank k > 0 runs in its own
  * directory, `<output directory>/rank-k` (its log.txt, its checkpoint, the
- * base state's files it repeats); a run that ends (converged or failed)
- * removes it. What the ranks write together (a study's point directories,
- * the collective table.h5) is named from shared_directory().
+ * base state's files it repeats); a run that ends well removes it, a
+ * failed or stopped one keeps it. What the ranks write together (a study's
+ * point directories, the collective table.h5) is named from
+ * shared_directory(). A run with nothing to spread (one path) is rank 0's
+ * alone (idle()).
  *
  * With one process (no mpirun) everything here is the identity: rank 0 of
  * 1, the run as before.
@@ -91,6 +93,18 @@ namespace cosmo
       /// Wait for every rank.
       void
       barrier();
+
+      /// Wait for every rank, asleep rather than spinning (a rank done early).
+      void
+      wait_for_all();
+
+      /**
+       * A run with nothing to spread over the ranks (`distributed` false:
+       * a single path) is rank 0's alone, on all its threads: true on the
+       * ranks k > 0, which then do nothing; rank 0 says so on the terminal.
+       */
+      bool
+      idle(bool distributed);
 
       /**
        * The checkpoints of a driver of independent points (a study): their
