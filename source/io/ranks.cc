@@ -73,37 +73,36 @@ namespace cosmo
         return the_shared_directory;
       }
 
-      std::vector<std::vector<double>>
-      gather_rows(const std::vector<std::vector<double>> &mine)
+      /// The ranks' lists one after the other, at rank 0 (`to_all`: at every rank).
+      template <typename T>
+      std::vector<T>
+      concatenated(const std::vector<T> &mine, const bool to_all)
       {
         if (size() == 1)
           return mine;
-        std::vector<std::vector<double>> all;
-        for (auto &part : Utilities::MPI::gather(MPI_COMM_WORLD, mine, 0))
+        std::vector<T> all;
+        for (auto &part : to_all ? Utilities::MPI::all_gather(MPI_COMM_WORLD, mine) :
+                                   Utilities::MPI::gather(MPI_COMM_WORLD, mine, 0))
           all.insert(all.end(), part.begin(), part.end());
         return all;
+      }
+
+      std::vector<std::vector<double>>
+      gather_rows(const std::vector<std::vector<double>> &mine)
+      {
+        return concatenated(mine, false);
       }
 
       std::vector<std::string>
       gather_lines(const std::vector<std::string> &mine)
       {
-        if (size() == 1)
-          return mine;
-        std::vector<std::string> all;
-        for (auto &part : Utilities::MPI::gather(MPI_COMM_WORLD, mine, 0))
-          all.insert(all.end(), part.begin(), part.end());
-        return all;
+        return concatenated(mine, false);
       }
 
       std::vector<std::string>
       all_gather_lines(const std::vector<std::string> &mine)
       {
-        if (size() == 1)
-          return mine;
-        std::vector<std::string> all;
-        for (auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, mine))
-          all.insert(all.end(), part.begin(), part.end());
-        return all;
+        return concatenated(mine, true);
       }
 
       unsigned int
