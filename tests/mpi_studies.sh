@@ -14,9 +14,11 @@
 # every point directory in the run's directory and no rank directory left;
 # a 2-rank curve interrupted and resumed on one process; and a single path
 # (strip twisting.prm) under mpirun: rank 0 alone, the result of one process.
-# usage: mpi_studies.sh <rod_cross_section> <plate_rod> <strip> <scratch dir>
+# usage: mpi_studies.sh <rod_cross_section> <plate_rod> <strip> <scratch dir> [curve dir]
+# (curve dir: the same curve already run by one process, e.g. by the test
+# validation.plate_rod_critical_curve_mode_change; else it is run here)
 set -uo pipefail
-rod=$(realpath "$1") plate=$(realpath "$2") strip=$(realpath "$3") dir=$4
+rod=$(realpath "$1") plate=$(realpath "$2") strip=$(realpath "$3") dir=$4 done_curve=${5:-}
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -33,7 +35,11 @@ timeout 600 mpirun -np 2 "$rod" --quiet sweep_two.prm > sweep_two.txt 2>&1 || { 
 if /usr/bin/python3 "$here/compare_runs.py" sweep_one sweep_two sweep.csv; then
   ok "rod_cross_section sweep on 2 ranks: sweep.csv of one process (1e-12)"
 else bad "rod_cross_section sweep on 2 ranks differs"; fi
-timeout 900 "$plate" --quiet curve_one.prm > curve_one.txt 2>&1 || { bad "curve, one process"; cat curve_one.txt; }
+if [ -n "$done_curve" ] && [ -f "$done_curve/sweep.csv" ]; then
+  cp -r "$done_curve" curve_one
+else
+  timeout 900 "$plate" --quiet curve_one.prm > curve_one.txt 2>&1 || { bad "curve, one process"; cat curve_one.txt; }
+fi
 timeout 900 mpirun -np 2 "$plate" --quiet curve_two.prm > curve_two.txt 2>&1 || { bad "curve, 2 ranks"; cat curve_two.txt; }
 same_curve() {
 /usr/bin/python3 - "$1" "$2" <<'PY' || fail=1
