@@ -3,8 +3,9 @@
 
 Every number of the named tables and of summary.json (events, states,
 stiffness, ...) must agree to 1e-12 relative (of the larger, or for a
-table column of its largest value); wall times, file names and messages
-are not results. A resumed run goes on from bitwise the state it saved,
+table column of its largest value); wall times, file names, messages and
+mpi_ranks (the number of MPI ranks) are not results. A resumed run goes on
+from bitwise the state it saved,
 so it reaches the uninterrupted numbers to round-off or better. Prints
 what differs and exits 1 if anything does.
 """
@@ -13,7 +14,7 @@ import json
 import math
 import sys
 
-SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid"}
+SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid", "mpi_ranks"}
 
 
 def close(x, y, scale):

@@ -41,8 +41,9 @@ DEAL_II_NUM_THREADS=2 OPENBLAS_NUM_THREADS=2 timeout 300 "$exe" --quiet two_thre
 mpi 2 "$exe" two_ranks.prm > two_ranks.txt 2>&1; s=$?
 seam=$(sed -n 's/.*seam before point [0-9]*: .* agree to \([^ ]*\) .*/\1/p' two_ranks/log.txt)
 if [ $s -eq 0 ] && grep -q "on 2 MPI ranks" two_ranks/log.txt && [ ! -e two_ranks/rank-1 ] &&
-   [ -n "$seam" ] && python3 -c "import sys; sys.exit(not float('$seam') <= 1e-6)" && ! grep -q WARNING two_ranks/log.txt; then
-  ok "mpirun -np 2: exit 0, '2 MPI ranks' in the log, no rank directory left; the seam between the blocks checked: $seam (a warning above 1e-6)"
+   [ -n "$seam" ] && python3 -c "import sys; sys.exit(not float('$seam') <= 1e-6)" && ! grep -q WARNING two_ranks/log.txt &&
+   python3 -c "import json, sys; sys.exit(json.load(open('two_ranks/summary.json')).get('mpi_ranks') != 2)"; then
+  ok "mpirun -np 2: exit 0, '2 MPI ranks' in the log and mpi_ranks = 2 in summary.json, no rank directory left; the seam between the blocks checked: $seam (a warning above 1e-6)"
 else bad "mpirun -np 2: exit $s"; cat two_ranks.txt; fi
 /usr/bin/python3 "$here/compare_tables.py" one_thread two_threads two_ranks || fail=1
 

@@ -145,6 +145,9 @@ namespace cosmo
       j["parameter_file"] = options.parameter_file;
       j["status"]         = status;
       j["message"]        = message;
+      // Under mpirun: how many ranks shared the run (doc/parallel-runs.md).
+      if (ranks::size() > 1)
+        j["mpi_ranks"] = ranks::size();
       return j;
     }
 

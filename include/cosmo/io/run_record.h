@@ -94,7 +94,8 @@ namespace cosmo
 
       /**
        * The keys every summary.json starts with: application, version,
-       * parameter_file, status ("converged" or "failed"), message.
+       * parameter_file, status ("converged" or "failed"), message; and
+       * mpi_ranks, the number of ranks, under mpirun.
        */
       JSON
       summary() const;
