@@ -72,10 +72,9 @@ for case in 2:2 2:1 1:2; do
     cmp -s whole/table.csv $d/table.csv && ok "  ... its table.csv is the uninterrupted one, bitwise" ||
       { bad "  ... its table.csv differs from the uninterrupted one"; diff whole/table.csv $d/table.csv | head -4; }
   else
-    # Against the uninterrupted 2-rank table: the round-off R between one
-    # and two threads of 49 x 5 points is not measured again; one's is.
-    /usr/bin/python3 "$here/compare_tables.py" one_thread two_threads one_thread --resumed > /dev/null
-    /usr/bin/python3 "$here/compare_tables.py" whole whole $d --resumed | grep -v "same datasets\|attributes\|dimension" || fail=1
+    # Against the uninterrupted 2-rank table, to 10x Newton's tolerance (R,
+    # the round-off between thread counts, is not measured for this table).
+    /usr/bin/python3 "$here/compare_tables.py" whole whole $d --resumed || fail=1
   fi
 done
 exit $fail
