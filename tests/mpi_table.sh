@@ -53,18 +53,18 @@ else bad "mpirun -np 2: exit $s"; cat two_ranks.txt; fi
 # on 2 ranks, each point from the checkpoint of the rank that solved it or
 # solved from where an earlier rank stopped: the table of one process to
 # the tolerance above.
-table_of whole 33 40 > whole.prm
+table_of whole 97 40 > whole.prm
 mpi 2 "$exe" --quiet whole.prm > whole.txt 2>&1 || { bad "the uninterrupted 2-rank table failed"; cat whole.txt; }
 for case in 2:2 2:1 1:2; do
   from=${case%:*} to=${case#*:} d=stopped_$from-$to
-  table_of $d 33 40 > $d.prm
+  table_of $d 97 40 > $d.prm
   mpirun -np $from "$exe" --quiet $d.prm > $d-0.txt 2>&1 & pid=$!
   for _ in $(seq 1 600); do
-    [ -f $d/checkpoint.cosmo ] && { [ $from = 1 ] || [ -f $d/rank-1/checkpoint.cosmo ]; } && break; sleep 0.1; done
+    [ -f $d/checkpoint.cosmo ] && { [ $from = 1 ] || [ -f $d/rank-1/checkpoint.cosmo ]; } && break; sleep 0.02; done
   kill -TERM $pid; wait $pid 2>/dev/null; s1=$?
   rows=$(($(wc -l < $d/table.csv) - 1))
   mpi $to "$exe" --quiet --resume $d > $d-1.txt 2>&1; s2=$?
-  if [ $s1 -ne 0 ] && [ $rows -ge 1 ] && [ $rows -lt 165 ] && [ $s2 -eq 0 ] && [ -f $d/table.h5 ] &&
+  if [ $s1 -ne 0 ] && [ $rows -ge 1 ] && [ $rows -lt 485 ] && [ $s2 -eq 0 ] && [ -f $d/table.h5 ] &&
      [ ! -e $d/checkpoint.cosmo ] && [ ! -e $d/rank-1 ] && grep -q "going on\|resumed on" $d/log.txt; then
     ok "a table on $from rank(s) stopped by SIGTERM (exit $s1, $rows rows on rank 0), resumed on $to: exit 0, no checkpoint or rank directory left"
   else bad "$from-rank table resumed on $to: exits $s1 $s2, $rows rows"; cat $d-1.txt; fi

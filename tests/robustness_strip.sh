@@ -12,8 +12,8 @@ fail=0
 ok() { echo "  ok    $1"; }
 bad() { echo "  FAIL  $1"; fail=1; }
 table_of() {
-  sed -e "s|^\( *set Output directory *=\).*|\1 $1|" -e "s|^\( *set First range *=\).*|\1 0, 1, 11|" \
-      -e "s|^\( *set Second range *=\).*|\1 0, 0.2, 7|" -e "s|^\( *set Free strains *=\).*|\1 nu3|" \
+  sed -e "s|^\( *set Output directory *=\).*|\1 $1|" -e "s|^\( *set First range *=\).*|\1 0, 1, 21|" \
+      -e "s|^\( *set Second range *=\).*|\1 0, 0.2, 11|" -e "s|^\( *set Free strains *=\).*|\1 nu3|" \
       "$here/../parameter_files/strip/ribbon_comparison.prm"
 }
 table_of whole > whole.prm
@@ -21,15 +21,15 @@ timeout 300 "$exe" --quiet whole.prm > whole.txt 2>&1 || { bad "the uninterrupte
 for sig in KILL TERM; do
   table_of "$sig" > "$sig.prm"
   "$exe" --quiet "$sig.prm" > "$sig-0.txt" 2>&1 & pid=$!
-  for _ in $(seq 1 600); do [ -f "$sig/checkpoint.cosmo" ] && break; sleep 0.1; done
+  for _ in $(seq 1 600); do [ -f "$sig/checkpoint.cosmo" ] && break; sleep 0.02; done
   kill -$sig $pid; wait $pid 2>/dev/null; s1=$?
   rows=$(($(wc -l < "$sig/table.csv") - 1))
   timeout 300 "$exe" --quiet --resume "$sig" > "$sig-1.txt" 2>&1; s2=$?
   want=$([ $sig = KILL ] && echo 137 || echo 143)
-  if [ $s1 -eq "$want" ] && [ $rows -ge 1 ] && [ $rows -lt 77 ] && [ $s2 -eq 0 ] &&
+  if [ $s1 -eq "$want" ] && [ $rows -ge 1 ] && [ $rows -lt 231 ] && [ $s2 -eq 0 ] &&
      cmp -s whole/table.csv "$sig/table.csv" && [ -f "$sig/table.h5" ] && [ ! -f "$sig/checkpoint.cosmo" ] &&
      grep -q "going on after" "$sig/log.txt"; then
-    ok "a table stopped by SIG$sig after $rows of 77 points and resumed: the uninterrupted table.csv"
+    ok "a table stopped by SIG$sig after $rows of 231 points and resumed: the uninterrupted table.csv"
   else bad "table SIG$sig: exits $s1 $s2, $rows rows"; cat "$sig-1.txt"; diff whole/table.csv "$sig/table.csv" | head -4; fi
 done
 exit $fail

@@ -1,5 +1,6 @@
-// The strip's energy is differentiated here (Sacado, 16 local variables):
-// the heavy translation unit of part 2.
+// The strip's energy is assembled here: its derivatives by the chain rule
+// (kinematics::strip_energy_derivatives), or by nested Sacado in all 16 local
+// variables (COSMO_NESTED_AD, the reference): the heavy translation unit of part 2.
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -24,6 +25,7 @@
 #include "strip_problem.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -195,6 +197,10 @@ namespace cosmo
       for (unsigned int i = 0; i < dpc; ++i)
         comp[i] = fe->system_to_component_index(i).first;
       const QGauss<1> full(degree + 1), reduced(reduced_shear ? degree : degree + 1);
+      // COSMO_NESTED_AD: nested AD in all 16 local variables, the former
+      // assembly and the reference of the chain rule, to measure against
+      // (benchmarks/strip_table.sh).
+      static const bool nested_ad = std::getenv("COSMO_NESTED_AD") != nullptr;
 
       // Cells are independent: the worker runs on all cores, the copier adds
       // the contributions in cell order (so sums are reproducible).
@@ -231,13 +237,16 @@ namespace cosmo
                 const double eta = fev.quadrature_point(q)[0];
                 const double dA  = fev.JxW(q);
                 double       W   = 0;
-                materials::internal::differentiate<n_local>(
-                  z,
-                  [&](const auto &x) { return kinematics::strip_energy(x, eta, law, membrane_bending); },
-                  jacobian,
-                  W,
-                  g,
-                  H);
+                if (nested_ad)
+                  materials::internal::differentiate<n_local>(
+                    z,
+                    [&](const auto &x) { return kinematics::strip_energy(x, eta, law, membrane_bending); },
+                    jacobian,
+                    W,
+                    g,
+                    H);
+                else
+                  kinematics::strip_energy_derivatives(z, eta, law, membrane_bending, jacobian, W, g, H);
                 c.energy += W * dA;
                 for (unsigned int k = 0; k < n_strains; ++k)
                   c.resultants[k] += g[10 + k] * dA;

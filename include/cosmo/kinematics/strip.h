@@ -34,6 +34,43 @@ namespace cosmo
     }
 
     /**
+     * The director q = R E2 of the thickness line and its derivative along
+     * the width q' = R (omega x E2), with R = exp([theta]x), theta = (theta1,
+     * 0, theta3), and omega = T(theta) theta' (the right trivialization,
+     * rotation_dexp_right). The only transcendental part of the strip's
+     * kinematics: strip_energy_derivatives() differentiates it in its own
+     * four variables.
+     */
+    template <typename Number>
+    void
+    strip_director_and_derivative(const Number &         theta1,
+                                  const Number &         theta3,
+                                  const Number &         dtheta1,
+                                  const Number &         dtheta3,
+                                  std::array<Number, 3> &q,
+                                  std::array<Number, 3> &q1)
+    {
+      Tensor<1, 3, Number> theta;
+      theta[0]                     = theta1;
+      theta[2]                     = theta3;
+      const Tensor<2, 3, Number> R = rotation_exp(theta);
+      const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
+      std::array<Number, 3>      omega;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          q[i]     = R[i][1];
+          omega[i] = T[i][0] * dtheta1;
+          omega[i] += T[i][2] * dtheta3;
+        }
+      const std::array<Number, 3> w = {{-omega[2], Number(0.), omega[0]}}; // omega x E2
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          q1[i] = R[i][0] * w[0];
+          q1[i] += R[i][2] * w[2];
+        }
+    }
+
+    /**
        * The plate energy density at one point of the width line, as a
        * function of the local variables z (doc/specification/strip.md, helical Cauchy-Born
        * kinematics): y = eta E1 + u, Fp = [y' | nu + kappa x y],
@@ -57,25 +94,8 @@ namespace cosmo
         const V y  = {{eta + z[0], z[1], z[2]}};
         const V y1 = {{1. + z[3], z[4], z[5]}};
         const V nu = {{z[10], z[11], z[12]}}, kappa = {{z[13], z[14], z[15]}};
-        Tensor<1, 3, Number> theta;
-        theta[0]                     = z[6];
-        theta[2]                     = z[7];
-        const Tensor<2, 3, Number> R = rotation_exp(theta);
-        const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
-        // q = R E2; q' = R (omega x E2), omega = T theta' (right trivialization).
-        V q, omega, q1;
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            q[i]     = R[i][1];
-            omega[i] = T[i][0] * z[8];
-            omega[i] += T[i][2] * z[9];
-          }
-        const V w = {{-omega[2], Number(0.), omega[0]}}; // omega x E2
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            q1[i] = R[i][0] * w[0];
-            q1[i] += R[i][2] * w[2];
-          }
+        V q, q1;
+        strip_director_and_derivative(z[6], z[7], z[8], z[9], q, q1);
         V b = cross(kappa, y);
         for (unsigned int i = 0; i < 3; ++i)
           b[i] += nu[i];
@@ -83,6 +103,32 @@ namespace cosmo
         const auto s  = materials::plate_strains(y1, b, q, q1, q2);
         return membrane_bending ? law.membrane_bending_energy(s) : law.shear_energy(s);
       }
+
+    /**
+     * Value W, gradient g and (if with_hessian) Hessian H (row-major) of
+     * strip_energy() in its 16 local variables: what nested forward AD of
+     * strip_energy in 16 variables gives (materials::internal::differentiate),
+     * by the chain rule W = w(s(V(z))) instead, at about a tenth of the cost
+     * (benchmarks/README.md):
+     *  - V = (a1, a2, d, d1, d2), the five vectors plate_strains() takes;
+     *    V(z) is linear or bilinear in z but for the director (q, q'), which
+     *    is differentiated by AD in its four variables (theta, theta');
+     *  - s(V), the eight plate measures, each a dot product of two of the
+     *    vectors: the gradient by first-order AD, the (constant) Hessians
+     *    once by nested AD, so plate_strains() stays the one formula;
+     *  - w(s), the law, by nested AD in the eight measures.
+     * Then g = V_z^T w_V, H = V_z^T w_VV V_z + sum_i w_{V_i} (V_i)_zz.
+     * Checked against the nested AD of strip_energy (tests/kinematics.cc).
+     */
+    void
+    strip_energy_derivatives(const std::array<double, strip_local_variables> &z,
+                             double                                          eta,
+                             const materials::NaghdiPlateLaw &               law,
+                             bool                                            membrane_bending,
+                             bool                                            with_hessian,
+                             double &                                        W,
+                             std::array<double, strip_local_variables> &     g,
+                             std::array<double, strip_local_variables * strip_local_variables> &H);
 
   } // namespace kinematics
 } // namespace cosmo
