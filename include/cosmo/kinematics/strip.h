@@ -108,7 +108,7 @@ namespace cosmo
      * Value W, gradient g and (if with_hessian) Hessian H (row-major) of
      * strip_energy() in its 16 local variables: what nested forward AD of
      * strip_energy in 16 variables gives (materials::internal::differentiate),
-     * by the chain rule W = w(s(V(z))) instead, at about a tenth of the cost
+     * by the chain rule W = w(s(V(z))) instead, at a sixth of the cost
      * (benchmarks/README.md):
      *  - V = (a1, a2, d, d1, d2), the five vectors plate_strains() takes;
      *    V(z) is linear or bilinear in z but for the director (q, q'), which
