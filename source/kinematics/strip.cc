@@ -17,15 +17,25 @@ namespace cosmo
 
       using Vec = std::array<double, 3>;
 
-      Vec
-      cross(const Vec &a, const Vec &b)
-      {
-        return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-      }
       double
       dot(const Vec &a, const Vec &b)
       {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      }
+
+      /// C += A B for row-major A (M x K), B (K x N), skipping the zeros of A
+      /// (V_z and the law's Hessian are mostly zeros).
+      template <int M, int K, int N>
+      void
+      add_product(const std::array<double, M * K> &A,
+                  const std::array<double, K * N> &B,
+                  std::array<double, M * N> &      C)
+      {
+        for (int i = 0; i < M; ++i)
+          for (int l = 0; l < K; ++l)
+            if (A[K * i + l] != 0)
+              for (int j = 0; j < N; ++j)
+                C[N * i + j] += A[K * i + l] * B[N * l + j];
       }
 
       /// The eight measures of plate_strains() from V = (a1, a2, d, d1, d2).
@@ -247,11 +257,7 @@ namespace cosmo
       const auto &                                sVV = measure_hessians();
       std::array<double, n_vectors * n_vectors>   wVV{};
       std::array<double, n_measures * n_vectors>  wss_sV{};
-      for (int k = 0; k < n_measures; ++k)
-        for (int l = 0; l < n_measures; ++l)
-          if (wss[n_measures * k + l] != 0)
-            for (int b = 0; b < n_vectors; ++b)
-              wss_sV[n_vectors * k + b] += wss[n_measures * k + l] * sV[n_vectors * l + b];
+      add_product<n_measures, n_measures, n_vectors>(wss, sV, wss_sV);
       for (int k = 0; k < n_measures; ++k)
         for (int a = 0; a < n_vectors; ++a)
           {
@@ -262,11 +268,7 @@ namespace cosmo
 
       // H = V_z^T w_VV V_z ...
       std::array<double, n_vectors * n_z> wVV_Vz{};
-      for (int a = 0; a < n_vectors; ++a)
-        for (int b = 0; b < n_vectors; ++b)
-          if (wVV[n_vectors * a + b] != 0)
-            for (int c = 0; c < n_z; ++c)
-              wVV_Vz[n_z * a + c] += wVV[n_vectors * a + b] * Vz[n_z * b + c];
+      add_product<n_vectors, n_vectors, n_z>(wVV, Vz, wVV_Vz);
       H.fill(0.);
       for (int a = 0; a < n_vectors; ++a)
         for (int r = 0; r < n_z; ++r)

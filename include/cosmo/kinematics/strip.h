@@ -33,6 +33,18 @@ namespace cosmo
       return Tensor<1, 3>({Q[0][1], Q[1][1], Q[2][1]});
     }
 
+    /// a x b of 3-vectors stored as arrays (the strip's kinematics, any number type).
+    template <typename Number>
+    std::array<Number, 3>
+    cross(const std::array<Number, 3> &a, const std::array<Number, 3> &b)
+    {
+      std::array<Number, 3> c;
+      c[0] = a[1] * b[2] - a[2] * b[1];
+      c[1] = a[2] * b[0] - a[0] * b[2];
+      c[2] = a[0] * b[1] - a[1] * b[0];
+      return c;
+    }
+
     /**
      * The director q = R E2 of the thickness line and its derivative along
      * the width q' = R (omega x E2), with R = exp([theta]x), theta = (theta1,
@@ -84,13 +96,6 @@ namespace cosmo
                    const bool                         membrane_bending)
       {
         using V = std::array<Number, 3>;
-        auto cross = [](const V &a, const V &b) {
-          V c;
-          c[0] = a[1] * b[2] - a[2] * b[1];
-          c[1] = a[2] * b[0] - a[0] * b[2];
-          c[2] = a[0] * b[1] - a[1] * b[0];
-          return c;
-        };
         const V y  = {{eta + z[0], z[1], z[2]}};
         const V y1 = {{1. + z[3], z[4], z[5]}};
         const V nu = {{z[10], z[11], z[12]}}, kappa = {{z[13], z[14], z[15]}};
