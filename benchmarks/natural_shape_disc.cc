@@ -5,6 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cosmo/io/ranks.h>
+
 #include "cross_section_problem.h"
 
 #include <chrono>
@@ -18,6 +20,7 @@ int
 main(int argc, char **argv)
 {
   // All cores for the assembly (as the application does).
+  cosmo::io::ranks::prepare_single_process_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   const unsigned int max_ref = argc > 1 ? std::atoi(argv[1]) : 5;
   std::cout << "natural shape of the unit disc, axial growth g = 1 + 0.3 X1, Q2\n"

@@ -4,10 +4,11 @@
 # zero axial force (nu3 free), strip w = 1, h = 0.02, 20 graded cells, Q2
 # (205 field DoFs), 1600 points, on one process with all cores:
 #   - as the issue was filed: nested AD of the energy in all 16 local
-#     variables, Newton's first Jacobian refactorized (COSMO_NESTED_AD=1
-#     COSMO_NO_REUSE=1);
-#   - with the factorization reused (COSMO_NESTED_AD=1);
-#   - now: the energy's Hessian by the chain rule through the plate measures.
+#     variables, Newton's first Jacobian refactorized, KINSOL's J p by a
+#     difference quotient (COSMO_NESTED_AD=1 COSMO_NO_REUSE=1 COSMO_DQ_JP=1);
+#   - with the factorization reused (COSMO_NESTED_AD=1 COSMO_DQ_JP=1);
+#   - now: the energy's Hessian by the chain rule through the plate measures,
+#     and J p from the solve (no residual for it).
 # Prints, per variant, the whole-process wall seconds (median of REPEATS),
 # the phases of summary.json (median run) and the ratio against the first;
 # and the largest difference of the tables, per column, in units of the
@@ -45,8 +46,8 @@ EOF
 echo "40 x 40 strip table, 205 field DoFs, $(nproc) cores, $R runs each (median)"
 for variant in filed reuse now; do
   case $variant in
-    filed) env="COSMO_NESTED_AD=1 COSMO_NO_REUSE=1" ;;
-    reuse) env="COSMO_NESTED_AD=1" ;;
+    filed) env="COSMO_NESTED_AD=1 COSMO_NO_REUSE=1 COSMO_DQ_JP=1" ;;
+    reuse) env="COSMO_NESTED_AD=1 COSMO_DQ_JP=1" ;;
     now)   env="" ;;
   esac
   prm "$dir/$variant" > "$dir/$variant.prm"

@@ -5,6 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cosmo/io/ranks.h>
+
 #include "strip_problem.h"
 
 #include <chrono>
@@ -18,6 +20,7 @@ int
 main(int argc, char **argv)
 {
   // All cores for the assembly (as the application does).
+  cosmo::io::ranks::prepare_single_process_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   std::cout << "strip w = 1, h = 0.02, twist to kappa3 = 0.8 at zero axial force, 40 states, Q2\n"
             << std::setw(7) << "cells" << std::setw(7) << "DoFs" << std::setw(9) << "states"

@@ -6,6 +6,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <cosmo/io/ranks.h>
+#include <cosmo/solvers/newton.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/sparse_direct.h>
 
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <map>
 
 using namespace dealii;
@@ -589,14 +592,58 @@ namespace
               d.linfty_norm() <= 1e3 * 2.2e-16 * 8 / smallest * x[0].linfty_norm());
       }
   }
+
+  /**
+   * solvers::dq_point_of, which recognizes KINSOL's difference-quotient point
+   * u + sigma p (newton_solve answers J p there from the solve): found with
+   * KINSOL's sigma, sigma recovered; any other point not.
+   */
+  void
+  dq_point()
+  {
+    const unsigned int n = 1000;
+    Vector<double>     u(n), p(n), v(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        u[i] = 1e3 * std::sin(0.37 * i) + (i % 7 == 0 ? 0. : 1.);
+        p[i] = 1e-4 * std::cos(1.1 * i);
+      }
+    // kinLsDQJtimes (SUNDIALS 6, unit scaling): sign(u.p) sqrt(uround)
+    // max(|u.p|, ||p||_1) / ||p||^2.
+    const double up    = u * p;
+    const double sigma = (up >= 0 ? 1. : -1.) * std::sqrt(std::numeric_limits<double>::epsilon()) *
+                         std::max(std::abs(up), p.l1_norm()) / p.norm_sqr();
+    for (unsigned int i = 0; i < n; ++i)
+      v[i] = u[i] + sigma * p[i];
+    double found = 0;
+    check("dq point: u + sigma p is found", solvers::dq_point_of(v, u, p, found));
+    check_close("dq point: sigma recovered", found, sigma, 1e-6);
+    // Off the line by 1e-3 of sigma p in one entry: a different point.
+    Vector<double> w = v;
+    w[17] += 1e-3 * sigma * p.linfty_norm();
+    check("dq point: a point off u + sigma p is not", !solvers::dq_point_of(w, u, p, found));
+    // A line search's point u + t p is on the line but not KINSOL's
+    // difference quotient: it must be assembled, never answered from the
+    // linear model (which would make a full Newton step look converged).
+    for (const double t : {1., 0.25, 1e-3, 2 * sigma})
+      {
+        Vector<double> z = u;
+        z.add(t, p);
+        check("dq point: a line search point u + " + std::to_string(t) + " p is not",
+              !solvers::dq_point_of(z, u, p, found));
+      }
+    check("dq point: u itself is not", !solvers::dq_point_of(u, u, p, found));
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
+  cosmo::io::ranks::prepare_single_process_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
                                    {"secondary_bifurcation", secondary_bifurcation},
-                                   {"bordered_ordering", bordered_ordering}};
+                                   {"bordered_ordering", bordered_ordering},
+                                   {"dq_point", dq_point}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

@@ -10,6 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include <cosmo/io/ranks.h>
 #include <cosmo/geometry/cross_section.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/material.h>
@@ -681,6 +682,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  cosmo::io::ranks::prepare_single_process_mpi();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {
     {"rectangle_geo", rectangle_geo},

@@ -101,6 +101,13 @@ namespace cosmo
       setup_jacobian(const Vector<double> &U) override;
       int
       solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
+      /// A direct solve on the constrained space; the residual vanishes on
+      /// constrained rows, where the solve's distribute() sets the slaves.
+      bool
+      solves_exactly() const override
+      {
+        return true;
+      }
       void
       residual_weights(Vector<double> &w) const override;
       /// 0 on the DoFs the constraints determine (mirror edges, alpha off the rim).

@@ -34,6 +34,20 @@ namespace cosmo
         }
       } // namespace
 
+      void
+      prepare_single_process_mpi()
+      {
+        // The variables a launcher sets (Open MPI's mpirun, PMIx, PMI-1/2 of
+        // MPICH and SLURM's srun).
+        for (const char *launched :
+             {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "SLURM_STEP_ID"})
+          if (std::getenv(launched) != nullptr)
+            return;
+        ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+        ::setenv("OMPI_MCA_pml", "ob1", 0);
+        ::setenv("OMPI_MCA_btl", "self,vader", 0);
+      }
+
       unsigned int
       rank()
       {

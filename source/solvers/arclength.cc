@@ -355,6 +355,14 @@ namespace cosmo
           return 0;
         }
 
+        /// The bordering is exact given the problem's solves (with its
+        /// dR/dlambda, a difference quotient of h^2 ~ 1e-12 relative error).
+        bool
+        solves_exactly() const override
+        {
+          return problem.solves_exactly();
+        }
+
         void
         residual_weights(Vector<double> &w) const override
         {

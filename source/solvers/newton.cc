@@ -4,6 +4,8 @@
 #include <cosmo/solvers/newton.h>
 
 #include <cmath>
+#include <limits>
+#include <cstdlib>
 #include <sstream>
 
 namespace cosmo
@@ -40,6 +42,46 @@ namespace cosmo
       prm.leave_subsection();
     }
 
+    bool
+    dq_point_of(const Vector<double> &v,
+                const Vector<double> &u,
+                const Vector<double> &p,
+                double &              sigma)
+    {
+      // v = u + sigma p (as KINSOL forms it, rounded) for one scalar sigma:
+      // sigma by least squares, then every entry within round-off of u's
+      // and v's size. The difference v - u carries the rounding of u, about
+      // 1e-16 |u|, against sigma |p| ~ 1e-8 |u| (KINSOL's sigma): 1e-6 of
+      // sigma |p| separates a point on the line from any other.
+      if (v.size() != u.size() || v.size() != p.size())
+        return false;
+      const double pp = p.norm_sqr();
+      if (!(pp > 0))
+        return false;
+      double dp = 0;
+      for (unsigned int i = 0; i < v.size(); ++i)
+        dp += (v[i] - u[i]) * p[i];
+      sigma = dp / pp;
+      // And only KINSOL's own sigma (kinLsDQJtimes, after Brown and Saad,
+      // with the unit solution scaling newton_solve leaves): sign(u.p)
+      // sqrt(uround) max(|u.p|, ||p||_1) / ||p||_2^2. No line-search point
+      // u + t p has t equal to it by chance; another KINSOL that chose
+      // sigma otherwise would get its residuals assembled, as before.
+      double up = 0, p1 = 0;
+      for (unsigned int i = 0; i < v.size(); ++i)
+        up += u[i] * p[i], p1 += std::abs(p[i]);
+      const double kinsol_sigma = (up >= 0 ? 1. : -1.) *
+                                  std::sqrt(std::numeric_limits<double>::epsilon()) *
+                                  std::max(std::abs(up), p1) / pp;
+      if (!std::isfinite(sigma) || std::abs(sigma - kinsol_sigma) > 1e-6 * std::abs(kinsol_sigma))
+        return false;
+      const double scale = std::abs(sigma) * p.linfty_norm();
+      for (unsigned int i = 0; i < v.size(); ++i)
+        if (std::abs(v[i] - u[i] - sigma * p[i]) > 1e-6 * scale + 1e-15 * std::abs(u[i]))
+          return false;
+      return true;
+    }
+
     NewtonResult
     newton_solve(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings)
     {
@@ -65,11 +107,31 @@ namespace cosmo
       // iterate, which the check below would otherwise assemble again.
       Vector<double> last_u, last_r;
       int            last_status = -1;
+      // The last Newton solve J p = b, for the residual KINSOL asks next.
+      Vector<double> solved_rhs, solved_p;
+      bool           jp_pending = false;
       kinsol.residual      = [&](const Vector<double> &u, Vector<double> &r) {
         // SIGINT/SIGTERM: end this solve now (an unrecoverable error for
         // KINSOL), then report the interruption below, not a failure.
         if (io::pending_signal() != 0)
           return -1;
+        // Right after a solve, KINSOL approximates J p by the difference
+        // quotient (R(u + sigma p) - R(u)) / sigma (kinLsDQJtimes: the
+        // deal.II 9.4 wrapper offers no J p of its own). For an exact solve
+        // J p = b: return R(u) + sigma b, the quotient is then J p itself,
+        // without an assembly.
+        if (jp_pending)
+          {
+            jp_pending = false;
+            double sigma = 0;
+            if (dq_point_of(u, last_u, solved_p, sigma))
+              {
+                r = last_r;
+                r.add(sigma, solved_rhs);
+                ++result.exact_jacobian_products;
+                return last_status;
+              }
+          }
         last_status = system.residual(u, r);
         last_u      = u;
         last_r      = r;
@@ -78,8 +140,16 @@ namespace cosmo
       kinsol.setup_jacobian = [&](const Vector<double> &u, const Vector<double> &) {
         return system.setup_jacobian(u);
       };
+      static const bool exact_jp = std::getenv("COSMO_DQ_JP") == nullptr; // to measure against
       kinsol.solve_with_jacobian = [&](const Vector<double> &rhs, Vector<double> &dst, double) {
-        return system.solve_with_jacobian(rhs, dst);
+        const int status = system.solve_with_jacobian(rhs, dst);
+        jp_pending       = status == 0 && exact_jp && last_status == 0 && system.solves_exactly();
+        if (jp_pending)
+          {
+            solved_rhs = rhs;
+            solved_p   = dst;
+          }
+        return status;
       };
 
       Vector<double> U0 = U;

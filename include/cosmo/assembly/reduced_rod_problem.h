@@ -181,6 +181,13 @@ namespace cosmo
       setup_jacobian(const Vector<double> &U) override;
       int
       solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override;
+      /// The bordered direct solve of the whole Jacobian (prescribed strains:
+      /// identity rows), no constraints besides: J dst = rhs.
+      bool
+      solves_exactly() const override
+      {
+        return true;
+      }
       void
       residual_weights(Vector<double> &w) const override;
       void

@@ -39,6 +39,19 @@ namespace cosmo
       virtual int
       solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) = 0;
       /**
+       * Whether solve_with_jacobian() solves J dst = rhs exactly (a direct
+       * solve of the Jacobian of residual(), no constraints that the solve
+       * imposes and the residual does not). Then J p, which KINSOL needs once
+       * per iteration for its line search and would approximate by one more
+       * residual at u + sigma p, is known without it: the right-hand side
+       * of the solve that gave p (newton_solve).
+       */
+      virtual bool
+      solves_exactly() const
+      {
+        return false;
+      }
+      /**
        * Weights w (one per equation) that make the residual dimensionless:
        * Newton converges when max_i |w_i R_i| < relative tolerance. Rows of
        * different kinds (nodal forces, constraints, resultants) have
@@ -73,7 +86,16 @@ namespace cosmo
     {
       unsigned int iterations    = 0;
       double       residual_norm = 0; ///< weighted max-norm of R at the solution
+      /// KINSOL's products J p answered from the solve (solves_exactly()).
+      unsigned int exact_jacobian_products = 0;
     };
+
+    /**
+     * Whether v = u + sigma p for one scalar sigma, to the rounding of the
+     * sum (KINSOL's difference-quotient point); sigma on return.
+     */
+    bool
+    dq_point_of(const Vector<double> &v, const Vector<double> &u, const Vector<double> &p, double &sigma);
 
     /// Solve R(U) = 0 from the initial guess U; throws NewtonFailure.
     NewtonResult
