@@ -20,8 +20,7 @@ int
 main(int argc, char **argv)
 {
   // All cores for the assembly (as the application does).
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv);
   const unsigned int max_ref = argc > 1 ? std::atoi(argv[1]) : 5;
   std::cout << "natural shape of the unit disc, axial growth g = 1 + 0.3 X1, Q2\n"
             << std::setw(6) << "ref" << std::setw(9) << "DoFs" << std::setw(8) << "Newton"

@@ -7,9 +7,9 @@
 // directory:
 //   ./benchmark_plate_rod_growth [max refinements = 5]
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <cosmo/io/ranks.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include "plate_rod_problem.h"
 
@@ -24,8 +24,7 @@ using namespace cosmo;
 int
 main(int argc, char **argv)
 {
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv);
   const unsigned int               max_refinements = argc > 1 ? std::stoi(argv[1]) : 5;
   std::cout << "domain     location   refs     DoFs  steps  t_critical        resolution  event "
                "factorizations  to critical [s]  per step [s]  Jacobian [s]  factorization [s]  "

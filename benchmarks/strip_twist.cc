@@ -20,8 +20,7 @@ int
 main(int argc, char **argv)
 {
   // All cores for the assembly (as the application does).
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv);
   std::cout << "strip w = 1, h = 0.02, twist to kappa3 = 0.8 at zero axial force, 40 states, Q2\n"
             << std::setw(7) << "cells" << std::setw(7) << "DoFs" << std::setw(9) << "states"
             << std::setw(10) << "Newton" << std::setw(11) << "assembly" << std::setw(11)

@@ -7,8 +7,8 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <cosmo/io/ranks.h>
-#include <cosmo/solvers/newton.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/newton.h>
 #include <cosmo/solvers/sparse_direct.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -617,7 +617,19 @@ namespace
       v[i] = u[i] + sigma * p[i];
     double found = 0;
     check("dq point: u + sigma p is found", solvers::dq_point_of(v, u, p, found));
-    check_close("dq point: sigma recovered", found, sigma, 1e-6);
+    check_close("dq point: KINSOL's sigma", found, sigma, 1e-12);
+    // Found at any size of u: the rounding of u + sigma p grows with |u|
+    // (here 1e10 |p| / sigma |p| ~ 1e2 of the step), the check with it.
+    {
+      Vector<double> U = u, V(n);
+      U *= 1e7;
+      const double uP = U * p;
+      const double s  = (uP >= 0 ? 1. : -1.) * std::sqrt(std::numeric_limits<double>::epsilon()) *
+                       std::max(std::abs(uP), p.l1_norm()) / p.norm_sqr();
+      for (unsigned int i = 0; i < n; ++i)
+        V[i] = U[i] + s * p[i];
+      check("dq point: found for |u| = 1e10 too", solvers::dq_point_of(V, U, p, found));
+    }
     // Off the line by 1e-3 of sigma p in one entry: a different point.
     Vector<double> w = v;
     w[17] += 1e-3 * sigma * p.linfty_norm();
@@ -634,16 +646,113 @@ namespace
       }
     check("dq point: u itself is not", !solvers::dq_point_of(u, u, p, found));
   }
+
+  /// R(U) = A U + U^3 - f (A the 1-D Laplacian plus 1): a small Newton
+  /// problem whose solves are exact (LAPACK), for newton_solve's J p.
+  class CubicSystem : public solvers::NonlinearSystem
+  {
+  public:
+    explicit CubicSystem(const unsigned int n, const bool exact)
+      : n(n)
+      , exact(exact)
+      , J(n, n)
+    {}
+    unsigned int
+    n_unknowns() const override
+    {
+      return n;
+    }
+    int
+    residual(const Vector<double> &U, Vector<double> &R) override
+    {
+      ++residuals;
+      R.reinit(n);
+      for (unsigned int i = 0; i < n; ++i)
+        R[i] = 3 * U[i] - (i > 0 ? U[i - 1] : 0.) - (i + 1 < n ? U[i + 1] : 0.) + std::pow(U[i], 3) -
+               (1 + std::sin(0.3 * i));
+      return 0;
+    }
+    int
+    setup_jacobian(const Vector<double> &U) override
+    {
+      J.reinit(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          J(i, i) = 3 + 3 * U[i] * U[i];
+          if (i > 0)
+            J(i, i - 1) = -1;
+          if (i + 1 < n)
+            J(i, i + 1) = -1;
+        }
+      J.compute_lu_factorization();
+      return 0;
+    }
+    int
+    solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override
+    {
+      dst = rhs;
+      J.solve(dst);
+      return 0;
+    }
+    bool
+    solves_exactly() const override
+    {
+      return exact;
+    }
+    unsigned int residuals = 0;
+
+  private:
+    const unsigned int       n;
+    const bool               exact;
+    LAPACKFullMatrix<double> J;
+  };
+
+  /**
+   * newton_solve with exact solves answers every J p of KINSOL from the
+   * solve (each iteration, so the installed KINSOL uses the sigma
+   * dq_point_of knows), one residual assembly fewer per iteration, and the
+   * same iterates as with the difference quotient.
+   */
+  void
+  newton_exact_jp()
+  {
+    const unsigned int      n = 50;
+    solvers::NewtonSettings settings;
+    settings.relative_tolerance = 1e-12;
+    std::vector<Vector<double>>      U(2, Vector<double>(n));
+    std::vector<solvers::NewtonResult> r(2);
+    std::vector<unsigned int>        residuals(2);
+    for (const bool exact : {false, true})
+      {
+        CubicSystem system(n, exact);
+        for (unsigned int i = 0; i < n; ++i)
+          U[exact][i] = 2 * std::cos(0.7 * i); // far enough for 5 or more iterations
+        r[exact]         = solvers::newton_solve(system, U[exact], settings);
+        residuals[exact] = system.residuals;
+      }
+    Vector<double> d = U[1];
+    d -= U[0];
+    std::cout << "Newton: " << r[0].iterations << " / " << r[1].iterations << " iterations, "
+              << residuals[0] << " / " << residuals[1] << " residuals, " << r[1].exact_jacobian_products
+              << " J p from the solve; states differ by " << d.linfty_norm() << "\n";
+    check("exact J p: as many iterations", r[0].iterations == r[1].iterations && r[1].iterations >= 4);
+    check("exact J p: every iteration's J p from the solve",
+          r[1].exact_jacobian_products == r[1].iterations && r[0].exact_jacobian_products == 0);
+    check("exact J p: one residual fewer per iteration", residuals[1] + r[1].iterations == residuals[0]);
+    // Both converge quadratically far below the tolerance: the states agree
+    // to round-off of |U| ~ 1 (the difference quotient's line-search values
+    // differ from the exact ones only in the last digits).
+    check("exact J p: the same solution", d.linfty_norm() <= 1e-13);
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
                                    {"secondary_bifurcation", secondary_bifurcation},
                                    {"bordered_ordering", bordered_ordering},
-                                   {"dq_point", dq_point}};
+                                   {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

@@ -13,8 +13,8 @@
 #include "reduced_rod_checks.h"
 #include "test_tools.h"
 
-#include <cosmo/io/ranks.h>
 #include <cosmo/analysis/section_properties.h>
+#include <cosmo/io/ranks.h>
 
 #include <unistd.h>
 
@@ -1087,8 +1087,7 @@ Physical Curve("outer", 1) = {1:6};
 int
 main(int argc, char **argv)
 {
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {
     {"small_strain_circle", small_strain_circle},
     {"small_strain_rectangle", small_strain_rectangle},

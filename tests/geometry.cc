@@ -10,9 +10,9 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
-#include <cosmo/io/ranks.h>
 #include <cosmo/geometry/cross_section.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/materials/material.h>
 
 #include "test_tools.h"
@@ -682,8 +682,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {
     {"rectangle_geo", rectangle_geo},
     {"circle_area_convergence", circle_area_convergence},

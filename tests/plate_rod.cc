@@ -4,8 +4,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <cosmo/io/ranks.h>
 #include <cosmo/analysis/plate_rod_thresholds.h>
+#include <cosmo/io/ranks.h>
 
 #include "plate_rod_problem.h"
 #include "test_tools.h"
@@ -1088,8 +1088,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv);
   cosmo_test::Cases cases = {{"lame_state", lame_state},
                              {"tangent_fd", tangent_fd},
                              {"axisymmetric_threshold", axisymmetric_threshold},

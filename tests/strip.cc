@@ -8,8 +8,8 @@
 #include "cross_section_problem.h"
 #include "strip_problem.h"
 #include "reduced_rod_checks.h"
-#include <cosmo/io/ranks.h>
 #include <cosmo/analysis/section_properties.h>
+#include <cosmo/io/ranks.h>
 
 #include "test_tools.h"
 
@@ -625,8 +625,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  cosmo::io::ranks::prepare_single_process_mpi();
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto mpi = cosmo::io::ranks::init_mpi(argc, argv, 1);
   const cosmo_test::Cases cases = {{"small_strain", small_strain},
                                    {"resultants_and_stiffness_fd", resultants_and_stiffness_fd},
                                    {"tangent_fd", tangent_fd},

@@ -212,8 +212,7 @@ namespace cosmo
       // MPI is initialised for HDF5/pvtu output and MUMPS, and for the ranks
       // of mpirun (io/ranks.h); the node's cores are divided among the
       // ranks' assembly threads.
-      ranks::prepare_single_process_mpi();
-      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
+      const auto mpi = ranks::init_mpi(argc, argv);
       // Errors below are reported by us, not by deal.II's abort-on-exception.
       deal_II_exceptions::disable_abort_on_exception();
       // SIGINT/SIGTERM end the run between steps, with its files complete.

@@ -355,8 +355,10 @@ namespace cosmo
           return 0;
         }
 
-        /// The bordering is exact given the problem's solves (with its
-        /// dR/dlambda, a difference quotient of h^2 ~ 1e-12 relative error).
+        /// The bordering solves its matrix exactly when the problem's solves
+        /// are exact: J p is then the right-hand side for the linear model
+        /// KINSOL's line search measures (dR/dlambda in it is a central
+        /// difference, 1e-12 relative, the same in both).
         bool
         solves_exactly() const override
         {

@@ -4,8 +4,8 @@
 #include <cosmo/solvers/newton.h>
 
 #include <cmath>
-#include <limits>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace cosmo
@@ -48,36 +48,27 @@ namespace cosmo
                 const Vector<double> &p,
                 double &              sigma)
     {
-      // v = u + sigma p (as KINSOL forms it, rounded) for one scalar sigma:
-      // sigma by least squares, then every entry within round-off of u's
-      // and v's size. The difference v - u carries the rounding of u, about
-      // 1e-16 |u|, against sigma |p| ~ 1e-8 |u| (KINSOL's sigma): 1e-6 of
-      // sigma |p| separates a point on the line from any other.
+      // KINSOL's own sigma (kinLsDQJtimes, after Brown and Saad, with the
+      // unit solution scaling newton_solve leaves): sign(u.p) sqrt(uround)
+      // max(|u.p|, ||p||_1) / ||p||_2^2. Only that point is answered: no
+      // line-search point u + t p has t equal to it, and another KINSOL that
+      // chose sigma otherwise gets its residuals assembled, as before.
       if (v.size() != u.size() || v.size() != p.size())
         return false;
+      double up = 0, p1 = 0;
+      for (unsigned int i = 0; i < u.size(); ++i)
+        up += u[i] * p[i], p1 += std::abs(p[i]);
       const double pp = p.norm_sqr();
       if (!(pp > 0))
         return false;
-      double dp = 0;
+      const double eps = std::numeric_limits<double>::epsilon();
+      sigma = (up >= 0 ? 1. : -1.) * std::sqrt(eps) * std::max(std::abs(up), p1) / pp;
+      // v = u + sigma p entry by entry, to the rounding of the sum (eps/2 of
+      // |v_i|) and of our sigma against KINSOL's: the same formula, its sums
+      // in another order (relative 1e-6 covers n eps for any n < 1e9).
+      const double sigma_p = std::abs(sigma) * p.linfty_norm();
       for (unsigned int i = 0; i < v.size(); ++i)
-        dp += (v[i] - u[i]) * p[i];
-      sigma = dp / pp;
-      // And only KINSOL's own sigma (kinLsDQJtimes, after Brown and Saad,
-      // with the unit solution scaling newton_solve leaves): sign(u.p)
-      // sqrt(uround) max(|u.p|, ||p||_1) / ||p||_2^2. No line-search point
-      // u + t p has t equal to it by chance; another KINSOL that chose
-      // sigma otherwise would get its residuals assembled, as before.
-      double up = 0, p1 = 0;
-      for (unsigned int i = 0; i < v.size(); ++i)
-        up += u[i] * p[i], p1 += std::abs(p[i]);
-      const double kinsol_sigma = (up >= 0 ? 1. : -1.) *
-                                  std::sqrt(std::numeric_limits<double>::epsilon()) *
-                                  std::max(std::abs(up), p1) / pp;
-      if (!std::isfinite(sigma) || std::abs(sigma - kinsol_sigma) > 1e-6 * std::abs(kinsol_sigma))
-        return false;
-      const double scale = std::abs(sigma) * p.linfty_norm();
-      for (unsigned int i = 0; i < v.size(); ++i)
-        if (std::abs(v[i] - u[i] - sigma * p[i]) > 1e-6 * scale + 1e-15 * std::abs(u[i]))
+        if (std::abs(v[i] - u[i] - sigma * p[i]) > 1e-6 * sigma_p + 2 * eps * (std::abs(u[i]) + std::abs(v[i])))
           return false;
       return true;
     }

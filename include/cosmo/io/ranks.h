@@ -1,6 +1,8 @@
 #ifndef cosmo_io_ranks_h
 #define cosmo_io_ranks_h
 
+#include <deal.II/base/mpi.h>
+
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/io/output.h>
 
@@ -48,6 +50,18 @@ namespace cosmo
        */
       void
       prepare_single_process_mpi();
+
+      /**
+       * What every main() of the suite constructs first: deal.II's
+       * MPI_InitFinalize after prepare_single_process_mpi() (C++17 returns
+       * the non-movable object in place).
+       */
+      inline Utilities::MPI::MPI_InitFinalize
+      init_mpi(int &argc, char **&argv, const unsigned int max_threads = numbers::invalid_unsigned_int)
+      {
+        prepare_single_process_mpi();
+        return Utilities::MPI::MPI_InitFinalize(argc, argv, max_threads);
+      }
 
       /// This process' rank in MPI_COMM_WORLD, and their number (0 and 1 without MPI).
       unsigned int

@@ -91,8 +91,8 @@ namespace cosmo
     };
 
     /**
-     * Whether v = u + sigma p for one scalar sigma, to the rounding of the
-     * sum (KINSOL's difference-quotient point); sigma on return.
+     * Whether v = u + sigma p with KINSOL's difference-quotient sigma (of u
+     * and p), to the rounding of the sum; that sigma on return.
      */
     bool
     dq_point_of(const Vector<double> &v, const Vector<double> &u, const Vector<double> &p, double &sigma);
