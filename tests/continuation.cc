@@ -59,6 +59,7 @@ namespace
     int
     residual(const Vector<double> &U, Vector<double> &R) override
     {
+      ++residuals;
       R.reinit(n);
       FullMatrix<double> H(n, n);
       evaluate(U, lambda, R, H);
@@ -100,6 +101,13 @@ namespace
     {
       return negative;
     }
+    bool
+    solves_exactly() const override
+    {
+      return exact_solves;
+    }
+    bool         exact_solves = false; ///< declare the (exact, LAPACK) solves exact
+    unsigned int residuals    = 0;     ///< residual() calls
     double
     jacobian_abs_form(const Vector<double> &v) const override
     {
@@ -647,64 +655,27 @@ namespace
     check("dq point: u itself is not", !solvers::dq_point_of(u, u, p, found));
   }
 
-  /// R(U) = A U + U^3 - f (A the 1-D Laplacian plus 1): a small Newton
-  /// problem whose solves are exact (LAPACK), for newton_solve's J p.
-  class CubicSystem : public solvers::NonlinearSystem
+  /// R(U) = A U + U^3 - f (A the 1-D Laplacian plus 1, the energy's
+  /// Hessian A + 3 diag(U^2)): a small Newton problem whose solves are exact
+  /// (LAPACK), for newton_solve's J p (lambda plays no part).
+  class Cubic : public DenseProblem
   {
   public:
-    explicit CubicSystem(const unsigned int n, const bool exact)
-      : n(n)
-      , exact(exact)
-      , J(n, n)
-    {}
-    unsigned int
-    n_unknowns() const override
+    using DenseProblem::DenseProblem;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double, Vector<double> &R, FullMatrix<double> &H) override
     {
-      return n;
-    }
-    int
-    residual(const Vector<double> &U, Vector<double> &R) override
-    {
-      ++residuals;
-      R.reinit(n);
-      for (unsigned int i = 0; i < n; ++i)
-        R[i] = 3 * U[i] - (i > 0 ? U[i - 1] : 0.) - (i + 1 < n ? U[i + 1] : 0.) + std::pow(U[i], 3) -
-               (1 + std::sin(0.3 * i));
-      return 0;
-    }
-    int
-    setup_jacobian(const Vector<double> &U) override
-    {
-      J.reinit(n, n);
       for (unsigned int i = 0; i < n; ++i)
         {
-          J(i, i) = 3 + 3 * U[i] * U[i];
-          if (i > 0)
-            J(i, i - 1) = -1;
-          if (i + 1 < n)
-            J(i, i + 1) = -1;
+          R[i] = 3 * U[i] + std::pow(U[i], 3) - (1 + std::sin(0.3 * i));
+          H(i, i) = 3 + 3 * U[i] * U[i];
+          for (const unsigned int k : {i - 1, i + 1})
+            if (k < n)
+              R[i] -= U[k], H(i, k) = -1;
         }
-      J.compute_lu_factorization();
-      return 0;
     }
-    int
-    solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst) override
-    {
-      dst = rhs;
-      J.solve(dst);
-      return 0;
-    }
-    bool
-    solves_exactly() const override
-    {
-      return exact;
-    }
-    unsigned int residuals = 0;
-
-  private:
-    const unsigned int       n;
-    const bool               exact;
-    LAPACKFullMatrix<double> J;
   };
 
   /**
@@ -724,7 +695,8 @@ namespace
     std::vector<unsigned int>        residuals(2);
     for (const bool exact : {false, true})
       {
-        CubicSystem system(n, exact);
+        Cubic system(n);
+        system.exact_solves = exact;
         for (unsigned int i = 0; i < n; ++i)
           U[exact][i] = 2 * std::cos(0.7 * i); // far enough for 5 or more iterations
         r[exact]         = solvers::newton_solve(system, U[exact], settings);
