@@ -6,6 +6,7 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
+#include <cosmo/solvers/sparse_direct.h>
 
 #include <filesystem>
 #include <cmath>
@@ -341,6 +342,8 @@ namespace cosmo
             options.quiet = true;
           ranks::share_cores();
           run(prm, options);
+          // The ranks serving rank 0's factorizations (a one-path run) stop.
+          solvers::factorization_ranks::release();
           // A rank done early sleeps until the others are, instead of
           // spinning in MPI_Finalize.
           ranks::wait_for_all();

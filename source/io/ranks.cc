@@ -2,8 +2,11 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <cosmo/io/ranks.h>
+#include <cosmo/solvers/sparse_direct.h>
 
 #include <dlfcn.h>
+#include <sched.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -152,21 +155,56 @@ namespace cosmo
           }
       }
 
+      namespace
+      {
+        /**
+         * mpirun binds each rank to a core of its own (Open MPI's default
+         * for two ranks or fewer): rank 0 of a one-path run, whose threads
+         * are to use the cores of the sleeping ranks, takes the node's
+         * CPUs back, for every thread it has (the kernel keeps the
+         * process within its cgroup's CPUs). Measured: the Jacobian of the
+         * plate dome took twice as long on one core (benchmarks/README.md).
+         */
+        void
+        use_all_cores()
+        {
+#ifdef __linux__
+          const long n = ::sysconf(_SC_NPROCESSORS_CONF);
+          cpu_set_t  all;
+          CPU_ZERO(&all);
+          for (long c = 0; c < n && c < CPU_SETSIZE; ++c)
+            CPU_SET(c, &all);
+          std::error_code ec;
+          for (const auto &task : std::filesystem::directory_iterator("/proc/self/task", ec))
+            {
+              const pid_t tid = static_cast<pid_t>(std::atol(task.path().filename().c_str()));
+              ::sched_setaffinity(tid, sizeof(all), &all);
+            }
+#endif
+        }
+      } // namespace
+
       bool
       idle(const bool distributed)
       {
         if (size() == 1 || distributed)
           return false;
         if (rank() == 0)
-          std::cout << "(mpirun: this run is one path, which one rank follows; the other "
-                    << size() - 1
-                    << " wait. Only tables and studies are spread over ranks: "
-                       "doc/parallel-runs.md)"
-                    << std::endl;
-        // The others sleep: rank 0 takes the node's cores.
-        if (rank() == 0)
-          MultithreadInfo::set_thread_limit();
-        return rank() > 0;
+          std::cout << "(mpirun: this run is one path, which rank 0 follows; the other "
+                    << size() - 1 << (size() == 2 ? " rank takes" : " ranks take")
+                    << " part in its factorizations of more than "
+                    << solvers::factorization_ranks::min_unknowns()
+                    << " unknowns: doc/parallel-runs.md)" << std::endl;
+        if (rank() > 0)
+          {
+            solvers::factorization_ranks::serve();
+            return true;
+          }
+        // Rank 0 assembles on the node's cores while the others sleep.
+        use_all_cores();
+        MultithreadInfo::set_thread_limit();
+        solvers::factorization_ranks::enable();
+        return false;
       }
 
       void

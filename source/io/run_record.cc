@@ -2,6 +2,7 @@
 #include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/run_record.h>
+#include <cosmo/solvers/sparse_direct.h>
 
 #include <iomanip>
 #include <sstream>
@@ -148,6 +149,9 @@ namespace cosmo
       // Under mpirun: how many ranks shared the run (doc/parallel-runs.md).
       if (ranks::size() > 1)
         j["mpi_ranks"] = ranks::size();
+      // A one-path run's MUMPS phases on all ranks (sparse_direct.h).
+      if (solvers::factorization_ranks::active())
+        j["mumps_phases_on_all_ranks"] = solvers::factorization_ranks::shared_factorizations();
       return j;
     }
 

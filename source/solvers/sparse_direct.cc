@@ -11,9 +11,13 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <set>
 #include <stdexcept>
+#include <thread>
 
 namespace cosmo
 {
@@ -89,21 +93,223 @@ namespace cosmo
 #endif
     }
 
+#ifdef COSMO_WITH_MUMPS
+    namespace
+    {
+      /// A MUMPS instance: its data and whether it runs on all ranks.
+      struct MumpsInstance
+      {
+        DMUMPS_STRUC_C id;
+        bool           initialized = false;
+        bool           shared      = false; // on the ranks' communicator
+        int            number      = -1;    // its name in the commands to the ranks
+      };
+
+      // The ranks' communicator (a duplicate of MPI_COMM_WORLD) and rank 0's
+      // shared instances alive.
+      MPI_Comm                  ranks_comm = MPI_COMM_NULL;
+      bool                      sharing    = false;
+      int                       next_number = 0;
+      unsigned int              shared_phases = 0;
+      std::set<MumpsInstance *> alive;
+
+      // A command to the serving ranks: the MUMPS phase (JOB) and the instance,
+      // or quit.
+      constexpr int quit = 1000;
+
+      void
+      broadcast_command(int job, int number)
+      {
+        int         command[2] = {job, number};
+        MPI_Request request;
+        MPI_Ibcast(command, 2, MPI_INT, 0, ranks_comm, &request);
+        MPI_Wait(&request, MPI_STATUS_IGNORE);
+      }
+
+      // One MUMPS phase; on a shared instance rank 0 first tells the ranks.
+      void
+      run_phase(MumpsInstance &m, const int job)
+      {
+        if (m.shared && m.initialized)
+          {
+            broadcast_command(job, m.number);
+            ++shared_phases;
+          }
+        m.id.job = job;
+        dmumps_c(&m.id);
+      }
+
+      void
+      silence(DMUMPS_STRUC_C &id)
+      {
+        id.icntl[0] = -1;
+        id.icntl[1] = -1;
+        id.icntl[2] = -1;
+        id.icntl[3] = 0;
+      }
+    } // namespace
+#endif
+
+    namespace factorization_ranks
+    {
+      void
+      enable()
+      {
+#ifdef COSMO_WITH_MUMPS
+        int size = 1;
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+        if (size < 2 || sharing)
+          return;
+        MPI_Comm_dup(MPI_COMM_WORLD, &ranks_comm);
+        sharing = true;
+#endif
+      }
+
+      bool
+      active()
+      {
+#ifdef COSMO_WITH_MUMPS
+        return sharing;
+#else
+        return false;
+#endif
+      }
+
+      unsigned int
+      min_unknowns()
+      {
+        if (const char *v = std::getenv("COSMO_PARALLEL_FACTORIZATION_MIN"))
+          return static_cast<unsigned int>(std::strtoul(v, nullptr, 10));
+        // Measured (benchmarks/README.md, "One path on two ranks"): below
+        // this the second rank's share of a factorization does not pay for
+        // the communication.
+        return 20000;
+      }
+
+      unsigned int
+      shared_factorizations()
+      {
+#ifdef COSMO_WITH_MUMPS
+        return shared_phases;
+#else
+        return 0;
+#endif
+      }
+
+      void
+      serve()
+      {
+#ifdef COSMO_WITH_MUMPS
+        MPI_Comm_dup(MPI_COMM_WORLD, &ranks_comm);
+        std::map<int, std::unique_ptr<MumpsInstance>> instances;
+        for (;;)
+          {
+            // Asleep while rank 0 assembles: poll, backing off to 1 ms.
+            int         command[2];
+            MPI_Request request;
+            MPI_Ibcast(command, 2, MPI_INT, 0, ranks_comm, &request);
+            auto pause = std::chrono::microseconds(10);
+            for (int done = 0;;)
+              {
+                MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+                if (done)
+                  break;
+                std::this_thread::sleep_for(pause);
+                pause = std::min(2 * pause, std::chrono::microseconds(1000));
+              }
+            const int job = command[0], number = command[1];
+            if (job == quit)
+              break;
+            auto &m = instances[number];
+            if (job == -1)
+              {
+                m                  = std::make_unique<MumpsInstance>();
+                m->id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(ranks_comm);
+                m->id.par          = 1;
+                m->id.sym          = 2;
+              }
+            if (!m)
+              throw std::logic_error("a MUMPS phase for an instance this rank does not have");
+            m->id.job = job;
+            dmumps_c(&m->id);
+            if (job == -1)
+              silence(m->id);
+            if (job == -2)
+              instances.erase(number);
+          }
+        MPI_Comm_free(&ranks_comm);
+#endif
+      }
+
+      void
+      release()
+      {
+#ifdef COSMO_WITH_MUMPS
+        if (!sharing)
+          return;
+        // Instances still alive end on all ranks first (JOB = -2 is collective).
+        for (MumpsInstance *m : std::vector<MumpsInstance *>(alive.begin(), alive.end()))
+          {
+            run_phase(*m, -2);
+            m->initialized = false;
+            alive.erase(m);
+          }
+        broadcast_command(quit, -1);
+        MPI_Comm_free(&ranks_comm);
+        sharing = false;
+#endif
+      }
+    } // namespace factorization_ranks
+
     struct SparseDirectSolver::MumpsData
     {
 #ifdef COSMO_WITH_MUMPS
-      DMUMPS_STRUC_C     id;
-      std::vector<int>   perm_in; // user ordering, 1-based positions
-      std::vector<int>   irn, jcn; // 1-based, upper triangle
+      MumpsInstance       m;
+      DMUMPS_STRUC_C &    id = m.id;
+      std::vector<int>    perm_in; // user ordering, 1-based positions
+      std::vector<int>    irn, jcn; // 1-based, upper triangle
       std::vector<double> values;
       std::vector<bool>   upper; // storage position is in the upper triangle
-      bool               initialized = false;
+
+      /// JOB = -1 on MPI_COMM_SELF, or on all ranks when they share factorizations.
+      explicit MumpsData(const bool on_all_ranks)
+      {
+        m.shared = on_all_ranks;
+        if (m.shared)
+          {
+            m.number = next_number++;
+            broadcast_command(-1, m.number);
+            ++shared_phases;
+            id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(ranks_comm);
+          }
+        else
+          id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(MPI_COMM_SELF);
+        id.par = 1;
+        id.sym = 2; // symmetric, possibly indefinite: LDL^T
+        id.job = -1;
+        dmumps_c(&id);
+        m.initialized = true;
+        if (m.shared)
+          alive.insert(&m);
+        // Silence MUMPS; errors are reported through INFOG.
+        silence(id);
+        // In parallel the inertia INFOG(12) is exact only without ScaLAPACK
+        // on the root front.
+        if (m.shared)
+          id.icntl[12] = 1;
+      }
+
+      /// One phase without the check (the factorization retries on -8, -9).
+      void
+      run(int job)
+      {
+        run_phase(m, job);
+      }
 
       void
       call(int job)
       {
-        id.job = job;
-        dmumps_c(&id);
+        run(job);
         if (id.infog[0] < 0)
           throw std::runtime_error("MUMPS failed in phase " + std::to_string(job) +
                                    " with INFOG(1) = " + std::to_string(id.infog[0]) +
@@ -112,10 +318,11 @@ namespace cosmo
       }
       ~MumpsData()
       {
-        if (initialized)
+        // A shared instance rank 0 released already ended on all ranks.
+        if (m.initialized)
           {
-            id.job = -2;
-            dmumps_c(&id);
+            run(-2);
+            alive.erase(&m);
           }
       }
 #endif
@@ -177,18 +384,10 @@ namespace cosmo
       const SparsityPattern &sp = A.get_sparsity_pattern();
       if (!mumps || analysed_pattern != &sp || analysed_nnz != sp.n_nonzero_elements())
         {
-          mumps = std::make_unique<MumpsData>();
+          mumps.reset();
+          mumps    = std::make_unique<MumpsData>(factorization_ranks::active() &&
+                                              sp.n_rows() >= factorization_ranks::min_unknowns());
           auto &id = mumps->id;
-          id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(MPI_COMM_SELF);
-          id.par          = 1;
-          id.sym          = 2; // symmetric, possibly indefinite: LDL^T
-          mumps->call(-1);
-          mumps->initialized = true;
-          // Silence MUMPS; errors are reported through INFOG.
-          id.icntl[0] = -1;
-          id.icntl[1] = -1;
-          id.icntl[2] = -1;
-          id.icntl[3] = 0;
           // Extra workspace: dense border rows make the fill estimate loose.
           id.icntl[13] = 60;
           // QAMD ordering: AMD that treats the quasi-dense constraint rows of
@@ -249,8 +448,7 @@ namespace cosmo
       // (INFOG(1) = -8, -9: too small a work array): enlarge it and refactorize.
       for (unsigned int attempt = 0;; ++attempt)
         {
-          mumps->id.job = 2;
-          dmumps_c(&mumps->id);
+          mumps->run(2);
           const int info = mumps->id.infog[0];
           if ((info == -8 || info == -9) && attempt < 6)
             {

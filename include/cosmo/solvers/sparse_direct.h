@@ -55,6 +55,41 @@ namespace cosmo
     std::vector<int>
     border_last_ordering(const SparsityPattern &sp);
 
+    /**
+     * The ranks of a one-path run under mpirun factorize together
+     * (doc/parallel-runs.md): rank 0 assembles and drives the path as one
+     * process would, and every MUMPS instance of more than min_unknowns()
+     * unknowns that it creates afterwards runs on all ranks (MUMPS's host
+     * with the matrix and the right-hand sides centralized on rank 0,
+     * PAR = 1, ICNTL(13) = 1 so that INFOG(12) is the exact inertia in
+     * parallel), while ranks > 0 serve in serve(): they wait for rank 0's
+     * next MUMPS phase, asleep between phases, and take part in it.
+     * Smaller matrices stay on rank 0 alone (MPI_COMM_SELF): their fronts
+     * are too small for two processes to gain.
+     */
+    namespace factorization_ranks
+    {
+      /// Rank 0 of a run on several ranks: share the factorizations from now on.
+      void
+      enable();
+      /// Rank 0: sharing factorizations with other ranks.
+      bool
+      active();
+      /// The smallest matrix (unknowns) factorized on all ranks: 20000, or
+      /// the environment's COSMO_PARALLEL_FACTORIZATION_MIN.
+      unsigned int
+      min_unknowns();
+      /// Ranks > 0: take part in rank 0's MUMPS phases until release().
+      void
+      serve();
+      /// Rank 0: end every shared MUMPS instance and the ranks' serve() (no-op unless active).
+      void
+      release();
+      /// Rank 0: MUMPS phases run on all ranks so far (factorizations, solves).
+      unsigned int
+      shared_factorizations();
+    } // namespace factorization_ranks
+
     class SparseDirectSolver
     {
     public:
