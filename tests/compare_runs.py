@@ -4,8 +4,8 @@
 Every number of the named tables and of summary.json (events, states,
 stiffness, ...) must agree to 1e-12 relative (of the larger, or for a
 table column of its largest value); wall times, file names, messages and
-mpi_ranks and mumps_phases_on_all_ranks (MPI ranks, and the MUMPS phases
-they shared) are not results. A resumed run goes on
+mpi_ranks, mumps_phases_on_all_ranks and factorization_memory (MPI ranks, the MUMPS phases
+they shared, the memory MUMPS used) are not results. A resumed run goes on
 from bitwise the state it saved,
 so it reaches the uninterrupted numbers to round-off or better. Prints
 what differs and exits 1 if anything does.
@@ -15,7 +15,7 @@ import json
 import math
 import sys
 
-SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid", "mpi_ranks", "mumps_phases_on_all_ranks"}
+SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid", "mpi_ranks", "mumps_phases_on_all_ranks", "factorization_memory"}
 
 
 def close(x, y, scale):

@@ -159,6 +159,19 @@ namespace cosmo
     RunRecord::finish(JSON summary, const PhaseTimer &timer, const unsigned int converged_states) const
     {
       summary["timings"] = timer.to_json();
+      // The memory of the largest factorization: what a run of this size
+      // needs (doc/parallel-runs.md, the cost model).
+      const auto &f = solvers::largest_factorization();
+      if (f.ranks > 0)
+        {
+          JSON m                 = JSON::object();
+          m["unknowns"]          = f.unknowns;
+          m["factor_entries"]    = f.factor_entries;
+          m["mb_per_rank"]       = f.mb_per_rank;
+          m["mb_all_ranks"]      = f.mb_all_ranks;
+          m["ranks"]             = f.ranks;
+          summary["factorization_memory"] = m;
+        }
       // The work per converged state: what a faster solver has to reduce
       // (factorizations and Jacobian assemblies come in pairs; event
       // location and stability add to them). Of this process: a resumed

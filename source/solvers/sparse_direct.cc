@@ -139,6 +139,14 @@ namespace cosmo
         dmumps_c(&m.id);
       }
 
+      int
+      ranks_size()
+      {
+        int size = 1;
+        MPI_Comm_size(ranks_comm, &size);
+        return size;
+      }
+
       void
       silence(DMUMPS_STRUC_C &id)
       {
@@ -149,6 +157,17 @@ namespace cosmo
       }
     } // namespace
 #endif
+
+    namespace
+    {
+      FactorizationMemory largest;
+    }
+
+    const FactorizationMemory &
+    largest_factorization()
+    {
+      return largest;
+    }
 
     namespace factorization_ranks
     {
@@ -460,6 +479,14 @@ namespace cosmo
           break;
         }
       n_negative = mumps->id.infog[11];
+      if (mumps->id.infog[21] >= largest.mb_all_ranks)
+        {
+          largest.unknowns       = sp.n_rows();
+          largest.factor_entries = factor_entries();
+          largest.mb_per_rank    = mumps->id.infog[20];
+          largest.mb_all_ranks   = mumps->id.infog[21];
+          largest.ranks          = mumps->m.shared ? ranks_size() : 1;
+        }
 #endif
     }
 

@@ -90,6 +90,25 @@ namespace cosmo
       shared_factorizations();
     } // namespace factorization_ranks
 
+    /**
+     * The largest MUMPS factorization of this process so far, as MUMPS
+     * reports it (INFOG(21), INFOG(22): megabytes used in the
+     * factorization on the rank that used most, and on all ranks; with
+     * INFOG(29) the entries in the factors): what a run of this size
+     * needs per rank (summary.json "factorization_memory", the cost model
+     * of doc/parallel-runs.md).
+     */
+    struct FactorizationMemory
+    {
+      unsigned int unknowns       = 0;
+      double       factor_entries = 0;
+      double       mb_per_rank    = 0; ///< the rank that used most
+      double       mb_all_ranks   = 0;
+      unsigned int ranks          = 0; ///< 0: no MUMPS factorization yet
+    };
+    const FactorizationMemory &
+    largest_factorization();
+
     class SparseDirectSolver
     {
     public:
