@@ -192,9 +192,9 @@ namespace cosmo
         if (rank() == 0)
           std::cout << "(mpirun: this run is one path, which rank 0 follows; the other "
                     << size() - 1 << (size() == 2 ? " rank takes" : " ranks take")
-                    << " part in its factorizations of more than "
+                    << " part in its factorizations of "
                     << solvers::factorization_ranks::min_unknowns()
-                    << " unknowns: doc/parallel-runs.md)" << std::endl;
+                    << " unknowns or more: doc/parallel-runs.md)" << std::endl;
         if (rank() > 0)
           {
             solvers::factorization_ranks::serve();
