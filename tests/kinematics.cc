@@ -3,6 +3,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <cosmo/kinematics/helix.h>
+#include <cosmo/kinematics/plate_model.h>
 #include <cosmo/kinematics/rotation.h>
 #include <cosmo/kinematics/strip.h>
 #include <cosmo/materials/energy_derivatives.h>
@@ -221,6 +222,120 @@ namespace
     check_close("gradient, largest difference / largest entry", worst[1], 0, 0, 1e-12);
     check_close("Hessian, largest difference / largest entry", worst[2], 0, 0, 1e-12);
   }
+  // The Cosserat plate energy's chain-rule derivatives
+  // (exact_plate_energy_derivatives) against the nested AD of plate_energy
+  // in its 15 local variables: random states with large rotations, theta = 0
+  // exactly (the exponential's series branch), anisotropic growth G with
+  // det G != 1 and a natural curvature, both parts of the energy (the shear
+  // with a factor); and the covariant shear strain of the assumed shear
+  // (exact_covariant_shear_derivatives) against the nested AD of
+  // covariant_shear_strain. The two differ only by the order of the
+  // floating-point operations; the tolerance is that of the strip's test
+  // above.
+  void
+  plate_chain_rule()
+  {
+    std::cout << "Cosserat plate energy: chain rule against nested AD in 15 variables\n";
+    constexpr int                    N = plate_local_variables;
+    cosmo::materials::NaghdiPlateLaw law;
+    law.thickness = 0.03;
+    auto model    = cosmo::plugins::Registry<PlateModel>::create("cosserat");
+    std::mt19937                           gen(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    double                                 worst[3]       = {0, 0, 0};
+    bool                                   has_chain_rule = true;
+    double                                 worst_shear[3] = {0, 0, 0};
+    for (unsigned int sample = 0; sample < 40; ++sample)
+      {
+        std::array<double, N> z;
+        const double          scales[N] = {0.1, 0.1, 0.1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3,
+                                  1.2, 1.2, 2, 2, 2, 2};
+        for (int a = 0; a < N; ++a)
+          z[a] = scales[a] * u(gen);
+        if (sample % 5 == 0)
+          z[9] = z[10] = 0;
+        const PlateGrowthAtPoint g = sample % 2 ?
+          PlateGrowthAtPoint::of({{{{1.1 + 0.1 * u(gen), 0.05 * u(gen)}}, {{0.05 * u(gen), 0.9 + 0.1 * u(gen)}}}}) :
+          PlateGrowthAtPoint();
+        PlateGrowthAtPoint gk = g;
+        gk.natural_curvature  = {{0.3 * u(gen), 0.3 * u(gen), 0.1 * u(gen)}};
+        for (const PlateGrowthAtPoint &growth : {g, gk})
+          for (const bool membrane_bending : {true, false})
+            for (const bool hessian : {true, false})
+              {
+                const double              factor = membrane_bending ? 1 : 7.5;
+                double                    W0, W1;
+                std::array<double, N>     g0, g1;
+                std::array<double, N * N> H0{}, H1{};
+                // As the assembly: in the 12 (8) variables the energy depends on.
+                auto energy_of = [&](const auto &x) {
+                  using Number = std::decay_t<decltype(x[0])>;
+                  std::array<Number, N> y;
+                  for (int k = 0; k < N; ++k)
+                    y[k] = k >= 3 && k < 3 + int(x.size()) ? x[k - 3] : Number(z[k]);
+                  return plate_energy(y, growth, law, *model, membrane_bending, factor);
+                };
+                if (membrane_bending)
+                  cosmo::materials::internal::differentiate_subset<12>(z, 3, energy_of, hessian, W0, g0, H0);
+                else
+                  cosmo::materials::internal::differentiate_subset<8>(z, 3, energy_of, hessian, W0, g0, H0);
+                has_chain_rule &= model->plate_energy_derivatives(z, growth, law, membrane_bending,
+                                                                  factor, hessian, W1, g1, H1);
+                auto relative = [](const double *a, const double *b, const int n) {
+                  double d = 0, m = 1e-300;
+                  for (int i = 0; i < n; ++i)
+                    {
+                      d = std::max(d, std::abs(a[i] - b[i]));
+                      m = std::max(m, std::abs(a[i]));
+                    }
+                  return d / m;
+                };
+                worst[0] = std::max(worst[0], relative(&W0, &W1, 1));
+                worst[1] = std::max(worst[1], relative(g0.data(), g1.data(), N));
+                if (hessian)
+                  worst[2] = std::max(worst[2], relative(H0.data(), H1.data(), N * N));
+              }
+        // The covariant shear strain at a tying point (assumed_shear.h), with
+        // a distorted cell's Jacobian.
+        Tensor<2, 2> J;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            J[i][j] = (i == j ? 0.3 : 0.) + 0.1 * u(gen);
+        for (const unsigned int c : {0u, 1u})
+          for (const bool hessian : {true, false})
+            {
+              double                    e0, e1;
+              std::array<double, N>     g0, g1;
+              std::array<double, N * N> H0{}, H1{};
+              cosmo::materials::internal::differentiate_subset<8>(
+                z, 3,
+                [&](const auto &x) {
+                  using Number = std::decay_t<decltype(x[0])>;
+                  std::array<Number, N> y;
+                  for (int k = 0; k < N; ++k)
+                    y[k] = k >= 3 && k < 11 ? x[k - 3] : Number(z[k]);
+                  return covariant_shear_strain(y, *model, J, c);
+                },
+                hessian, e0, g0, H0);
+              has_chain_rule &=
+                model->covariant_shear_strain_derivatives(z, J, c, hessian, e1, g1, H1);
+              worst_shear[0] = std::max(worst_shear[0], std::abs(e0 - e1) / std::max(std::abs(e0), 1e-300));
+              for (int i = 0; i < N; ++i)
+                worst_shear[1] = std::max(worst_shear[1], std::abs(g0[i] - g1[i]));
+              if (hessian)
+                for (int i = 0; i < N * N; ++i)
+                  worst_shear[2] = std::max(worst_shear[2], std::abs(H0[i] - H1[i]));
+            }
+      }
+    check("the cosserat model has its chain rules", has_chain_rule);
+    // The shear's entries are O(|J|) = O(0.3): absolute differences.
+    check_close("covariant shear strain, largest relative difference", worst_shear[0], 0, 0, 1e-12);
+    check_close("its gradient, largest difference", worst_shear[1], 0, 0, 1e-12);
+    check_close("its Hessian, largest difference", worst_shear[2], 0, 0, 1e-12);
+    check_close("energy, largest relative difference", worst[0], 0, 0, 1e-12);
+    check_close("gradient, largest difference / largest entry", worst[1], 0, 0, 1e-12);
+    check_close("Hessian, largest difference / largest entry", worst[2], 0, 0, 1e-12);
+  }
 } // namespace
 
 int
@@ -230,5 +345,6 @@ main()
   exp_derivative();
   helix_against_integration();
   strip_chain_rule();
+  plate_chain_rule();
   return cosmo_test::report();
 }

@@ -414,6 +414,9 @@ namespace cosmo
       const std::array<double, 3> rim_natural_curvature = {
         {t * rod_natural_curvature[0], t * rod_natural_curvature[1], t * rod_natural_curvature[2]}};
       const double    shear_scale  = model->shear_scale();
+      // COSMO_PLATE_NESTED_AD=1: nested AD of the plate energy even where the
+      // model has a chain rule (to measure against, benchmarks/README.md).
+      static const bool nested_ad_only = std::getenv("COSMO_PLATE_NESTED_AD") != nullptr;
 
       // The transverse shear of one cell with assumed covariant strains (fev_full reinit on it):
       // the energy E = sum_q W_q(e(q)) JxW_q, e(q) = sum_k N_qk e_k, depends on the DoFs through
@@ -444,17 +447,23 @@ namespace cosmo
             assembly::gather_local_variables<n_plate>(drives, sc.U_local, z);
             const Tensor<2, 2> J    = sc.fev_tying.jacobian(k);
             const unsigned int comp_k = assumed_shear.component(k);
-            // The shear depends on du/dX and theta: local variables 3 to 10.
-            materials::internal::differentiate_subset<8>(
-              z, 3,
-              [&](const auto &x) {
-                using Number = std::decay_t<decltype(x[0])>;
-                std::array<Number, n_plate> y;
-                for (unsigned int m = 0; m < n_plate; ++m)
-                  y[m] = m >= 3 && m < 11 ? x[m - 3] : Number(z[m]);
-                return kinematics::covariant_shear_strain(y, *model, J, comp_k);
-              },
-              jacobian, sc.tying_strain[k], sc.tying_gradient[k], sc.tying_hessian[k]);
+            // The model's own chain rule if it has one; else nested AD: the
+            // shear depends on du/dX and theta, local variables 3 to 10.
+            if (nested_ad_only ||
+                !model->covariant_shear_strain_derivatives(z, J, comp_k, jacobian, sc.tying_strain[k],
+                                                           sc.tying_gradient[k], sc.tying_hessian[k]))
+              {
+                materials::internal::differentiate_subset<8>(
+                  z, 3,
+                  [&](const auto &x) {
+                    using Number = std::decay_t<decltype(x[0])>;
+                    std::array<Number, n_plate> y;
+                    for (unsigned int m = 0; m < n_plate; ++m)
+                      y[m] = m >= 3 && m < 11 ? x[m - 3] : Number(z[m]);
+                    return kinematics::covariant_shear_strain(y, *model, J, comp_k);
+                  },
+                  jacobian, sc.tying_strain[k], sc.tying_gradient[k], sc.tying_hessian[k]);
+              }
             for (unsigned int i = 0; i < dpc; ++i)
               {
                 double v = 0;
@@ -556,10 +565,16 @@ namespace cosmo
                   return kinematics::plate_energy(y, gr, law, *model, membrane_bending,
                                                   cell_shear_scale);
                 };
-                if (membrane_bending)
-                  materials::internal::differentiate_subset<12>(z, 3, energy_of, jacobian, W, g, H);
-                else
-                  materials::internal::differentiate_subset<8>(z, 3, energy_of, jacobian, W, g, H);
+                // The model's own chain rule if it has one (the Cosserat kinematics).
+                if (nested_ad_only ||
+                    !model->plate_energy_derivatives(z, gr, law, membrane_bending, cell_shear_scale,
+                                                     jacobian, W, g, H))
+                  {
+                    if (membrane_bending)
+                      materials::internal::differentiate_subset<12>(z, 3, energy_of, jacobian, W, g, H);
+                    else
+                      materials::internal::differentiate_subset<8>(z, 3, energy_of, jacobian, W, g, H);
+                  }
                 c.plate_energy += W * fev.JxW(q);
                 assembly::add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c.r, c.K);
               }

@@ -256,6 +256,8 @@ namespace cosmo
           out.ranks_then = h.n_ranks;
           for (unsigned int k = h.first; k < h.next; ++k)
             out.done[k] = h.rows[k - h.first];
+          if (h.next > h.first)
+            out.after[h.next] = std::move(r);
         };
         take(read(shared));
         for (unsigned int k = 1; k < out.ranks_then; ++k)

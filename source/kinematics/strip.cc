@@ -1,6 +1,8 @@
 // The strip energy's derivatives by the chain rule through the plate
-// measures (kinematics/strip.h): nested AD only where the map is not
-// polynomial (the director, 4 variables) and in the law (8 measures).
+// measures (kinematics/strip.h, kinematics/plate_measures.h): nested AD
+// only where the map is not polynomial (the director, 4 variables) and in
+// the law (8 measures).
+#include <cosmo/kinematics/plate_measures.h>
 #include <cosmo/kinematics/strip.h>
 #include <cosmo/materials/energy_derivatives.h>
 
@@ -11,9 +13,8 @@ namespace cosmo
     namespace
     {
       constexpr int n_z        = strip_local_variables;
-      constexpr int n_measures = 8;  // membrane (11, 22, 12), bending (11, 22, 12), shear (1, 2)
-      constexpr int n_vectors  = 15; // a1, a2, d, d1, d2 (plate_strains' arguments)
-      constexpr int n_director = 4;  // theta1, theta3, theta1', theta3'
+      constexpr int n_director = 4; // theta1, theta3, theta1', theta3'
+      using plate_measures::n_vectors;
 
       using Vec = std::array<double, 3>;
 
@@ -21,77 +22,6 @@ namespace cosmo
       dot(const Vec &a, const Vec &b)
       {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-      }
-
-      /// C += A B for row-major A (M x K), B (K x N), skipping the zeros of A
-      /// (V_z and the law's Hessian are mostly zeros).
-      template <int M, int K, int N>
-      void
-      add_product(const std::array<double, M * K> &A,
-                  const std::array<double, K * N> &B,
-                  std::array<double, M * N> &      C)
-      {
-        for (int i = 0; i < M; ++i)
-          for (int l = 0; l < K; ++l)
-            if (A[K * i + l] != 0)
-              for (int j = 0; j < N; ++j)
-                C[N * i + j] += A[K * i + l] * B[N * l + j];
-      }
-
-      /// The eight measures of plate_strains() from V = (a1, a2, d, d1, d2).
-      template <typename Number>
-      std::array<Number, n_measures>
-      measures_of(const std::array<Number, n_vectors> &V)
-      {
-        auto part = [&V](const int k) {
-          return std::array<Number, 3>{{V[3 * k], V[3 * k + 1], V[3 * k + 2]}};
-        };
-        const auto s = materials::plate_strains(part(0), part(1), part(2), part(3), part(4));
-        return {{s.membrane[0], s.membrane[1], s.membrane[2], s.bending[0], s.bending[1],
-                 s.bending[2], s.shear[0], s.shear[1]}};
-      }
-
-      template <typename Number>
-      materials::PlateStrains<Number>
-      strains_of(const std::array<Number, n_measures> &x)
-      {
-        materials::PlateStrains<Number> s;
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            s.membrane[k] = x[k];
-            s.bending[k]  = x[3 + k];
-          }
-        s.shear[0] = x[6];
-        s.shear[1] = x[7];
-        return s;
-      }
-
-      /**
-       * The Hessians of the measures in V. Each measure is a dot product of
-       * two of the vectors (plus a constant), so they do not depend on V:
-       * computed once, by nested AD of plate_strains() at V = 0, so that
-       * the measures are written in one place only. (If plate_strains()
-       * ever stopped being bilinear, the comparison with the nested AD of
-       * strip_energy in tests/kinematics.cc would fail.)
-       */
-      const std::array<std::array<double, n_vectors * n_vectors>, n_measures> &
-      measure_hessians()
-      {
-        static const auto hessians = []() {
-          using D1 = materials::FirstOrderAD<n_vectors>;
-          using D2 = materials::SecondOrderAD<n_vectors>;
-          std::array<D2, n_vectors> V;
-          for (int a = 0; a < n_vectors; ++a)
-            V[a] = D2(n_vectors, a, D1(n_vectors, a, 0.));
-          const auto s = measures_of(V);
-          std::array<std::array<double, n_vectors * n_vectors>, n_measures> h;
-          for (int k = 0; k < n_measures; ++k)
-            for (int a = 0; a < n_vectors; ++a)
-              for (int b = 0; b < n_vectors; ++b)
-                h[k][n_vectors * a + b] = s[k].dx(a).dx(b);
-          return h;
-        }();
-        return hessians;
       }
 
       /// q, q' and their derivatives in (theta1, theta3, theta1', theta3').
@@ -209,72 +139,16 @@ namespace cosmo
           set_column(9, 6 + a, dir.dq1[a]);                     // d1 = q'(theta, theta')
         }
 
-      // The measures and their gradient in V (first-order AD).
-      std::array<double, n_measures>             s;
-      std::array<double, n_measures * n_vectors> sV;
-      {
-        using D1 = materials::FirstOrderAD<n_vectors>;
-        std::array<D1, n_vectors> X;
-        for (int a = 0; a < n_vectors; ++a)
-          X[a] = D1(n_vectors, a, V[a]);
-        const auto m = measures_of(X);
-        for (int k = 0; k < n_measures; ++k)
-          {
-            s[k] = m[k].val();
-            for (int a = 0; a < n_vectors; ++a)
-              sV[n_vectors * k + a] = m[k].dx(a);
-          }
-      }
-
-      // The law in the measures.
-      std::array<double, n_measures>              ws;
-      std::array<double, n_measures * n_measures> wss;
-      materials::internal::differentiate<n_measures>(
-        s,
-        [&](const auto &x) {
-          const auto strains = strains_of(x);
-          return membrane_bending ? law.membrane_bending_energy(strains) : law.shear_energy(strains);
-        },
-        with_hessian,
-        W,
-        ws,
-        wss);
-
-      // w_V and the gradient g = V_z^T w_V.
-      std::array<double, n_vectors> wV{};
-      for (int k = 0; k < n_measures; ++k)
-        for (int a = 0; a < n_vectors; ++a)
-          wV[a] += ws[k] * sV[n_vectors * k + a];
-      g.fill(0.);
-      for (int a = 0; a < n_vectors; ++a)
-        if (wV[a] != 0)
-          for (int c = 0; c < n_z; ++c)
-            g[c] += Vz[n_z * a + c] * wV[a];
+      // w(s(V)) in V, then g = V_z^T w_V, H = V_z^T w_VV V_z ...
+      plate_measures::Energy energy;
+      energy.law              = &law;
+      energy.membrane_bending = membrane_bending;
+      std::array<double, n_vectors>             wV;
+      std::array<double, n_vectors * n_vectors> wVV;
+      plate_measures::energy_in_vectors(V, energy, with_hessian, W, wV, wVV);
+      plate_measures::pull_back<n_z>(Vz, wV, wVV, with_hessian, g, H);
       if (!with_hessian)
         return;
-
-      // w_VV = s_V^T w_ss s_V + sum_k w_{s_k} s_k,VV.
-      const auto &                                sVV = measure_hessians();
-      std::array<double, n_vectors * n_vectors>   wVV{};
-      std::array<double, n_measures * n_vectors>  wss_sV{};
-      add_product<n_measures, n_measures, n_vectors>(wss, sV, wss_sV);
-      for (int k = 0; k < n_measures; ++k)
-        for (int a = 0; a < n_vectors; ++a)
-          {
-            const double ska = sV[n_vectors * k + a];
-            for (int b = 0; b < n_vectors; ++b)
-              wVV[n_vectors * a + b] += ska * wss_sV[n_vectors * k + b] + ws[k] * sVV[k][n_vectors * a + b];
-          }
-
-      // H = V_z^T w_VV V_z ...
-      std::array<double, n_vectors * n_z> wVV_Vz{};
-      add_product<n_vectors, n_vectors, n_z>(wVV, Vz, wVV_Vz);
-      H.fill(0.);
-      for (int a = 0; a < n_vectors; ++a)
-        for (int r = 0; r < n_z; ++r)
-          if (Vz[n_z * a + r] != 0)
-            for (int c = 0; c < n_z; ++c)
-              H[n_z * r + c] += Vz[n_z * a + r] * wVV_Vz[n_z * a + c];
 
       // ... + sum_i w_{V_i} (V_i)_zz: the bilinear terms kappa x y and
       // kappa x q, and the director's own second derivatives.

@@ -189,18 +189,22 @@ namespace cosmo
       std::string  refused;
       unsigned int n_without = 0; // points without a located critical point
       unsigned int k0        = block_begin;
+      // What the driver holds after a point (a checkpoint's payload after its header).
+      auto load_held = [&](io::CheckpointReader &r) {
+        predictor.load(r);
+        previous.k          = r.get_unsigned();
+        previous.value      = r.get_double();
+        previous.t          = r.get_double();
+        previous.mode_class = r.get_vector();
+        previous.n_unknowns = r.get_size();
+      };
       if (resume && resumed.same_ranks)
         {
           io::CheckpointReader &r = resumed.reader;
           k0                      = resumed.own.next;
           for (const auto &row : resumed.own.rows)
             table.add_row(row);
-          predictor.load(r);
-          previous.k          = r.get_unsigned();
-          previous.value      = r.get_double();
-          previous.t          = r.get_double();
-          previous.mode_class = r.get_vector();
-          previous.n_unknowns = r.get_size();
+          load_held(r);
           refused             = r.get_string();
           n_without           = r.get_unsigned();
           table.write(directory + "/sweep.csv");
@@ -240,6 +244,12 @@ namespace cosmo
                               std::vector<double>(row.begin() + 4 + n_more,
                                                   row.begin() + 4 + n_more + n_mode),
                               0}; // (no codimension-2 estimate from it: no state)
+                // The last point of an earlier rank's block: go on from what that
+                // rank held there (the curve's predictor), as it would have, so
+                // that the next point is continued as in the uninterrupted run.
+                if (const auto a = resumed.after.find(k + 1);
+                    a != resumed.after.end() && !resumed.done.count(k + 1))
+                  load_held(a->second);
                 continue;
               }
             const auto        start = std::chrono::steady_clock::now();

@@ -166,6 +166,10 @@ namespace cosmo
         CheckpointReader                            reader;
         std::map<unsigned int, std::vector<double>> done;
         unsigned int                                ranks_then = 1;
+        /// An earlier rank's checkpoint after its header, by the first point it
+        /// had not done: what the driver holds after that rank's last point
+        /// (a critical curve's predictor), to go on from there as it would have.
+        std::map<unsigned int, CheckpointReader> after;
       };
       Resumed
       resume_points(const std::string &directory, const CSVTable &columns,

@@ -93,6 +93,41 @@ namespace cosmo
       {
         return 1.;
       }
+      /**
+       * plate_energy(z, g, law, *this, membrane_bending, shear_scale), its
+       * gradient and (with_hessian) its Hessian in the 15 local variables
+       * by the model's own chain rule, if it has one (true); false: the
+       * assembly differentiates plate_energy() by nested AD instead.
+       */
+      virtual bool
+      plate_energy_derivatives(const std::array<double, plate_local_variables> &,
+                               const PlateGrowthAtPoint &,
+                               const materials::NaghdiPlateLaw &,
+                               bool /*membrane_bending*/,
+                               double /*shear_scale*/,
+                               bool /*with_hessian*/,
+                               double &,
+                               std::array<double, plate_local_variables> &,
+                               std::array<double, plate_local_variables * plate_local_variables> &) const
+      {
+        return false;
+      }
+      /**
+       * covariant_shear_strain(z, *this, jacobian, c), its gradient and
+       * (with_hessian) Hessian in the 15 local variables by the model's own
+       * chain rule, if it has one (true); false: nested AD instead.
+       */
+      virtual bool
+      covariant_shear_strain_derivatives(const std::array<double, plate_local_variables> &,
+                                         const Tensor<2, 2> &,
+                                         unsigned int /*c*/,
+                                         bool /*with_hessian*/,
+                                         double &,
+                                         std::array<double, plate_local_variables> &,
+                                         std::array<double, plate_local_variables * plate_local_variables> &) const
+      {
+        return false;
+      }
       /// The plate's director d at a point (for output).
       virtual Tensor<1, 3>
       director(const std::array<double, plate_local_variables> &z) const = 0;

@@ -79,6 +79,46 @@ namespace cosmo
 
     namespace internal
     {
+      /**
+       * The exact director d = R E3 and its derivatives d_j = R (omega_j x E3),
+       * omega_j = T(theta) dtheta/dX_j (T the right Jacobian of exp), from
+       * theta = (theta1, theta2, 0) and dtheta[2 j + i] = dtheta_i/dX_j: the
+       * only transcendental part of the plate's kinematics (the chain rule
+       * of exact_plate_energy_derivatives() differentiates it in its own six
+       * variables).
+       */
+      template <typename Number>
+      void
+      exact_director_and_gradient(const Number &         theta1,
+                                  const Number &         theta2,
+                                  const Number *         dtheta,
+                                  std::array<Number, 3> &d,
+                                  std::array<Number, 3> &d1,
+                                  std::array<Number, 3> &d2)
+      {
+        Tensor<1, 3, Number> theta;
+        theta[0]                     = theta1;
+        theta[1]                     = theta2;
+        const Tensor<2, 3, Number> R = rotation_exp(theta);
+        const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
+        for (unsigned int i = 0; i < 3; ++i)
+          d[i] = R[i][2];
+        // d_j d = R (omega_j x E3), omega_j = T dtheta/dX_j; omega x E3 = (omega2, -omega1, 0).
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            Number o1 = T[0][0] * dtheta[2 * j];
+            o1 += T[0][1] * dtheta[2 * j + 1];
+            Number o2 = T[1][0] * dtheta[2 * j];
+            o2 += T[1][1] * dtheta[2 * j + 1];
+            std::array<Number, 3> &dj = j == 0 ? d1 : d2;
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                dj[i] = R[i][0] * o2;
+                dj[i] -= R[i][1] * o1;
+              }
+          }
+      }
+
       /// The exact plate strains (grown reference) from the local variables.
       template <typename Number>
       materials::PlateStrains<Number>
@@ -88,28 +128,8 @@ namespace cosmo
         using V = std::array<Number, 3>;
         const V a1 = {{1. + z[3], z[4], z[5]}};
         const V a2 = {{z[6], 1. + z[7], z[8]}};
-        Tensor<1, 3, Number> theta;
-        theta[0]                     = z[9];
-        theta[1]                     = z[10];
-        const Tensor<2, 3, Number> R = rotation_exp(theta);
-        const Tensor<2, 3, Number> T = rotation_dexp_right(theta);
-        V                          d, d1, d2;
-        for (unsigned int i = 0; i < 3; ++i)
-          d[i] = R[i][2];
-        // d_j d = R (omega_j x E3), omega_j = T dtheta/dX_j; omega x E3 = (omega2, -omega1, 0).
-        for (unsigned int j = 0; j < 2; ++j)
-          {
-            Number o1 = T[0][0] * z[11 + 2 * j];
-            o1 += T[0][1] * z[12 + 2 * j];
-            Number o2 = T[1][0] * z[11 + 2 * j];
-            o2 += T[1][1] * z[12 + 2 * j];
-            V &dj = j == 0 ? d1 : d2;
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                dj[i] = R[i][0] * o2;
-                dj[i] -= R[i][1] * o1;
-              }
-          }
+        V       d, d1, d2;
+        exact_director_and_gradient(z[9], z[10], &z[11], d, d1, d2);
         return materials::grown_plate_strains(a1, a2, d, d1, d2, g.G_inv);
       }
 

@@ -1,0 +1,142 @@
+// The chain rule through the plate measures (kinematics/plate_measures.h):
+// the measures' gradient by first-order AD, their constant Hessians once by
+// nested AD, the law by nested AD in the eight measures.
+#include <cosmo/kinematics/plate_measures.h>
+#include <cosmo/materials/energy_derivatives.h>
+
+namespace cosmo
+{
+  namespace kinematics
+  {
+    namespace plate_measures
+    {
+      namespace
+      {
+        /// The eight measures of plate_strains() from V = (a1, a2, d, d1, d2).
+        template <typename Number>
+        std::array<Number, n_measures>
+        measures_of(const std::array<Number, n_vectors> &V)
+        {
+          auto part = [&V](const int k) {
+            return std::array<Number, 3>{{V[3 * k], V[3 * k + 1], V[3 * k + 2]}};
+          };
+          const auto s = materials::plate_strains(part(0), part(1), part(2), part(3), part(4));
+          return {{s.membrane[0], s.membrane[1], s.membrane[2], s.bending[0], s.bending[1],
+                   s.bending[2], s.shear[0], s.shear[1]}};
+        }
+
+        template <typename Number>
+        materials::PlateStrains<Number>
+        strains_of(const std::array<Number, n_measures> &x)
+        {
+          materials::PlateStrains<Number> s;
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              s.membrane[k] = x[k];
+              s.bending[k]  = x[3 + k];
+            }
+          s.shear[0] = x[6];
+          s.shear[1] = x[7];
+          return s;
+        }
+
+        /**
+         * The Hessians of the measures in V. Each measure is a dot product of
+         * two of the vectors (plus a constant), so they do not depend on V:
+         * computed once, by nested AD of plate_strains() at V = 0, so that
+         * the measures are written in one place only. (If plate_strains()
+         * ever stopped being bilinear, the comparisons with nested AD in
+         * tests/kinematics.cc would fail.)
+         */
+        const std::array<std::array<double, n_vectors * n_vectors>, n_measures> &
+        measure_hessians()
+        {
+          static const auto hessians = []() {
+            using D1 = materials::FirstOrderAD<n_vectors>;
+            using D2 = materials::SecondOrderAD<n_vectors>;
+            std::array<D2, n_vectors> V;
+            for (int a = 0; a < n_vectors; ++a)
+              V[a] = D2(n_vectors, a, D1(n_vectors, a, 0.));
+            const auto s = measures_of(V);
+            std::array<std::array<double, n_vectors * n_vectors>, n_measures> h;
+            for (int k = 0; k < n_measures; ++k)
+              for (int a = 0; a < n_vectors; ++a)
+                for (int b = 0; b < n_vectors; ++b)
+                  h[k][n_vectors * a + b] = s[k].dx(a).dx(b);
+            return h;
+          }();
+          return hessians;
+        }
+      } // namespace
+
+      void
+      energy_in_vectors(const std::array<double, n_vectors> &       V,
+                        const Energy &                              energy,
+                        const bool                                  with_hessian,
+                        double &                                    W,
+                        std::array<double, n_vectors> &             wV,
+                        std::array<double, n_vectors * n_vectors> & wVV)
+      {
+        // The measures and their gradient in V (first-order AD).
+        std::array<double, n_measures>             s;
+        std::array<double, n_measures * n_vectors> sV;
+        {
+          using D1 = materials::FirstOrderAD<n_vectors>;
+          std::array<D1, n_vectors> X;
+          for (int a = 0; a < n_vectors; ++a)
+            X[a] = D1(n_vectors, a, V[a]);
+          const auto m = measures_of(X);
+          for (int k = 0; k < n_measures; ++k)
+            {
+              s[k] = m[k].val();
+              for (int a = 0; a < n_vectors; ++a)
+                sV[n_vectors * k + a] = m[k].dx(a);
+            }
+        }
+
+        // The law in the measures.
+        const materials::NaghdiPlateLaw &law = *energy.law;
+        std::array<double, n_measures>              ws;
+        std::array<double, n_measures * n_measures> wss;
+        materials::internal::differentiate<n_measures>(
+          s,
+          [&](const auto &x) {
+            auto strains = strains_of(x);
+            for (unsigned int k = 0; k < 3; ++k)
+              strains.bending[k] -= energy.natural_curvature[k];
+            // A Number, not an expression template of temporaries.
+            using Number = std::decay_t<decltype(x[0])>;
+            Number w     = energy.membrane_bending ? law.membrane_bending_energy(strains) :
+                                                     law.shear_energy(strains);
+            w *= energy.factor;
+            return w;
+          },
+          with_hessian,
+          W,
+          ws,
+          wss);
+
+        // w_V = s_V^T w_s.
+        wV.fill(0.);
+        for (int k = 0; k < n_measures; ++k)
+          for (int a = 0; a < n_vectors; ++a)
+            wV[a] += ws[k] * sV[n_vectors * k + a];
+        if (!with_hessian)
+          return;
+
+        // w_VV = s_V^T w_ss s_V + sum_k w_{s_k} s_k,VV.
+        const auto &                               sVV = measure_hessians();
+        std::array<double, n_measures * n_vectors> wss_sV{};
+        add_product<n_measures, n_measures, n_vectors>(wss, sV, wss_sV);
+        wVV.fill(0.);
+        for (int k = 0; k < n_measures; ++k)
+          for (int a = 0; a < n_vectors; ++a)
+            {
+              const double ska = sV[n_vectors * k + a];
+              for (int b = 0; b < n_vectors; ++b)
+                wVV[n_vectors * a + b] += ska * wss_sV[n_vectors * k + b] + ws[k] * sVV[k][n_vectors * a + b];
+            }
+      }
+    } // namespace plate_measures
+  }   // namespace kinematics
+} // namespace cosmo
