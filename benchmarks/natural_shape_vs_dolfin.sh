@@ -18,28 +18,8 @@ if ! dpkg-query -W -f='${Status}' python3-dolfin 2>/dev/null | grep -q "install 
 fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-cat > "$work/disc.prm" <<PRM
-subsection Cross-section
-  set Shape = circle
-  set Global refinements = $REF
-end
-subsection Material 1
-  set Growth kind = axial
-  set Growth factor = 1 + 0.3*x
-end
-subsection Rod strains
-  set Mode = natural shape
-end
-subsection Continuation
-  set Initial step = 1
-  set Maximum step = 1
-end
-subsection Output
-  set Output directory = $work/cosmo
-  set Stiffness at every step = false
-  set VTU output = none
-end
-PRM
+sed -e "s|^\( *set Global refinements *=\).*|\1 $REF|" -e "s|^\( *set Output directory *=\).*|\1 $work/cosmo|" \
+    "$REPO/benchmarks/growing_disc.prm" > "$work/disc.prm"
 now() { date +%s.%N; }
 cosmo_times=() dolfin_times=()
 "$BUILD/rod_cross_section" --quiet "$work/disc.prm"

@@ -8,7 +8,7 @@
 #  - plate: parameter_files/plate_rod/dome.prm to its first event ('Stop at
 #    first event'), the quarter disc at REF_PLATE global refinements
 #    (5: 74 886 DoFs);
-#  - disc: the natural shape of benchmarks/natural_shape_vs_dolfin.sh at
+#  - disc: the natural shape of benchmarks/growing_disc.prm at
 #    REF_DISC refinements (6: 246 543 DoFs).
 #
 # usage: benchmarks/one_path_ranks.sh [build dir = build] [REF_PLATE = 5] [REF_DISC = 6] [repeats = 3]
@@ -21,28 +21,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 sed -e "s|^\( *set Global refinements *=\).*|\1 $RP|" \
     -e "s|^\( *set Event tolerance *=.*\)|\1\n  set Stop at first event = true|" \
     -e "s|^\( *set Output directory *=\).*|\1 OUT|" "$REPO/parameter_files/plate_rod/dome.prm" > "$dir/plate.prm"
-cat > "$dir/disc.prm" <<PRM
-subsection Cross-section
-  set Shape = circle
-  set Global refinements = $RD
-end
-subsection Material 1
-  set Growth kind = axial
-  set Growth factor = 1 + 0.3*x
-end
-subsection Rod strains
-  set Mode = natural shape
-end
-subsection Continuation
-  set Initial step = 1
-  set Maximum step = 1
-end
-subsection Output
-  set Output directory = OUT
-  set Stiffness at every step = false
-  set VTU output = none
-end
-PRM
+sed -e "s|^\( *set Global refinements *=\).*|\1 $RD|" -e "s|^\( *set Output directory *=\).*|\1 OUT|" \
+    "$REPO/benchmarks/growing_disc.prm" > "$dir/disc.prm"
 for case in plate:plate_rod disc:rod_cross_section; do
   name=${case%:*} exe=$build/${case#*:}
   for ranks in 1 2; do sed "s|OUT|$dir/$name-$ranks|" "$dir/$name.prm" > "$dir/$name-$ranks.prm"; done

@@ -166,6 +166,19 @@ namespace
           }
       }
   }
+  /// The largest difference of b from a over the largest entry of a.
+  double
+  relative(const double *a, const double *b, const int n)
+  {
+    double d = 0, m = 1e-300;
+    for (int i = 0; i < n; ++i)
+      {
+        d = std::max(d, std::abs(a[i] - b[i]));
+        m = std::max(m, std::abs(a[i]));
+      }
+    return d / m;
+  }
+
   // The strip energy's chain-rule derivatives (strip_energy_derivatives)
   // against the nested AD of strip_energy in all 16 variables, at random
   // states with large rotations, at theta = 0 exactly (the exponential's
@@ -203,15 +216,6 @@ namespace
                 z, [&](const auto &x) { return strip_energy(x, eta, law, membrane_bending); },
                 hessian, W0, g0, H0);
               strip_energy_derivatives(z, eta, law, membrane_bending, hessian, W1, g1, H1);
-              auto relative = [](const double *a, const double *b, const int n) {
-                double d = 0, m = 1e-300;
-                for (int i = 0; i < n; ++i)
-                  {
-                    d = std::max(d, std::abs(a[i] - b[i]));
-                    m = std::max(m, std::abs(a[i]));
-                  }
-                return d / m;
-              };
               worst[0] = std::max(worst[0], relative(&W0, &W1, 1));
               worst[1] = std::max(worst[1], relative(g0.data(), g1.data(), N));
               if (hessian)
@@ -281,15 +285,6 @@ namespace
                   cosmo::materials::internal::differentiate_subset<8>(z, 3, energy_of, hessian, W0, g0, H0);
                 has_chain_rule &= model->plate_energy_derivatives(z, growth, law, membrane_bending,
                                                                   factor, hessian, W1, g1, H1);
-                auto relative = [](const double *a, const double *b, const int n) {
-                  double d = 0, m = 1e-300;
-                  for (int i = 0; i < n; ++i)
-                    {
-                      d = std::max(d, std::abs(a[i] - b[i]));
-                      m = std::max(m, std::abs(a[i]));
-                    }
-                  return d / m;
-                };
                 worst[0] = std::max(worst[0], relative(&W0, &W1, 1));
                 worst[1] = std::max(worst[1], relative(g0.data(), g1.data(), N));
                 if (hessian)

@@ -34,23 +34,8 @@ for run in one two; do
       -e "s|^\( *set Parameter range *=\).*|\1 0, 0.16|" \
       -e "s|^\( *set Maximum number of branches *=\).*|\1 2|" \
       "$here/../parameter_files/plate_rod/dome.prm" > dome_$run.prm
-  cat > disc_$run.prm <<PRM
-subsection Cross-section
-  set Shape = circle
-  set Global refinements = 3
-end
-subsection Material 1
-  set Growth kind = axial
-  set Growth factor = 1 + 0.3*x
-end
-subsection Rod strains
-  set Mode = natural shape
-end
-subsection Output
-  set Output directory = disc_$run
-  set VTU output = none
-end
-PRM
+  sed -e "s|^\( *set Global refinements *=\).*|\1 3|" -e "s|^\( *set Output directory *=\).*|\1 disc_$run|" \
+      "$here/../benchmarks/growing_disc.prm" > disc_$run.prm
 done
 for app in "$plate dome" "$section disc"; do
   exe=${app% *} name=${app#* }

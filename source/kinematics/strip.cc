@@ -35,50 +35,40 @@ namespace cosmo
       Director
       director_of(const std::array<double, n_z> &z, const bool with_hessian)
       {
+        // Outputs q (0-2), q' (3-5) of x = (theta1, theta3, theta1', theta3') = z[6..9].
+        std::array<double, n_director>                              x = {{z[6], z[7], z[8], z[9]}};
+        std::array<double, 6>                                       y;
+        std::array<std::array<double, n_director>, 6>               dy;
+        std::array<std::array<double, n_director * n_director>, 6> ddy;
+        materials::internal::differentiate_map<n_director, 6>(
+          x,
+          [](const auto &X, auto &Y) {
+            using Number = std::decay_t<decltype(X[0])>;
+            std::array<Number, 3> q, q1;
+            strip_director_and_derivative(X[0], X[1], X[2], X[3], q, q1);
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                Y[i]     = q[i];
+                Y[3 + i] = q1[i];
+              }
+          },
+          with_hessian, y, dy, ddy);
         Director d{};
-        if (with_hessian)
+        for (unsigned int i = 0; i < 3; ++i)
           {
-            using D1 = materials::FirstOrderAD<n_director>;
-            using D2 = materials::SecondOrderAD<n_director>;
-            std::array<D2, n_director> x;
+            d.q[i]  = y[i];
+            d.q1[i] = y[3 + i];
             for (int a = 0; a < n_director; ++a)
-              x[a] = D2(n_director, a, D1(n_director, a, z[6 + a]));
-            std::array<D2, 3> q, q1;
-            strip_director_and_derivative(x[0], x[1], x[2], x[3], q, q1);
-            for (unsigned int i = 0; i < 3; ++i)
               {
-                d.q[i]  = q[i].val().val();
-                d.q1[i] = q1[i].val().val();
-                for (int a = 0; a < n_director; ++a)
-                  {
-                    d.dq[a][i]  = q[i].dx(a).val();
-                    d.dq1[a][i] = q1[i].dx(a).val();
-                    for (int b = 0; b < n_director; ++b)
-                      {
-                        d.ddq[n_director * a + b][i]  = q[i].dx(a).dx(b);
-                        d.ddq1[n_director * a + b][i] = q1[i].dx(a).dx(b);
-                      }
-                  }
+                d.dq[a][i]  = dy[i][a];
+                d.dq1[a][i] = dy[3 + i][a];
               }
-          }
-        else
-          {
-            using D1 = materials::FirstOrderAD<n_director>;
-            std::array<D1, n_director> x;
-            for (int a = 0; a < n_director; ++a)
-              x[a] = D1(n_director, a, z[6 + a]);
-            std::array<D1, 3> q, q1;
-            strip_director_and_derivative(x[0], x[1], x[2], x[3], q, q1);
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                d.q[i]  = q[i].val();
-                d.q1[i] = q1[i].val();
-                for (int a = 0; a < n_director; ++a)
-                  {
-                    d.dq[a][i]  = q[i].dx(a);
-                    d.dq1[a][i] = q1[i].dx(a);
-                  }
-              }
+            if (with_hessian)
+              for (int ab = 0; ab < n_director * n_director; ++ab)
+                {
+                  d.ddq[ab][i]  = ddy[i][ab];
+                  d.ddq1[ab][i] = ddy[3 + i][ab];
+                }
           }
         return d;
       }

@@ -100,6 +100,60 @@ namespace cosmo
                 hessian[N * (first + a) + first + b] = Hx[M * a + b];
           }
       }
+
+      /**
+       * The M outputs of a map of N variables with their first and (on
+       * request) second derivatives, by the same nested numbers: `map(x, y)`
+       * is a generic callable that writes the outputs y (an array of M
+       * numbers) from x (N numbers). gradient[m][a] = dy_m/dx_a,
+       * hessian[m][N a + b] = d2y_m/dx_a dx_b (untouched without the
+       * Hessian). The nonlinear part of a chain rule (a director of a few
+       * rotation variables).
+       */
+      template <int N, int M, typename Map>
+      void
+      differentiate_map(const std::array<double, N> &              x,
+                        const Map &                                map,
+                        const bool                                 with_hessian,
+                        std::array<double, M> &                    value,
+                        std::array<std::array<double, N>, M> &     gradient,
+                        std::array<std::array<double, N * N>, M> & hessian)
+      {
+        using FirstOrder  = FirstOrderAD<N>;
+        using SecondOrder = SecondOrderAD<N>;
+        if (with_hessian)
+          {
+            std::array<SecondOrder, N> X;
+            for (int a = 0; a < N; ++a)
+              X[a] = SecondOrder(N, a, FirstOrder(N, a, x[a]));
+            std::array<SecondOrder, M> Y;
+            map(X, Y);
+            for (int m = 0; m < M; ++m)
+              {
+                value[m] = Y[m].val().val();
+                for (int a = 0; a < N; ++a)
+                  {
+                    gradient[m][a] = Y[m].dx(a).val();
+                    for (int b = 0; b < N; ++b)
+                      hessian[m][N * a + b] = Y[m].dx(a).dx(b);
+                  }
+              }
+          }
+        else
+          {
+            std::array<FirstOrder, N> X;
+            for (int a = 0; a < N; ++a)
+              X[a] = FirstOrder(N, a, x[a]);
+            std::array<FirstOrder, M> Y;
+            map(X, Y);
+            for (int m = 0; m < M; ++m)
+              {
+                value[m] = Y[m].val();
+                for (int a = 0; a < N; ++a)
+                  gradient[m][a] = Y[m].dx(a);
+              }
+          }
+      }
     } // namespace internal
   }   // namespace materials
 } // namespace cosmo

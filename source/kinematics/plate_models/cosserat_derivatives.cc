@@ -29,60 +29,28 @@ namespace cosmo
         using Vec = std::array<double, 3>;
         const auto &Gi = g.G_inv;
 
-        // The director d and its gradient (d1, d2), with their first and
-        // (on request) second derivatives in x = z[9..14].
-        Vec                                 d, d1, d2;
-        std::array<Vec, n_x>                dd{}, dd1{}, dd2{};
-        std::array<Vec, n_x * n_x>          ddd{}, ddd1{}, ddd2{};
-        if (with_hessian)
-          {
-            using D1 = materials::FirstOrderAD<n_x>;
-            using D2 = materials::SecondOrderAD<n_x>;
-            std::array<D2, n_x> x;
-            for (int a = 0; a < n_x; ++a)
-              x[a] = D2(n_x, a, D1(n_x, a, z[9 + a]));
-            std::array<D2, 3> q, q1, q2;
-            exact_director_and_gradient(x[0], x[1], &x[2], q, q1, q2);
+        // The director d and its gradient (d1, d2) (outputs 0-2, 3-5, 6-8),
+        // with their first and (on request) second derivatives in x = z[9..14].
+        std::array<double, n_x>                       x;
+        std::copy(z.begin() + 9, z.begin() + 15, x.begin());
+        std::array<double, 9>                         y;
+        std::array<std::array<double, n_x>, 9>        dy;
+        std::array<std::array<double, n_x * n_x>, 9>  ddy;
+        materials::internal::differentiate_map<n_x, 9>(
+          x,
+          [](const auto &X, auto &Y) {
+            using Number = std::decay_t<decltype(X[0])>;
+            std::array<Number, 3> q, q1, q2;
+            exact_director_and_gradient(X[0], X[1], &X[2], q, q1, q2);
             for (unsigned int i = 0; i < 3; ++i)
               {
-                d[i]  = q[i].val().val();
-                d1[i] = q1[i].val().val();
-                d2[i] = q2[i].val().val();
-                for (int a = 0; a < n_x; ++a)
-                  {
-                    dd[a][i]  = q[i].dx(a).val();
-                    dd1[a][i] = q1[i].dx(a).val();
-                    dd2[a][i] = q2[i].dx(a).val();
-                    for (int b = 0; b < n_x; ++b)
-                      {
-                        ddd[n_x * a + b][i]  = q[i].dx(a).dx(b);
-                        ddd1[n_x * a + b][i] = q1[i].dx(a).dx(b);
-                        ddd2[n_x * a + b][i] = q2[i].dx(a).dx(b);
-                      }
-                  }
+                Y[i]     = q[i];
+                Y[3 + i] = q1[i];
+                Y[6 + i] = q2[i];
               }
-          }
-        else
-          {
-            using D1 = materials::FirstOrderAD<n_x>;
-            std::array<D1, n_x> x;
-            for (int a = 0; a < n_x; ++a)
-              x[a] = D1(n_x, a, z[9 + a]);
-            std::array<D1, 3> q, q1, q2;
-            exact_director_and_gradient(x[0], x[1], &x[2], q, q1, q2);
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                d[i]  = q[i].val();
-                d1[i] = q1[i].val();
-                d2[i] = q2[i].val();
-                for (int a = 0; a < n_x; ++a)
-                  {
-                    dd[a][i]  = q[i].dx(a);
-                    dd1[a][i] = q1[i].dx(a);
-                    dd2[a][i] = q2[i].dx(a);
-                  }
-              }
-          }
+          },
+          with_hessian, y, dy, ddy);
+        // d(i) = y[i], d1(i) = y[3 + i], d2(i) = y[6 + i]; likewise dy, ddy.
 
         // V = (e1, e2, d, f1, f2), the arguments of plate_strains() in
         // grown_plate_strains(): e_b = sum_i a_i G^-1_ib, f_b = sum_i d_i G^-1_ib,
@@ -94,17 +62,17 @@ namespace cosmo
           for (unsigned int c = 0; c < 3; ++c)
             {
               V[3 * b + c]      = a1[c] * Gi[0][b] + a2[c] * Gi[1][b];
-              V[9 + 3 * b + c]  = d1[c] * Gi[0][b] + d2[c] * Gi[1][b];
+              V[9 + 3 * b + c]  = y[3 + c] * Gi[0][b] + y[6 + c] * Gi[1][b];
               Vz[n_z * (3 * b + c) + 3 + c] = Gi[0][b];
               Vz[n_z * (3 * b + c) + 6 + c] = Gi[1][b];
               for (int a = 0; a < n_x; ++a)
-                Vz[n_z * (9 + 3 * b + c) + 9 + a] = dd1[a][c] * Gi[0][b] + dd2[a][c] * Gi[1][b];
+                Vz[n_z * (9 + 3 * b + c) + 9 + a] = dy[3 + c][a] * Gi[0][b] + dy[6 + c][a] * Gi[1][b];
             }
         for (unsigned int c = 0; c < 3; ++c)
           {
-            V[6 + c] = d[c];
+            V[6 + c] = y[c];
             for (int a = 0; a < n_x; ++a)
-              Vz[n_z * (6 + c) + 9 + a] = dd[a][c];
+              Vz[n_z * (6 + c) + 9 + a] = dy[c][a];
           }
 
         // w(s(V)) in V, then g = V_z^T w_V, H = V_z^T w_VV V_z ...
@@ -128,9 +96,9 @@ namespace cosmo
               double    v  = 0;
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  v += wV[6 + c] * ddd[ab][c];
+                  v += wV[6 + c] * ddy[c][ab];
                   for (unsigned int k = 0; k < 2; ++k)
-                    v += wV[9 + 3 * k + c] * (ddd1[ab][c] * Gi[0][k] + ddd2[ab][c] * Gi[1][k]);
+                    v += wV[9 + 3 * k + c] * (ddy[3 + c][ab] * Gi[0][k] + ddy[6 + c][ab] * Gi[1][k]);
                 }
               H[n_z * (9 + a) + 9 + b] += v;
             }
@@ -148,14 +116,18 @@ namespace cosmo
         constexpr int n_z = plate_local_variables;
         using Vec         = std::array<double, 3>;
         // d = R(theta) E3 with its derivatives in theta = z[9, 10] (nested AD in two variables).
-        using D1 = materials::FirstOrderAD<2>;
-        using D2 = materials::SecondOrderAD<2>;
-        std::array<D2, 2> x;
-        for (int a = 0; a < 2; ++a)
-          x[a] = D2(2, a, D1(2, a, z[9 + a]));
-        const D2          no_gradient[4] = {D2(0.), D2(0.), D2(0.), D2(0.)};
-        std::array<D2, 3> q, q1, q2;
-        exact_director_and_gradient(x[0], x[1], no_gradient, q, q1, q2);
+        std::array<double, 3>                  d;
+        std::array<std::array<double, 2>, 3>   dd;
+        std::array<std::array<double, 4>, 3>   ddd;
+        materials::internal::differentiate_map<2, 3>(
+          {{z[9], z[10]}},
+          [](const auto &X, auto &Y) {
+            using Number = std::decay_t<decltype(X[0])>;
+            const Number          no_gradient[4] = {Number(0.), Number(0.), Number(0.), Number(0.)};
+            std::array<Number, 3> q1, q2;
+            exact_director_and_gradient(X[0], X[1], no_gradient, Y, q1, q2);
+          },
+          with_hessian, d, dd, ddd);
         // e = sum_b J_bc a_b . d (covariant_shear_strain() of the shear a_b . d), with
         // a1 = E1 + du/dX1 (z 3-5), a2 = E2 + du/dX2 (z 6-8).
         const Vec a[2] = {{{1. + z[3], z[4], z[5]}}, {{z[6], 1. + z[7], z[8]}}};
@@ -166,10 +138,10 @@ namespace cosmo
             const double Jb = jacobian[b][c];
             for (unsigned int i = 0; i < 3; ++i)
               {
-                e += Jb * a[b][i] * q[i].val().val();
-                grad[3 + 3 * b + i] = Jb * q[i].val().val();
+                e += Jb * a[b][i] * d[i];
+                grad[3 + 3 * b + i] = Jb * d[i];
                 for (int t = 0; t < 2; ++t)
-                  grad[9 + t] += Jb * a[b][i] * q[i].dx(t).val();
+                  grad[9 + t] += Jb * a[b][i] * dd[i][t];
               }
           }
         if (!with_hessian)
@@ -181,11 +153,11 @@ namespace cosmo
             for (unsigned int i = 0; i < 3; ++i)
               for (int t = 0; t < 2; ++t)
                 {
-                  const double v                         = Jb * q[i].dx(t).val();
+                  const double v                         = Jb * dd[i][t];
                   H[n_z * (3 + 3 * b + i) + 9 + t]       = v;
                   H[n_z * (9 + t) + 3 + 3 * b + i]       = v;
                   for (int r = 0; r < 2; ++r)
-                    H[n_z * (9 + t) + 9 + r] += Jb * a[b][i] * q[i].dx(t).dx(r);
+                    H[n_z * (9 + t) + 9 + r] += Jb * a[b][i] * ddd[i][2 * t + r];
                 }
           }
       }
