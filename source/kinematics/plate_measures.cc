@@ -52,12 +52,8 @@ namespace cosmo
         measure_hessians()
         {
           static const auto hessians = []() {
-            using D1 = materials::FirstOrderAD<n_vectors>;
-            using D2 = materials::SecondOrderAD<n_vectors>;
-            std::array<D2, n_vectors> V;
-            for (int a = 0; a < n_vectors; ++a)
-              V[a] = D2(n_vectors, a, D1(n_vectors, a, 0.));
-            const auto s = measures_of(V);
+            const auto s =
+              measures_of(materials::internal::independent_second_order<n_vectors>({}));
             std::array<std::array<double, n_vectors * n_vectors>, n_measures> h;
             for (int k = 0; k < n_measures; ++k)
               for (int a = 0; a < n_vectors; ++a)
@@ -81,11 +77,7 @@ namespace cosmo
         std::array<double, n_measures>             s;
         std::array<double, n_measures * n_vectors> sV;
         {
-          using D1 = materials::FirstOrderAD<n_vectors>;
-          std::array<D1, n_vectors> X;
-          for (int a = 0; a < n_vectors; ++a)
-            X[a] = D1(n_vectors, a, V[a]);
-          const auto m = measures_of(X);
+          const auto m = measures_of(materials::internal::independent_first_order<n_vectors>(V));
           for (int k = 0; k < n_measures; ++k)
             {
               s[k] = m[k].val();

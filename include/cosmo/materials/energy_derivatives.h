@@ -26,6 +26,26 @@ namespace cosmo
 
     namespace internal
     {
+      /// x as N independent variables of first (and second) order.
+      template <int N>
+      std::array<FirstOrderAD<N>, N>
+      independent_first_order(const std::array<double, N> &x)
+      {
+        std::array<FirstOrderAD<N>, N> X;
+        for (int a = 0; a < N; ++a)
+          X[a] = FirstOrderAD<N>(N, a, x[a]);
+        return X;
+      }
+      template <int N>
+      std::array<SecondOrderAD<N>, N>
+      independent_second_order(const std::array<double, N> &x)
+      {
+        std::array<SecondOrderAD<N>, N> X;
+        for (int a = 0; a < N; ++a)
+          X[a] = SecondOrderAD<N>(N, a, FirstOrderAD<N>(N, a, x[a]));
+        return X;
+      }
+
       /**
        * `energy` is a generic callable returning the energy for an array of N
        * numbers of any Sacado type (write it with `const auto &x`).
@@ -39,14 +59,9 @@ namespace cosmo
                     std::array<double, N> &      gradient,
                     std::array<double, N * N> &  hessian)
       {
-        using FirstOrder  = FirstOrderAD<N>;
-        using SecondOrder = SecondOrderAD<N>;
         if (with_hessian)
           {
-            std::array<SecondOrder, N> X;
-            for (int a = 0; a < N; ++a)
-              X[a] = SecondOrder(N, a, FirstOrder(N, a, x[a]));
-            const SecondOrder W = energy(X);
+            const SecondOrderAD<N> W = energy(independent_second_order<N>(x));
             value               = W.val().val();
             for (int a = 0; a < N; ++a)
               {
@@ -57,10 +72,7 @@ namespace cosmo
           }
         else
           {
-            std::array<FirstOrder, N> X;
-            for (int a = 0; a < N; ++a)
-              X[a] = FirstOrder(N, a, x[a]);
-            const FirstOrder W = energy(X);
+            const FirstOrderAD<N> W = energy(independent_first_order<N>(x));
             value              = W.val();
             for (int a = 0; a < N; ++a)
               gradient[a] = W.dx(a);
@@ -119,15 +131,10 @@ namespace cosmo
                         std::array<std::array<double, N>, M> &     gradient,
                         std::array<std::array<double, N * N>, M> & hessian)
       {
-        using FirstOrder  = FirstOrderAD<N>;
-        using SecondOrder = SecondOrderAD<N>;
         if (with_hessian)
           {
-            std::array<SecondOrder, N> X;
-            for (int a = 0; a < N; ++a)
-              X[a] = SecondOrder(N, a, FirstOrder(N, a, x[a]));
-            std::array<SecondOrder, M> Y;
-            map(X, Y);
+            std::array<SecondOrderAD<N>, M> Y;
+            map(independent_second_order<N>(x), Y);
             for (int m = 0; m < M; ++m)
               {
                 value[m] = Y[m].val().val();
@@ -141,11 +148,8 @@ namespace cosmo
           }
         else
           {
-            std::array<FirstOrder, N> X;
-            for (int a = 0; a < N; ++a)
-              X[a] = FirstOrder(N, a, x[a]);
-            std::array<FirstOrder, M> Y;
-            map(X, Y);
+            std::array<FirstOrderAD<N>, M> Y;
+            map(independent_first_order<N>(x), Y);
             for (int m = 0; m < M; ++m)
               {
                 value[m] = Y[m].val();
