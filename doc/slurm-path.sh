@@ -9,7 +9,8 @@
 # model; summary.json "factorization_memory" of a smaller run tells).
 # Stopped at the time limit (SIGTERM 120 s ahead), the run writes its
 # checkpoint; submitting the script again goes on from there.
-# (Written for SLURM with Open MPI; not run on a cluster here.)
+# (Written for SLURM with Open MPI; not run on a cluster here: tests/slurm_scripts.sh
+# runs it under a stand-in srun.)
 #
 # usage: sbatch doc/slurm-path.sh FILE.prm [application = plate_rod]
 #SBATCH --job-name=cosmo-path

@@ -91,12 +91,12 @@ else bad "a single path under mpirun: exit $s"; cat path_two.txt; fi
 # others run; the same curve as above.
 as plate_rod/studies/critical_curve_mode_change_planar_lobes.prm curve_stopped > curve_stopped.prm
 # The ranks are stopped (SIGSTOP) as soon as rank 0's first checkpoint is
-# there, so that the SIGTERM mpirun passes on reaches them in the middle of
-# rank 0's block however fast the machine (a value takes 0.3 s here, the
-# poll 0.01 s); they take it when continued.
+# there and sent SIGTERM (as SLURM signals every task), so that it reaches
+# them in the middle of rank 0's block however fast the machine (a value
+# takes 0.3 s here, the poll 0.01 s); they take it when continued.
 mpirun -np 2 "$plate" --quiet curve_stopped.prm > curve_stopped-0.txt 2>&1 & pid=$!
 for _ in $(seq 1 12000); do [ -f curve_stopped/checkpoint.cosmo ] && break; sleep 0.01; done
-pkill -STOP -P $pid; kill -TERM $pid; sleep 0.5; pkill -CONT -P $pid
+pkill -STOP -P $pid; pkill -TERM -P $pid; pkill -CONT -P $pid
 wait $pid 2>/dev/null; s1=$?
 timeout 900 "$plate" --quiet --resume curve_stopped > curve_stopped-1.txt 2>&1; s2=$?
 if [ $s1 -ne 0 ] && [ $s2 -eq 0 ] && grep -q "resumed on 1 ranks a study begun on 2" curve_stopped/sweep-log.txt &&
