@@ -151,7 +151,7 @@ namespace cosmo
         j["mpi_ranks"] = ranks::size();
       // A one-path run's MUMPS phases on all ranks (sparse_direct.h).
       if (solvers::factorization_ranks::active())
-        j["mumps_phases_on_all_ranks"] = solvers::factorization_ranks::shared_factorizations();
+        j["mumps_phases_on_all_ranks"] = solvers::factorization_ranks::shared_phases();
       return j;
     }
 

@@ -110,7 +110,7 @@ namespace cosmo
       MPI_Comm                  ranks_comm = MPI_COMM_NULL;
       bool                      sharing    = false;
       int                       next_number = 0;
-      unsigned int              shared_phases = 0;
+      unsigned int              n_shared_phases = 0;
       std::set<MumpsInstance *> alive;
 
       // A command to the serving ranks: the MUMPS phase (JOB) and the instance,
@@ -133,7 +133,7 @@ namespace cosmo
         if (m.shared && m.initialized)
           {
             broadcast_command(job, m.number);
-            ++shared_phases;
+            ++n_shared_phases;
           }
         m.id.job = job;
         dmumps_c(&m.id);
@@ -206,10 +206,10 @@ namespace cosmo
       }
 
       unsigned int
-      shared_factorizations()
+      shared_phases()
       {
 #ifdef COSMO_WITH_MUMPS
-        return shared_phases;
+        return n_shared_phases;
 #else
         return 0;
 #endif
@@ -283,7 +283,11 @@ namespace cosmo
     struct SparseDirectSolver::MumpsData
     {
 #ifdef COSMO_WITH_MUMPS
-      MumpsInstance       m;
+      // Value-initialized: MUMPS's C interface takes a non-null pointer of
+      // the structure (rhs, schur, sol_loc, ...) for an array given, so the
+      // ones not set must be null (the constructor below is user-provided:
+      // without the braces nothing would zero them).
+      MumpsInstance       m{};
       DMUMPS_STRUC_C &    id = m.id;
       std::vector<int>    perm_in; // user ordering, 1-based positions
       std::vector<int>    irn, jcn; // 1-based, upper triangle
@@ -298,7 +302,7 @@ namespace cosmo
           {
             m.number = next_number++;
             broadcast_command(-1, m.number);
-            ++shared_phases;
+            ++n_shared_phases;
             id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(ranks_comm);
           }
         else
@@ -307,6 +311,7 @@ namespace cosmo
         id.sym = 2; // symmetric, possibly indefinite: LDL^T
         id.job = -1;
         dmumps_c(&id);
+        check(-1);
         m.initialized = true;
         if (m.shared)
           alive.insert(&m);
@@ -329,6 +334,13 @@ namespace cosmo
       call(int job)
       {
         run(job);
+        check(job);
+      }
+
+      /// Throws MUMPS's error of the last phase, if any.
+      void
+      check(int job) const
+      {
         if (id.infog[0] < 0)
           throw std::runtime_error("MUMPS failed in phase " + std::to_string(job) +
                                    " with INFOG(1) = " + std::to_string(id.infog[0]) +
@@ -475,7 +487,7 @@ namespace cosmo
               continue;
             }
           if (info < 0)
-            mumps->call(2); // reports the error with its code
+            mumps->check(2); // reports the error with its code
           break;
         }
       n_negative = mumps->id.infog[11];

@@ -87,7 +87,7 @@ namespace cosmo
       release();
       /// Rank 0: MUMPS phases run on all ranks so far (factorizations, solves).
       unsigned int
-      shared_factorizations();
+      shared_phases();
     } // namespace factorization_ranks
 
     /**
