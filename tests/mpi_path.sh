@@ -11,7 +11,7 @@
 #    is the exact inertia in parallel: a wrong count moves or loses an
 #    event), the located loads equal to their resolution (summary.json
 #    location.resolution, the round-off bound of the test function,
-#    6.6e-9 here; measured difference 4e-11), and the same stability count
+#    6.6e-9 here; measured differences 4e-11 to 6e-10), and the same stability count
 #    and dome height at every step (to 1e-6 of the largest: the states
 #    agree to Newton's stopping test, amplified on the branch just past
 #    the bifurcation; measured 2.3e-9);
