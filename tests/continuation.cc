@@ -68,6 +68,7 @@ namespace
     int
     setup_jacobian(const Vector<double> &U) override
     {
+      ++setups;
       Vector<double>     R(n);
       FullMatrix<double> H(n, n);
       evaluate(U, lambda, R, H);
@@ -108,6 +109,7 @@ namespace
     }
     bool         exact_solves = false; ///< declare the (exact, LAPACK) solves exact
     unsigned int residuals    = 0;     ///< residual() calls
+    unsigned int setups       = 0;     ///< setup_jacobian() calls (factorizations)
     double
     jacobian_abs_form(const Vector<double> &v) const override
     {
@@ -716,6 +718,68 @@ namespace
     // differ from the exact ones only in the last digits).
     check("exact J p: the same solution", d.linfty_norm() <= 1e-13);
   }
+
+  /**
+   * newton_solve with take_guess takes a guess that passes its stopping
+   * test (the weighted max-norm of R at most the tolerance) as the
+   * solution, without a factorization; without take_guess (and for a guess
+   * that does not pass) KINSOL iterates, and the guess's residual is
+   * evaluated once (KINSOL's first residual is that one).
+   */
+  void
+  newton_guess()
+  {
+    const unsigned int      n = 50;
+    solvers::NewtonSettings settings;
+    settings.relative_tolerance = 1e-12;
+    Vector<double> U(n);
+    for (unsigned int i = 0; i < n; ++i)
+      U[i] = 2 * std::cos(0.7 * i);
+    {
+      Cubic system(n);
+      solvers::newton_solve(system, U, settings);
+    }
+    // Guesses off the solution along a fixed direction e, scaled so that
+    // the residual R ~ J e delta is a given multiple of the tolerance (J is
+    // diagonally dominant, |J e| within a factor 2 of 3 |e| here: the
+    // multiples 0.1 and 100 stay on their sides of 1).
+    auto guess = [&](const double multiple, unsigned int &residuals, unsigned int &setups,
+                     solvers::NewtonResult &r, Vector<double> &V, const bool take = true) {
+      V = U;
+      for (unsigned int i = 0; i < n; ++i)
+        V[i] += multiple * settings.relative_tolerance / 3. * std::sin(1.1 * i + 0.3);
+      Cubic system(n);
+      system.exact_solves = true;
+      r                   = solvers::newton_solve(system, V, settings, take);
+      residuals           = system.residuals;
+      setups              = system.setups;
+    };
+    unsigned int          residuals = 0, setups = 0;
+    solvers::NewtonResult r;
+    Vector<double>        V;
+    guess(0.1, residuals, setups, r, V);
+    Vector<double> start = U;
+    for (unsigned int i = 0; i < n; ++i)
+      start[i] += 0.1 * settings.relative_tolerance / 3. * std::sin(1.1 * i + 0.3);
+    std::cout << "guess at 0.1 tol: " << r.iterations << " iterations, " << setups
+              << " factorizations, " << residuals << " residuals, residual " << r.residual_norm
+              << "\n";
+    check("guess within the tolerance: taken, no factorization",
+          r.iterations == 0 && setups == 0 && residuals == 1 && V == start &&
+            r.residual_norm <= settings.relative_tolerance && r.residual_norm > 0);
+    guess(0.1, residuals, setups, r, V, false);
+    std::cout << "guess at 0.1 tol, not taken: " << r.iterations << " iterations, " << setups
+              << " factorizations, " << residuals << " residuals\n";
+    check("guess within the tolerance, not taken: KINSOL iterates (it takes 1/100 of it)",
+          r.iterations >= 1 && setups == r.iterations && residuals == 1 + r.iterations);
+    guess(100, residuals, setups, r, V);
+    std::cout << "guess at 100 tol: " << r.iterations << " iterations, " << setups
+              << " factorizations, " << residuals << " residuals, residual " << r.residual_norm
+              << "\n";
+    check("guess beyond the tolerance: Newton, the guess's residual once",
+          r.iterations >= 1 && setups == r.iterations && residuals == 1 + r.iterations &&
+            r.residual_norm <= settings.relative_tolerance);
+  }
 } // namespace
 
 int
@@ -725,6 +789,7 @@ main(int argc, char **argv)
   const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
                                    {"secondary_bifurcation", secondary_bifurcation},
                                    {"bordered_ordering", bordered_ordering},
-                                   {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp}};
+                                   {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},
+                                   {"newton_guess", newton_guess}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

@@ -311,6 +311,15 @@ namespace cosmo
         int
         residual(const Vector<double> &X, Vector<double> &R) override
         {
+          // (the predictor's, which newton_solve has just evaluated, is asked
+          // for again by the corrector's own Newton step)
+          if (last_status == 0 && X.size() == last_X.size() &&
+              std::equal(X.begin(), X.end(), last_X.begin()))
+            {
+              R = last_R;
+              return 0;
+            }
+          last_status = -1;
           Vector<double> U(X.begin(), X.begin() + n), RU(n);
           problem.set_load_parameter(X[n]);
           const int status = problem.residual(U, RU);
@@ -322,7 +331,17 @@ namespace cosmo
           for (unsigned int i = 0; i < n; ++i)
             s += c[i] * (U[i] - Up[i]);
           R[n] = s + dl * (X[n] - lp);
+          last_X      = X;
+          last_R      = R;
+          last_status = 0;
           return 0;
+        }
+
+        /// J^-1 dR/dlambda at the last setup_jacobian().
+        const Vector<double> &
+        J_inv_R_lambda() const
+        {
+          return b;
         }
 
         int
@@ -383,6 +402,8 @@ namespace cosmo
         Vector<double>      c;  // theta (mask o dU)
         const Vector<double> Up;
         Vector<double>      b;
+        Vector<double>      last_X, last_R;
+        int                 last_status = -1;
       };
     } // namespace
 
@@ -453,9 +474,10 @@ namespace cosmo
                         const Vector<double> &             mask,
                         Vector<double> &                   phi,
                         const unsigned int                 max_iterations,
-                        const std::vector<Vector<double>> &orthogonal_to)
+                        const std::vector<Vector<double>> &orthogonal_to,
+                        const double                       tolerance)
     {
-      return power_iteration(problem, mask, 0., max_iterations, 1e-12, orthogonal_to, phi);
+      return power_iteration(problem, mask, 0., max_iterations, tolerance, orthogonal_to, phi);
     }
 
     namespace
@@ -674,8 +696,47 @@ namespace cosmo
                              predictor_lambda, factorizations);
       Vector<double> X(n + 1);
       std::copy(predictor_U.begin(), predictor_U.end(), X.begin());
-      X[n]                 = predictor_lambda;
-      const NewtonResult r = newton_solve(system, X, newton);
+      X[n] = predictor_lambda;
+      // A predictor that passes the stopping test (the plate's flat branch:
+      // the tangent is exact there to ~1e-10 of the step) costs no Newton
+      // factorization: the corrector makes one Newton step from it with the
+      // factorization at the predictor, which the analysis of the state
+      // needs anyway and keeps (its count and tangent). The step makes the
+      // state as exact as Newton's last step makes any (the tolerance alone
+      // did not: a thin plate's dome 0.4 % off). One factorization per such
+      // step instead of two (doc/theory-continuation.md 1).
+      static const bool take_guess = std::getenv("COSMO_NO_PREDICTOR_STEP") == nullptr;
+      at_predictor.valid = false;
+      NewtonResult r     = newton_solve(system, X, newton, take_guess);
+      if (r.iterations == 0 && take_guess)
+        {
+          Vector<double> R(n + 1), d(n + 1);
+          if (system.setup_jacobian(X) != 0 || system.residual(X, R) != 0 ||
+              system.solve_with_jacobian(R, d) != 0)
+            throw NewtonFailure("the Jacobian cannot be set up at the predictor");
+          Vector<double> X1 = X;
+          X1 -= d;
+          Vector<double> w;
+          system.residual_weights(w);
+          if (system.residual(X1, R) == 0)
+            {
+              R.scale(w);
+              const double norm = R.linfty_norm();
+              if (std::isfinite(norm) && norm <= newton.relative_tolerance)
+                {
+                  at_predictor.U.reinit(n);
+                  std::copy(X1.begin(), X1.begin() + n, at_predictor.U.begin());
+                  at_predictor.lambda         = X1[n];
+                  at_predictor.J_inv_R_lambda = system.J_inv_R_lambda();
+                  at_predictor.valid          = true;
+                  X                           = X1;
+                  r.iterations                = 1;
+                  r.residual_norm             = norm;
+                }
+            }
+          if (!at_predictor.valid) // (not seen: Newton from the step's state as before)
+            r = newton_solve(system, X, newton);
+        }
       s.U.reinit(n);
       std::copy(X.begin(), X.begin() + n, s.U.begin());
       s.lambda = X[n];
@@ -692,12 +753,26 @@ namespace cosmo
       const unsigned int n = problem.n_unknowns();
       problem.set_load_parameter(s.lambda);
       Vector<double> Rl(n), z(n);
-      ++factorizations;
-      if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
-        throw NewtonFailure("the Jacobian cannot be set up at a converged state");
-      s.n_negative = problem.n_negative_eigenvalues();
-      if (problem.solve_with_jacobian(Rl, z) != 0) // z = J^-1 R_lambda; tangent (-z, 1)
-        throw NewtonFailure("the tangent solve failed at a converged state");
+      s.factorized_at_predictor = at_predictor.valid && at_predictor.lambda == s.lambda &&
+                                  at_predictor.U.size() == n &&
+                                  std::equal(s.U.begin(), s.U.end(), at_predictor.U.begin());
+      at_predictor.valid = false;
+      if (s.factorized_at_predictor)
+        {
+          // The count and J^-1 R_lambda of the predictor, one Newton update
+          // (below the tolerance) away (correct()).
+          s.n_negative = problem.n_negative_eigenvalues();
+          z            = at_predictor.J_inv_R_lambda;
+        }
+      else
+        {
+          ++factorizations;
+          if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
+            throw NewtonFailure("the Jacobian cannot be set up at a converged state");
+          s.n_negative = problem.n_negative_eigenvalues();
+          if (problem.solve_with_jacobian(Rl, z) != 0) // z = J^-1 R_lambda; tangent (-z, 1)
+            throw NewtonFailure("the tangent solve failed at a converged state");
+        }
       z *= -1.;
       const double tl = 1. / std::sqrt(1. + norm2(z));
       s.tU            = z;
@@ -858,10 +933,16 @@ namespace cosmo
                 // (a double eigenvalue: in the fixed-point space of the
                 // reflection, where its symmetric representative is simple)
                 crossing_mode(problem, mask, wanted_sign, modes_of_this_step, border, project);
+                // Newton stops once the error left is below a tenth of the
+                // point's round-off resolution, as a critical curve's points
+                // do (doc/theory-continuation.md 7): iterating further only
+                // moves t inside its scatter, and costs a factorization each.
+                CriticalPointSettings location;
+                location.resolution_fraction = 0.1;
                 const CriticalPoint cp = locate_critical_point(
                   problem, e.kind == Kind::fold, start.U, start.lambda, border, mask, s.tU,
                   s.tlambda, true, std::abs(hi.lambda - lo.lambda), newton.relative_tolerance,
-                  CriticalPointSettings(), project);
+                  location, project);
                 factorizations += cp.factorizations;
                 factorized = Factorized::none;
                 // Its arclength along the step's tangent.
@@ -1018,10 +1099,12 @@ namespace cosmo
           State        next;
           next.depth = s.depth;
           NewtonResult r;
+          unsigned int analysed_with = 0; // the factorization count after analyse(next)
           try
             {
               r = correct(problem, next, s.tU, s.tlambda, Up, lp);
               analyse(problem, next, &s.tU, s.tlambda);
+              analysed_with = factorizations;
             }
           catch (NewtonFailure &e)
             {
@@ -1065,6 +1148,9 @@ namespace cosmo
           report.cutbacks          = cutbacks;
           report.branch            = branch;
           report.n_negative        = s.n_negative;
+          // (an event located since has factorized elsewhere)
+          report.factorized_at_predictor =
+            s.factorized_at_predictor && factorizations == analysed_with;
           report.final = (k + 1 == settings.maximum_steps || s.lambda < settings.lambda_min ||
                           s.lambda > settings.lambda_max);
           problem.set_load_parameter(s.lambda);
@@ -1250,6 +1336,7 @@ namespace cosmo
             report.residual_norm     = r.residual_norm;
             report.branch            = branch;
             report.n_negative        = first.n_negative;
+            report.factorized_at_predictor = first.factorized_at_predictor;
             problem.set_load_parameter(first.lambda);
             problem.converged_step(first.U, report);
           }

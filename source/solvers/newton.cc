@@ -74,7 +74,10 @@ namespace cosmo
     }
 
     NewtonResult
-    newton_solve(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings)
+    newton_solve(NonlinearSystem &      system,
+                 Vector<double> &       U,
+                 const NewtonSettings & settings,
+                 const bool             take_guess)
     {
       NewtonResult result;
       Vector<double> weights;
@@ -101,11 +104,47 @@ namespace cosmo
       // The last Newton solve J p = b, for the residual KINSOL asks next.
       Vector<double> solved_rhs, solved_p;
       bool           jp_pending = false;
+
+      // The guess first: taken if it passes the stopping test and the
+      // caller asks for that (take_guess); otherwise KINSOL's first residual
+      // is this one.
+      {
+        Vector<double> R0(n);
+        last_status = system.residual(U, R0);
+        io::check_interrupt();
+        last_u = U;
+        last_r = R0;
+        if (last_status == 0 && take_guess)
+          {
+            R0.scale(weights);
+            const double norm = R0.linfty_norm();
+            if (std::isfinite(norm) && norm <= settings.relative_tolerance)
+              {
+                result.iterations    = 0;
+                result.residual_norm = norm;
+                return result;
+              }
+          }
+      }
+      bool first_call = true;
       kinsol.residual      = [&](const Vector<double> &u, Vector<double> &r) {
         // SIGINT/SIGTERM: end this solve now (an unrecoverable error for
         // KINSOL), then report the interruption below, not a failure.
         if (io::pending_signal() != 0)
           return -1;
+        // KINSOL's first residual: that of the guess, evaluated above.
+        if (first_call)
+          {
+            first_call = false;
+            bool same  = u.size() == last_u.size();
+            for (unsigned int i = 0; same && i < u.size(); ++i)
+              same = u[i] == last_u[i];
+            if (same)
+              {
+                r = last_r;
+                return last_status;
+              }
+          }
         // Right after a solve, KINSOL approximates J p by the difference
         // quotient (R(u + sigma p) - R(u)) / sigma (kinLsDQJtimes: the
         // deal.II 9.4 wrapper offers no J p of its own). For an exact solve

@@ -160,14 +160,18 @@ namespace cosmo
      * masked, so bordered multipliers and strains act as constraints). Near a
      * loss of stability it is the eigenvalue that crosses zero. Iterates are
      * kept orthogonal (masked) to the vectors orthogonal_to: modes already
-     * known, e.g. of a crossing just located in the same step.
+     * known, e.g. of a crossing just located in the same step. The
+     * iteration stops when the unit iterate moves by less than tolerance;
+     * the eigenvalue (a Rayleigh quotient) is then accurate to about its
+     * square, relative.
      */
     double
     smallest_eigenvalue(BifurcationProblem &               problem,
                         const Vector<double> &             mask,
                         Vector<double> &                   mode,
                         unsigned int                       max_iterations = 100,
-                        const std::vector<Vector<double>> &orthogonal_to  = {});
+                        const std::vector<Vector<double>> &orthogonal_to  = {},
+                        double                             tolerance      = 1e-12);
 
     /**
      * How an event was located, for summary.json: "location": {"method",
@@ -346,6 +350,8 @@ namespace cosmo
         unsigned int   depth      = 0; ///< 0 the first branch, k+1 switched from depth k
         unsigned int   branch     = 0; ///< of a switch start: the branch it leaves
         double         sign       = 0; ///< of a switch start: +1 along +phi, -1 along -phi
+        /// analyse() took the count from the predictor's factorization (correct()).
+        bool factorized_at_predictor = false;
       };
 
       /// Where the run is: everything a resumed run needs to go on (save(), load()).
@@ -373,6 +379,19 @@ namespace cosmo
       double            theta = 1;
       Vector<double>    mask;
       unsigned int      factorizations = 0; ///< setup_jacobian calls made by the driver
+      /**
+       * A state correct() reached by one Newton step from a predictor that
+       * passed the stopping test, with the factorization at the predictor
+       * (still the problem's) and J^-1 dR/dlambda there: analyse() of that
+       * state takes its count and tangent from them.
+       */
+      struct PredictorFactorization
+      {
+        Vector<double> U;
+        double         lambda = 0;
+        Vector<double> J_inv_R_lambda;
+        bool           valid = false;
+      } at_predictor;
       bool              stopped = false;    ///< the first branch stopped at its first event
       /// Branches that ended before their target (minimum step, failed switch): the run fails.
       std::vector<std::string> incomplete;

@@ -97,9 +97,22 @@ namespace cosmo
     bool
     dq_point_of(const Vector<double> &v, const Vector<double> &u, const Vector<double> &p, double &sigma);
 
-    /// Solve R(U) = 0 from the initial guess U; throws NewtonFailure.
+    /**
+     * Solve R(U) = 0 from the initial guess U; throws NewtonFailure.
+     * take_guess: a guess that passes the stopping test (the weighted
+     * max-norm of R at most the tolerance) is returned as it is, with 0
+     * iterations and no factorization (KINSOL itself takes a guess only at
+     * 1/100 of the tolerance). Only for a caller that then makes a Newton
+     * step of its own with the factorization it needs there anyway (the
+     * arclength corrector): the tolerance alone can leave a state short of
+     * what Newton's last, quadratic step gives (a thin plate's buckled
+     * state, doc/theory-continuation.md 1).
+     */
     NewtonResult
-    newton_solve(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings);
+    newton_solve(NonlinearSystem &      system,
+                 Vector<double> &       U,
+                 const NewtonSettings & settings,
+                 bool                   take_guess = false);
   } // namespace solvers
 } // namespace cosmo
 
