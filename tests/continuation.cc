@@ -110,6 +110,7 @@ namespace
     bool         exact_solves = false; ///< declare the (exact, LAPACK) solves exact
     unsigned int residuals    = 0;     ///< residual() calls
     unsigned int setups       = 0;     ///< setup_jacobian() calls (factorizations)
+    unsigned int at_predictor = 0;     ///< states reported with the predictor's factorization
     double
     jacobian_abs_form(const Vector<double> &v) const override
     {
@@ -123,6 +124,7 @@ namespace
     converged_step(const Vector<double> &U, const solvers::StepReport &r) override
     {
       history.push_back({r.t, r.branch, r.n_negative, std::vector<double>(U.begin(), U.end())});
+      at_predictor += r.factorized_at_predictor;
     }
     void
     located_event(const Event &e, const Vector<double> &, const Vector<double> *) override
@@ -388,6 +390,79 @@ namespace
     check("stability count 1 on x < 0, 0 on x > 0 (" + std::to_string(wrong) + " wrong)", wrong == 0);
     check("no branch switching at a fold", std::all_of(p.history.begin(), p.history.end(),
                                                        [](const auto &pt) { return pt.branch == 0; }));
+  }
+
+  /// E = x^2/2 + c x^4/4 - lambda x + y^2/2: the nearly straight branch
+  /// x + c x^3 = lambda.
+  class NearlyLinear : public DenseProblem
+  {
+  public:
+    explicit NearlyLinear(const double c)
+      : DenseProblem(2)
+      , c(c)
+    {}
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      R[0]    = U[0] + c * std::pow(U[0], 3) - l;
+      R[1]    = U[1];
+      H(0, 0) = 1 + 3 * c * U[0] * U[0];
+      H(1, 1) = 1;
+      H(0, 1) = H(1, 0) = 0;
+    }
+    const double c;
+  };
+
+  /**
+   * The corrector's predictor step (ArclengthContinuation::correct). On
+   * the nearly straight branch x + c x^3 = lambda (c = 1e-7) the tangent
+   * predictor misses by ~3 c x ds^2 ~ 1e-9: below the tolerance 1e-8, above
+   * the 1e-10 at which KINSOL would take it. Each converged state then costs
+   * one factorization (the predictor's, kept by the analysis; before, two:
+   * KINSOL's iteration and the analysis), and the Newton step from the
+   * predictor keeps the states on the branch to round-off. On the curved
+   * branch x^2 = lambda of the fold the predictor misses by O(ds^2), far
+   * above the tolerance, and Newton runs as before (at least two
+   * factorizations per state).
+   */
+  void
+  predictor_step()
+  {
+    NearlyLinear            p(1e-7);
+    solvers::NewtonSettings loose = newton();
+    loose.relative_tolerance      = 1e-8;
+    solvers::ArclengthContinuation driver(settings(-1, 1.5), loose);
+    Vector<double>                 U(2);
+    const auto                     events = driver.run(p, U, 0.);
+    double                         off    = 0;
+    for (const auto &pt : p.history)
+      off = std::max(off, std::abs(pt.U[0] + 1e-7 * std::pow(pt.U[0], 3) - pt.lambda) +
+                            std::abs(pt.U[1]));
+    std::cout << "  nearly straight branch: " << p.history.size() << " states, " << p.setups
+              << " factorizations, " << p.at_predictor
+              << " states with the predictor's, |x + c x^3 - lambda| + |y| <= " << off << "\n";
+    check("nearly straight branch: one factorization per converged state, most the predictor's",
+          events.empty() && p.history.size() >= 10 && p.setups == p.history.size() &&
+            2 * p.at_predictor >= p.history.size());
+    check_close("nearly straight branch: on x + c x^3 = lambda", off, 0, 0, 1e-14);
+
+    Fold                           f;
+    auto                           s = settings(0.01, 1);
+    s.direction                      = -1;
+    solvers::ArclengthContinuation d(s, newton());
+    Vector<double>                 V(2);
+    V[0]                    = 1;
+    const auto fold_events  = d.run(f, V, 1.);
+    double     worst        = 0;
+    for (const auto &pt : f.history)
+      worst = std::max(worst, std::abs(pt.U[0] * pt.U[0] - pt.lambda));
+    std::cout << "  curved branch: " << f.history.size() << " states, " << f.setups
+              << " factorizations, |x^2 - lambda| <= " << worst << "\n";
+    check("curved branch: Newton as before (at least two factorizations per state after the first)",
+          fold_events.empty() && f.history.size() >= 5 && f.setups >= 2 * f.history.size() - 1);
+    check_close("curved branch: x^2 = lambda", worst, 0, 0, 1e-10);
   }
 
   // A clamped-free chain of n rigid links (bending stiffness 1, length 1)
@@ -790,6 +865,7 @@ main(int argc, char **argv)
                                    {"secondary_bifurcation", secondary_bifurcation},
                                    {"bordered_ordering", bordered_ordering},
                                    {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},
-                                   {"newton_guess", newton_guess}};
+                                   {"newton_guess", newton_guess},
+                                   {"predictor_step", predictor_step}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }
