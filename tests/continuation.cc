@@ -415,6 +415,29 @@ namespace
     const double c;
   };
 
+  /// NearlyLinear with a pitchfork in y at lambda = 1 on its branch y = 0:
+  /// E adds (1 - lambda) y^2/2 + y^4/4.
+  class NearlyLinearPitchfork : public DenseProblem
+  {
+  public:
+    explicit NearlyLinearPitchfork(const double c)
+      : DenseProblem(2)
+      , c(c)
+    {}
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      R[0]    = U[0] + c * std::pow(U[0], 3) - l;
+      R[1]    = (1 - l) * U[1] + std::pow(U[1], 3);
+      H(0, 0) = 1 + 3 * c * U[0] * U[0];
+      H(1, 1) = 1 - l + 3 * U[1] * U[1];
+      H(0, 1) = H(1, 0) = 0;
+    }
+    const double c;
+  };
+
   /**
    * The corrector's predictor step (ArclengthContinuation::correct). On
    * the nearly straight branch x + c x^3 = lambda (c = 1e-7) the tangent
@@ -447,6 +470,31 @@ namespace
           events.empty() && p.history.size() >= 10 && p.setups == p.history.size() &&
             2 * p.at_predictor >= p.history.size());
     check_close("nearly straight branch: on x + c x^3 = lambda", off, 0, 0, 1e-14);
+
+    // The count and the event from the predictors' factorizations: the
+    // stability count of every state (1 past lambda = 1), and the branch
+    // point located from a step's end whose factorization is its
+    // predictor's (resolution ~1e-16 here).
+    NearlyLinearPitchfork          q(1e-7);
+    solvers::ArclengthSettings     no_switch = settings(-1, 1.5);
+    no_switch.switch_branches                = false;
+    solvers::ArclengthContinuation e(no_switch, loose);
+    Vector<double>                 W(2);
+    const auto                     located = e.run(q, W, 0.);
+    unsigned int                   wrong   = 0;
+    for (const auto &pt : q.history)
+      wrong += pt.n_negative != (pt.lambda > 1 ? 1 : 0);
+    std::cout << "  with a pitchfork: " << q.history.size() << " states, " << q.at_predictor
+              << " with the predictor's factorization, " << wrong << " wrong counts\n";
+    check("with a pitchfork: every count right, most states with the predictor's factorization",
+          wrong == 0 && q.history.size() >= 10 && 2 * q.at_predictor >= q.history.size());
+    check("with a pitchfork: one branch point", located.size() == 1);
+    if (located.size() == 1)
+      {
+        check_close("with a pitchfork: the branch point at lambda = 1", located[0].event.lambda, 1, 0,
+                    1e-12);
+        check_location(located[0].event, 1e-12);
+      }
 
     Fold                           f;
     auto                           s = settings(0.01, 1);

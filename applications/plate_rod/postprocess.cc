@@ -179,8 +179,7 @@ namespace cosmo
                std::equal(U.begin(), U.end(), V.begin());
       };
       // The driver has just factorized at this state (or at its predictor,
-      // one Newton update below the tolerance away), unless it located an
-      // event since.
+      // one small Newton step away), unless it located an event since.
       if (!report_with_last_factorization && !report.factorized_at_predictor &&
           !same_state(factorized_at, factorized_load))
         setup_jacobian(U);
@@ -197,9 +196,10 @@ namespace cosmo
         Vector<double>        mask, mode;
         mode_mask(mask);
         // Reported, not acted on: an iterate that moves by less than 1e-4
-        // gives the eigenvalue to ~1e-8 (a Rayleigh quotient), in a third
-        // of the solves of the default 1e-12 (14 to 21 per state on the
-        // dome's sector).
+        // gives the eigenvalue to ~1e-8 (a Rayleigh quotient), or to the
+        // width of a cluster of eigenvalues if the iterate still turns
+        // within it; 3 to 9 solves per state on the dome's sector instead
+        // of 5 to 22 to 1e-12.
         s.smallest_eigenvalue = solvers::smallest_eigenvalue(*this, mask, mode, 30, {}, 1e-4);
       }
       states.push_back(s);

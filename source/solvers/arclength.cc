@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <iostream>
 #include <iomanip>
@@ -718,23 +719,37 @@ namespace cosmo
           X1 -= d;
           Vector<double> w;
           system.residual_weights(w);
+          bool converged = false;
           if (system.residual(X1, R) == 0)
             {
               R.scale(w);
               const double norm = R.linfty_norm();
               if (std::isfinite(norm) && norm <= newton.relative_tolerance)
                 {
-                  at_predictor.U.reinit(n);
-                  std::copy(X1.begin(), X1.begin() + n, at_predictor.U.begin());
-                  at_predictor.lambda         = X1[n];
-                  at_predictor.J_inv_R_lambda = system.J_inv_R_lambda();
-                  at_predictor.valid          = true;
-                  X                           = X1;
-                  r.iterations                = 1;
-                  r.residual_norm             = norm;
+                  converged       = true;
+                  X               = X1;
+                  r.iterations    = 1;
+                  r.residual_norm = norm;
                 }
             }
-          if (!at_predictor.valid) // (not seen: Newton from the step's state as before)
+          // The analysis keeps the predictor's factorization only when the
+          // step was small against the scale of the unknowns (sqrt(eps): the
+          // Jacobian then differs from the state's by ~1e-8 relative, like
+          // the difference steps elsewhere; on the flat branch the step is
+          // 6e-11 to 1.4e-9 of it). A residual below the tolerance does not
+          // bound the step where J is nearly singular (a small-amplitude
+          // branch start, say): there the state is analysed afresh.
+          Vector<double> dU(d.begin(), d.begin() + n), U1(X1.begin(), X1.begin() + n);
+          const double   near = std::sqrt(std::numeric_limits<double>::epsilon());
+          if (converged && masked_max(dU, mask) <= near * problem.unknowns_scale(U1) &&
+              std::abs(d[n]) <= near * (1 + std::abs(X1[n])))
+            {
+              at_predictor.U              = U1;
+              at_predictor.lambda         = X1[n];
+              at_predictor.J_inv_R_lambda = system.J_inv_R_lambda();
+              at_predictor.valid          = true;
+            }
+          if (!converged) // (not seen: Newton from the predictor as before)
             r = newton_solve(system, X, newton);
         }
       s.U.reinit(n);
@@ -759,8 +774,8 @@ namespace cosmo
       at_predictor.valid = false;
       if (s.factorized_at_predictor)
         {
-          // The count and J^-1 R_lambda of the predictor, one Newton update
-          // (below the tolerance) away (correct()).
+          // The count and J^-1 R_lambda of the predictor, one Newton step
+          // (below sqrt(eps) of the unknowns' scale) away (correct()).
           s.n_negative = problem.n_negative_eigenvalues();
           z            = at_predictor.J_inv_R_lambda;
         }

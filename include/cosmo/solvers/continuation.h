@@ -37,8 +37,9 @@ namespace cosmo
       unsigned int branch            = 0;  ///< arclength continuation: 0 the first branch
       int          n_negative        = -1; ///< arclength continuation: stability count, -1 unknown
       /// The problem's factorization in place is not of this state but of
-      /// the predictor one Newton update (below the tolerance) away, from
-      /// which the count comes (arclength continuation, doc/theory-continuation.md 1).
+      /// the predictor one Newton step (below sqrt(eps) of the unknowns'
+      /// scale) away, from which the count comes (arclength continuation,
+      /// doc/theory-continuation.md 1).
       bool factorized_at_predictor = false;
     };
 
