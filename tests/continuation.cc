@@ -393,49 +393,30 @@ namespace
   }
 
   /// E = x^2/2 + c x^4/4 - lambda x + y^2/2: the nearly straight branch
-  /// x + c x^3 = lambda.
+  /// x + c x^3 = lambda; with_pitchfork: (1 - lambda) y^2/2 + y^4/4 for the
+  /// y-part, a pitchfork at lambda = 1 on the branch y = 0.
   class NearlyLinear : public DenseProblem
   {
   public:
-    explicit NearlyLinear(const double c)
+    NearlyLinear(const double c, const bool with_pitchfork = false)
       : DenseProblem(2)
       , c(c)
+      , pitchfork(with_pitchfork)
     {}
 
   protected:
     void
     evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
     {
+      const double k = pitchfork ? 1 - l : 1, q = pitchfork ? 1 : 0;
       R[0]    = U[0] + c * std::pow(U[0], 3) - l;
-      R[1]    = U[1];
+      R[1]    = k * U[1] + q * std::pow(U[1], 3);
       H(0, 0) = 1 + 3 * c * U[0] * U[0];
-      H(1, 1) = 1;
+      H(1, 1) = k + 3 * q * U[1] * U[1];
       H(0, 1) = H(1, 0) = 0;
     }
     const double c;
-  };
-
-  /// NearlyLinear with a pitchfork in y at lambda = 1 on its branch y = 0:
-  /// E adds (1 - lambda) y^2/2 + y^4/4.
-  class NearlyLinearPitchfork : public DenseProblem
-  {
-  public:
-    explicit NearlyLinearPitchfork(const double c)
-      : DenseProblem(2)
-      , c(c)
-    {}
-
-  protected:
-    void
-    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
-    {
-      R[0]    = U[0] + c * std::pow(U[0], 3) - l;
-      R[1]    = (1 - l) * U[1] + std::pow(U[1], 3);
-      H(0, 0) = 1 + 3 * c * U[0] * U[0];
-      H(1, 1) = 1 - l + 3 * U[1] * U[1];
-      H(0, 1) = H(1, 0) = 0;
-    }
-    const double c;
+    const bool   pitchfork;
   };
 
   /**
@@ -475,7 +456,7 @@ namespace
     // stability count of every state (1 past lambda = 1), and the branch
     // point located from a step's end whose factorization is its
     // predictor's (resolution ~1e-16 here).
-    NearlyLinearPitchfork          q(1e-7);
+    NearlyLinear                   q(1e-7, true);
     solvers::ArclengthSettings     no_switch = settings(-1, 1.5);
     no_switch.switch_branches                = false;
     solvers::ArclengthContinuation e(no_switch, loose);
