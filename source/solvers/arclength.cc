@@ -717,13 +717,10 @@ namespace cosmo
             throw NewtonFailure("the Jacobian cannot be set up at the predictor");
           Vector<double> X1 = X;
           X1 -= d;
-          Vector<double> w;
-          system.residual_weights(w);
           bool converged = false;
           if (system.residual(X1, R) == 0)
             {
-              R.scale(w);
-              const double norm = R.linfty_norm();
+              const double norm = scaled_residual_norm(system, R);
               if (std::isfinite(norm) && norm <= newton.relative_tolerance)
                 {
                   converged       = true;

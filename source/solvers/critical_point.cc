@@ -14,20 +14,6 @@ namespace cosmo
 {
   namespace solvers
   {
-    namespace
-    {
-      double
-      weighted_max_norm(BifurcationProblem &problem, const Vector<double> &R)
-      {
-        Vector<double> w;
-        problem.residual_weights(w);
-        double m = 0;
-        for (unsigned int i = 0; i < R.size(); ++i)
-          m = std::max(m, std::abs(w[i] * R[i]));
-        return m;
-      }
-    } // namespace
-
     double
     masked_max(const Vector<double> &v, const Vector<double> &mask)
     {
@@ -137,7 +123,7 @@ namespace cosmo
           R = R0;
           if (!fold)
             R.add(mu, b);
-          cp.residual_norm = weighted_max_norm(problem, R);
+          cp.residual_norm = scaled_residual_norm(problem, R);
 
           // The bordered system: g and v.
           if (problem.solve_with_jacobian(b, y) != 0)
@@ -305,7 +291,7 @@ namespace cosmo
                 return fail("the residual cannot be evaluated at the located point");
               if (!fold)
                 R.add(mu, b);
-              cp.residual_norm = weighted_max_norm(problem, R);
+              cp.residual_norm = scaled_residual_norm(problem, R);
               cp.iterations    = it + 1;
               if (cp.residual_norm <= residual_tolerance)
                 {

@@ -3,6 +3,7 @@
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/newton.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -73,6 +74,17 @@ namespace cosmo
       return true;
     }
 
+    double
+    scaled_residual_norm(const NonlinearSystem &system, const Vector<double> &R)
+    {
+      Vector<double> w;
+      system.residual_weights(w);
+      double m = 0;
+      for (unsigned int i = 0; i < R.size(); ++i)
+        m = std::max(m, std::abs(w[i] * R[i]));
+      return m;
+    }
+
     NewtonResult
     newton_solve(NonlinearSystem &      system,
                  Vector<double> &       U,
@@ -105,41 +117,41 @@ namespace cosmo
       Vector<double> solved_rhs, solved_p;
       bool           jp_pending = false;
 
-      // The guess first: taken if it passes the stopping test and the
-      // caller asks for that (take_guess); otherwise KINSOL's first residual
-      // is this one.
-      {
-        Vector<double> R0(n);
-        last_status = system.residual(U, R0);
-        io::check_interrupt();
-        last_u = U;
-        last_r = R0;
-        if (last_status == 0 && take_guess)
-          {
-            R0.scale(weights);
-            const double norm = R0.linfty_norm();
-            if (std::isfinite(norm) && norm <= settings.relative_tolerance)
-              {
-                result.iterations    = 0;
-                result.residual_norm = norm;
-                return result;
-              }
-          }
-      }
-      bool first_call = true;
+      // Whether u is (bitwise) the point of the residual kept in last_r.
+      auto is_last = [&](const Vector<double> &u) {
+        return last_status >= 0 && u.size() == last_u.size() &&
+               std::equal(u.begin(), u.end(), last_u.begin());
+      };
+
+      // take_guess: the guess first, taken if it passes the stopping test;
+      // otherwise its residual is KINSOL's first.
+      bool first_call = false;
+      if (take_guess)
+        {
+          last_status = system.residual(U, last_r);
+          io::check_interrupt();
+          last_u = U;
+          if (last_status == 0)
+            {
+              const double norm = scaled_residual_norm(system, last_r);
+              if (std::isfinite(norm) && norm <= settings.relative_tolerance)
+                {
+                  result.iterations    = 0;
+                  result.residual_norm = norm;
+                  return result;
+                }
+            }
+          first_call = true;
+        }
       kinsol.residual      = [&](const Vector<double> &u, Vector<double> &r) {
         // SIGINT/SIGTERM: end this solve now (an unrecoverable error for
         // KINSOL), then report the interruption below, not a failure.
         if (io::pending_signal() != 0)
           return -1;
-        // KINSOL's first residual: that of the guess, evaluated above.
         if (first_call)
           {
             first_call = false;
-            bool same  = u.size() == last_u.size();
-            for (unsigned int i = 0; same && i < u.size(); ++i)
-              same = u[i] == last_u[i];
-            if (same)
+            if (is_last(u))
               {
                 r = last_r;
                 return last_status;
@@ -200,13 +212,8 @@ namespace cosmo
       io::check_interrupt();
       // KINSOL reports failure only through (Debug-mode) assertions: check.
       Vector<double> R(n);
-      bool           same = last_u.size() == n && last_status >= 0;
-      for (unsigned int i = 0; same && i < n; ++i)
-        same = last_u[i] == U[i];
-      const int status = same ? (R = last_r, last_status) : system.residual(U, R);
-      if (status == 0)
-        R.scale(weights);
-      result.residual_norm = (status == 0) ? R.linfty_norm() : INFINITY;
+      const int      status = is_last(U) ? (R = last_r, last_status) : system.residual(U, R);
+      result.residual_norm = (status == 0) ? scaled_residual_norm(system, R) : INFINITY;
       if (status != 0 || !std::isfinite(result.residual_norm) ||
           result.residual_norm > settings.relative_tolerance)
         {

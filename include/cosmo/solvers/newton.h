@@ -97,6 +97,10 @@ namespace cosmo
     bool
     dq_point_of(const Vector<double> &v, const Vector<double> &u, const Vector<double> &p, double &sigma);
 
+    /// max_i |w_i R_i| with the system's residual_weights(): its stopping test.
+    double
+    scaled_residual_norm(const NonlinearSystem &system, const Vector<double> &R);
+
     /**
      * Solve R(U) = 0 from the initial guess U; throws NewtonFailure.
      * take_guess: a guess that passes the stopping test (the weighted
