@@ -2,6 +2,9 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/base/quadrature_lib.h>
+
+#include <cosmo/assembly/assumed_shear.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/plate_model.h>
 #include <cosmo/kinematics/rotation.h>
@@ -331,6 +334,92 @@ namespace
     check_close("gradient, largest difference / largest entry", worst[1], 0, 0, 1e-12);
     check_close("Hessian, largest difference / largest entry", worst[2], 0, 0, 1e-12);
   }
+  // The assumed shear's reduction (assembly/assumed_shear.h), for p = 1, 2,
+  // 3 and both tyings: (a) it reproduces every field of its space, e_0 in
+  // Q_{p-1,p} and e_1 in Q_{p,p-1}; (b) edge tying: on the edge xi_1 = 0
+  // the reduced e_0 (the tangential strain there) depends on that edge's
+  // tying points only, so it is continuous from cell to cell; interior
+  // tying has not this property; (c) edge tying of e_0 = xi_1^(p+1) (not in
+  // the space): the edge values and the moments against P_{p-2} in xi_1 are
+  // kept (the canonical interpolation).
+  void
+  assumed_shear_reduction()
+  {
+    std::mt19937                           gen(11);
+    std::uniform_real_distribution<double> u(-1., 1.);
+    for (const unsigned int p : {1u, 2u, 3u})
+      for (const bool edges : {true, false})
+        {
+          const cosmo::assembly::AssumedShear shear(p, edges);
+          const auto &                        tying = shear.tying_points();
+          const std::string what = "p = " + std::to_string(p) + (edges ? ", edge" : ", interior") + " tying: ";
+          // (a) random fields of the space.
+          std::vector<double> a(2 * p * (p + 1));
+          for (auto &x : a)
+            x = u(gen);
+          auto field = [&](const unsigned int c, const Point<2> &x) {
+            double       e = 0;
+            unsigned int m = 0;
+            for (unsigned int i = 0; i < p; ++i) // degree < p along xi_c
+              for (unsigned int j = 0; j <= p; ++j, ++m)
+                e += a[c * p * (p + 1) + m] * std::pow(x[c], i) * std::pow(x[1 - c], j);
+            return e;
+          };
+          const QGauss<2>          q(p + 2);
+          const FullMatrix<double> N = shear.interpolation(q);
+          double                   worst = 0;
+          for (unsigned int i = 0; i < q.size(); ++i)
+            for (const unsigned int c : {0u, 1u})
+              {
+                double e = 0;
+                for (unsigned int k = 0; k < tying.size(); ++k)
+                  if (shear.component(k) == c)
+                    e += N(i, k) * field(c, tying.point(k));
+                worst = std::max(worst, std::abs(e - field(c, q.point(i))));
+              }
+          check_close(what + "a field of the space reproduced, largest error", worst, 0, 0, 1e-12);
+          // (b) on the edge xi_1 = 0: the weights of e_0's tying points off it.
+          std::vector<Point<2>> edge_points;
+          for (unsigned int i = 0; i < 5; ++i)
+            edge_points.emplace_back(0.1 + 0.2 * i, 0.);
+          const FullMatrix<double> Ne = shear.interpolation(Quadrature<2>(edge_points));
+          double                   off_edge = 0;
+          for (unsigned int i = 0; i < edge_points.size(); ++i)
+            for (unsigned int k = 0; k < tying.size(); ++k)
+              if (shear.component(k) == 0 && tying.point(k)[1] != 0.)
+                off_edge = std::max(off_edge, std::abs(Ne(i, k)));
+          if (edges)
+            check_close(what + "tangential strain on an edge from that edge only", off_edge, 0, 0, 1e-13);
+          else
+            check(what + "the interior tying's edge strain depends on interior points", off_edge > 1e-3);
+          // (c) the canonical interpolation of xi_1^(p+1), on the line xi_0 = 0.5
+          if (edges)
+            {
+              const QGauss<1>       line(p + 3);
+              std::vector<Point<2>> points = {Point<2>(0.5, 0.), Point<2>(0.5, 1.)};
+              for (const auto &x : line.get_points())
+                points.emplace_back(0.5, x[0]);
+              const FullMatrix<double> Nl = shear.interpolation(Quadrature<2>(points));
+              auto                     reduced = [&](const unsigned int i) {
+                double e = 0;
+                for (unsigned int k = 0; k < tying.size(); ++k)
+                  if (shear.component(k) == 0)
+                    e += Nl(i, k) * std::pow(tying.point(k)[1], p + 1);
+                return e;
+              };
+              double worst_c = std::max(std::abs(reduced(0) - 0.), std::abs(reduced(1) - 1.));
+              for (unsigned int r = 0; r + 2 <= p; ++r)
+                {
+                  double moment = 0;
+                  for (unsigned int g = 0; g < line.size(); ++g)
+                    moment += line.weight(g) * std::pow(line.point(g)[0], r) *
+                              (reduced(2 + g) - std::pow(line.point(g)[0], p + 1));
+                  worst_c = std::max(worst_c, std::abs(moment));
+                }
+              check_close(what + "edge values and moments of xi_1^(p+1) kept, largest error", worst_c, 0, 0, 1e-13);
+            }
+        }
+  }
 } // namespace
 
 int
@@ -341,5 +430,6 @@ main()
   helix_against_integration();
   strip_chain_rule();
   plate_chain_rule();
+  assumed_shear_reduction();
   return cosmo_test::report();
 }

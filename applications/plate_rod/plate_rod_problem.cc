@@ -405,7 +405,8 @@ namespace cosmo
       const QGauss<2> full(degree + 1), reduced(degree);
       const QGauss<1> face(degree);
       // The assumed shear's tying points and their weights at the full quadrature.
-      const assembly::AssumedShear assumed_shear(degree);
+      const assembly::AssumedShear assumed_shear(
+        degree, shear_integration != ShearIntegration::interior_tying);
       const FullMatrix<double>     tying_weights = assumed_shear.interpolation(full);
       const unsigned int           n_tying       = assumed_shear.n_tying_points();
       const double    t            = load_parameter;
@@ -531,7 +532,8 @@ namespace cosmo
         const bool stabilized_shear = shear_integration == ShearIntegration::stabilized;
         for (const bool membrane_bending : {true, false})
           {
-            if (!membrane_bending && shear_integration == ShearIntegration::assumed_strain)
+            if (!membrane_bending && (shear_integration == ShearIntegration::assumed_strain ||
+                                      shear_integration == ShearIntegration::interior_tying))
               {
                 c.plate_energy += assumed_shear_of_cell(sc, c, jacobian);
                 continue;

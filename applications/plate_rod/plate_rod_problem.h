@@ -259,7 +259,8 @@ namespace cosmo
       /// 'Model / Shear integration' (assumed strain: assembly/assumed_shear.h).
       enum class ShearIntegration
       {
-        assumed_strain,
+        assumed_strain, ///< tied on the edges and by interior moments (the default)
+        interior_tying, ///< tied at interior Gauss points (MITC9 of Bucalem and Bathe)
         stabilized,
         reduced
       };

@@ -2,6 +2,8 @@
 
 #include <cosmo/assembly/assumed_shear.h>
 
+#include <cmath>
+
 namespace cosmo
 {
   namespace assembly
@@ -30,15 +32,48 @@ namespace cosmo
       }
     } // namespace
 
-    AssumedShear::AssumedShear(const unsigned int degree)
+    AssumedShear::AssumedShear(const unsigned int degree, const bool edge_tying)
       : n_per_component(degree * (degree + 1))
       , low(gauss_points(degree))
       , high(gauss_points(degree + 1))
+      , edges(edge_tying)
     {
+      if (edges)
+        {
+          // Along the tied direction: the values at the two edges and the
+          // moments against P_{p-2} by p Gauss points (exact for a degree-p e).
+          // (p = 1: the edge midpoints only, MITC4 of Bathe and Dvorkin.)
+          along = {0., 1.};
+          const QGauss<1> q(degree);
+          if (degree >= 2)
+            for (const auto &x : q.get_points())
+              along.push_back(x[0]);
+          const unsigned int n = degree + 1;
+          FullMatrix<double> A(n, n), B(n, along.size());
+          for (unsigned int m = 0; m < n; ++m)
+            {
+              A(0, m) = m == 0 ? 1. : 0.;
+              A(1, m) = 1.;
+            }
+          B(0, 0) = 1.;
+          B(1, 1) = 1.;
+          for (unsigned int r = 0; r + 2 < n; ++r)
+            {
+              for (unsigned int m = 0; m < n; ++m)
+                A(2 + r, m) = 1. / (m + r + 1); // int_0^1 s^m s^r ds
+              for (unsigned int g = 0; g < q.size(); ++g)
+                B(2 + r, 2 + g) = q.weight(g) * std::pow(q.point(g)[0], r);
+            }
+          A.gauss_jordan();
+          coefficients.reinit(n, along.size());
+          A.mmult(coefficients, B);
+          n_per_component = degree * along.size();
+        }
       std::vector<Point<2>> p;
-      // e_0: the low points along xi_0, the high points along xi_1; e_1 the transpose.
+      // e_0: the low points along xi_0, the high (or edge) points along xi_1; e_1 the transpose.
+      const std::vector<double> &tied = edges ? along : high;
       for (unsigned int c = 0; c < 2; ++c)
-        for (const double b : high)
+        for (const double b : tied)
           for (const double a : low)
             p.push_back(c == 0 ? Point<2>(a, b) : Point<2>(b, a));
       points = Quadrature<2>(p, std::vector<double>(p.size(), 1.));
@@ -52,10 +87,23 @@ namespace cosmo
         {
           const Point<2> &x = q.point(i);
           unsigned int    k = 0;
-          for (unsigned int c = 0; c < 2; ++c)
-            for (unsigned int jb = 0; jb < high.size(); ++jb)
-              for (unsigned int ja = 0; ja < low.size(); ++ja, ++k)
-                N(i, k) = lagrange(low, ja, x[c]) * lagrange(high, jb, x[1 - c]);
+          if (!edges)
+            for (unsigned int c = 0; c < 2; ++c)
+              for (unsigned int jb = 0; jb < high.size(); ++jb)
+                for (unsigned int ja = 0; ja < low.size(); ++ja, ++k)
+                  N(i, k) = lagrange(low, ja, x[c]) * lagrange(high, jb, x[1 - c]);
+          else
+            {
+              for (unsigned int c = 0; c < 2; ++c)
+                for (unsigned int jb = 0; jb < along.size(); ++jb)
+                  for (unsigned int ja = 0; ja < low.size(); ++ja, ++k)
+                    {
+                      double f = 0;
+                      for (unsigned int m = 0; m < coefficients.m(); ++m)
+                        f += coefficients(m, jb) * std::pow(x[1 - c], m);
+                      N(i, k) = lagrange(low, ja, x[c]) * f;
+                    }
+            }
         }
       return N;
     }

@@ -8,23 +8,34 @@
 #include <vector>
 
 /**
- * Assumed transverse shear strains of the MITC family (Bathe and Dvorkin
- * 1985; Bucalem and Bathe 1993, MITC9 for p = 2) for FE_Q(p) plates: the
- * covariant shear strains e_c = (dX/dxi_c) . gamma (gamma the model's
+ * Assumed transverse shear strains of the MITC family for FE_Q(p) plates:
+ * the covariant shear strains e_c = (dX/dxi_c) . gamma (gamma the model's
  * shear strain in the reference coordinates, c = 0, 1 the cell's unit
- * coordinates) are sampled at tying points and interpolated,
+ * coordinates) are reduced to the rotated Raviart-Thomas-type space
  *
- *   e_0: p Gauss points in xi_0 times p + 1 Gauss points in xi_1,
- *        interpolated in Q_{p-1, p} (Lagrange through them),
- *   e_1: the same with the directions exchanged,
+ *   e_0 in Q_{p-1, p},  e_1 in Q_{p, p-1},
  *
  * and the shear energy is integrated with the full p + 1 Gauss points from
- * gamma = J^-T e. For p = 2 these are the tying points of MITC9. On affine
- * cells the interpolation is the projection onto the rotated
- * Raviart-Thomas-type space Q_{p-1,p} x Q_{p,p-1} that makes the element
- * free of shear locking without spurious modes and with the optimal order
- * (Brezzi, Fortin, Stenberg 1991; Bathe, Brezzi, Cho 1989):
- * doc/theory-plate-rod.md section 7.
+ * gamma = J^-T e. Along its low direction (xi_0 for e_0) a component is
+ * interpolated through its values at the p Gauss points (for a degree-p
+ * polynomial, its L2 projection onto P_{p-1}). Along the other direction
+ * it is determined by one of two tyings:
+ *
+ * - edge tying (the default): the values on the two edges where e_c is
+ *   the tangential strain, and the moments against P_{p-2} (p Gauss
+ *   points). This is the canonical interpolation of the rotated
+ *   Raviart-Thomas (Nedelec) space, with the tangential shear continuous
+ *   from cell to cell: the plate element of Bathe, Brezzi and Cho (1989),
+ *   MITC9 for p = 2, whose convergence is uniform in the thickness (Brezzi,
+ *   Fortin, Stenberg 1991). On the distorted coarse cells of a disc its
+ *   error does not grow as the plate thins (doc/theory-plate-rod.md
+ *   section 7);
+ * - interior tying: the values at the p + 1 Gauss points (the MITC9 shell
+ *   element of Bucalem and Bathe 1993): the same space and the same
+ *   element on parallelograms asymptotically, but the shear is not
+ *   tangentially continuous, and on the coarse distorted cells of a disc
+ *   its error grows about tenfold from h/R = 0.01 to 0.001. Kept for
+ *   comparison with earlier results.
  *
  * This class holds the tying points on the unit cell and the interpolation
  * weights at the points of a quadrature; the assembly (application
@@ -39,8 +50,8 @@ namespace cosmo
     class AssumedShear
     {
     public:
-      /// The tying points of FE_Q(degree) (degree >= 1).
-      explicit AssumedShear(unsigned int degree);
+      /// The tying points of FE_Q(degree) (degree >= 1), on the edges or interior.
+      explicit AssumedShear(unsigned int degree, bool edge_tying = true);
 
       /// All tying points on the unit cell, those of e_0 first (weights 1, unused).
       const Quadrature<2> &
@@ -69,6 +80,12 @@ namespace cosmo
     private:
       unsigned int          n_per_component;
       std::vector<double>   low, high; ///< the p and p + 1 Gauss points on [0, 1]
+      /// Edge tying: the points along the tied direction (0, 1, then the
+      /// interior Gauss points of the moments) and the map from the values
+      /// there to the coefficients of the degree-p polynomial (monomials).
+      bool                  edges;
+      std::vector<double>   along;
+      FullMatrix<double>    coefficients;
       Quadrature<2>         points;
     };
   } // namespace assembly
