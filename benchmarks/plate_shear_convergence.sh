@@ -19,7 +19,7 @@ exe=build/plate_rod
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 results=$dir/results.txt
-for shear in "assumed strain" "stabilized" "reduced"; do
+for shear in "assumed strain" "interior tying" "stabilized" "reduced"; do
   for r in $(seq 1 "$max"); do
     out=$dir/run
     rm -rf "$out"
