@@ -353,6 +353,14 @@ namespace
           const cosmo::assembly::AssumedShear shear(p, edges);
           const auto &                        tying = shear.tying_points();
           const std::string what = "p = " + std::to_string(p) + (edges ? ", edge" : ", interior") + " tying: ";
+          // The tied strains and their distinct locations (edge tying: e_0
+          // and e_1 share the p x p interior points).
+          check(what + std::to_string(shear.n_tying_points()) + " tied strains at " +
+                  std::to_string(tying.size()) + " locations",
+                edges ? shear.n_tying_points() == (p == 1 ? 4 : 2 * p * (p + 2)) &&
+                          tying.size() == (p == 1 ? 4 : 4 * p + p * p) :
+                        shear.n_tying_points() == 2 * p * (p + 1) &&
+                          tying.size() == 2 * p * (p + 1));
           // (a) random fields of the space.
           std::vector<double> a(2 * p * (p + 1));
           for (auto &x : a)
@@ -372,9 +380,9 @@ namespace
             for (const unsigned int c : {0u, 1u})
               {
                 double e = 0;
-                for (unsigned int k = 0; k < tying.size(); ++k)
+                for (unsigned int k = 0; k < shear.n_tying_points(); ++k)
                   if (shear.component(k) == c)
-                    e += N(i, k) * field(c, tying.point(k));
+                    e += N(i, k) * field(c, tying.point(shear.location_of(k)));
                 worst = std::max(worst, std::abs(e - field(c, q.point(i))));
               }
           check_close(what + "a field of the space reproduced, largest error", worst, 0, 0, 1e-12);
@@ -385,8 +393,8 @@ namespace
           const FullMatrix<double> Ne = shear.interpolation(Quadrature<2>(edge_points));
           double                   off_edge = 0;
           for (unsigned int i = 0; i < edge_points.size(); ++i)
-            for (unsigned int k = 0; k < tying.size(); ++k)
-              if (shear.component(k) == 0 && tying.point(k)[1] != 0.)
+            for (unsigned int k = 0; k < shear.n_tying_points(); ++k)
+              if (shear.component(k) == 0 && tying.point(shear.location_of(k))[1] != 0.)
                 off_edge = std::max(off_edge, std::abs(Ne(i, k)));
           if (edges)
             check_close(what + "tangential strain on an edge from that edge only", off_edge, 0, 0, 1e-13);
@@ -402,9 +410,9 @@ namespace
               const FullMatrix<double> Nl = shear.interpolation(Quadrature<2>(points));
               auto                     reduced = [&](const unsigned int i) {
                 double e = 0;
-                for (unsigned int k = 0; k < tying.size(); ++k)
+                for (unsigned int k = 0; k < shear.n_tying_points(); ++k)
                   if (shear.component(k) == 0)
-                    e += Nl(i, k) * std::pow(tying.point(k)[1], p + 1);
+                    e += Nl(i, k) * std::pow(tying.point(shear.location_of(k))[1], p + 1);
                 return e;
               };
               double worst_c = std::max(std::abs(reduced(0) - 0.), std::abs(reduced(1) - 1.));

@@ -95,7 +95,8 @@ namespace cosmo
         std::vector<Drive>  drives;
         /// Assumed shear: per tying point its drives, the covariant strain and its derivatives
         /// in the local variables; V(i, k) = d e_k / d U_i; the energy's derivatives in the e_k.
-        std::vector<std::vector<Drive>>                                    tying_drives;
+        std::vector<std::vector<Drive>>                                    tying_drives; ///< per location
+        std::vector<std::array<double, kinematics::plate_local_variables>> tying_z; ///< per location
         std::vector<double>                                                tying_strain;
         std::vector<std::array<double, kinematics::plate_local_variables>> tying_gradient;
         std::vector<std::array<double, kinematics::plate_local_variables *
@@ -409,6 +410,7 @@ namespace cosmo
         degree, shear_integration != ShearIntegration::interior_tying);
       const FullMatrix<double>     tying_weights = assumed_shear.interpolation(full);
       const unsigned int           n_tying       = assumed_shear.n_tying_points();
+      const unsigned int           n_locations   = assumed_shear.tying_points().size();
       const double    t            = load_parameter;
       const double    g_rod        = rod_growth_at(t);
       const auto      rod          = rod_law();
@@ -425,7 +427,8 @@ namespace cosmo
       // V M V^T + sum_k mu_k d2e_k/dU2, with mu_k = dE/de_k, M_kl = d2E/de_k de_l, V = de/dU.
       auto assumed_shear_of_cell = [&](Scratch &sc, Copy &c, const bool jacobian) {
         sc.fev_tying.reinit(sc.fev_full.get_cell());
-        sc.tying_drives.resize(n_tying);
+        sc.tying_drives.resize(n_locations);
+        sc.tying_z.resize(n_locations);
         sc.tying_strain.resize(n_tying);
         sc.tying_gradient.resize(n_tying);
         sc.tying_hessian.resize(n_tying);
@@ -436,18 +439,24 @@ namespace cosmo
             sc.M.reinit(n_tying, n_tying);
             sc.VM.reinit(dpc, n_tying);
           }
-        std::array<double, n_plate> z;
-        for (unsigned int k = 0; k < n_tying; ++k)
+        // The fields at each location (e_0 and e_1 share some), then each tied strain.
+        for (unsigned int l = 0; l < n_locations; ++l)
           {
-            auto &drives = sc.tying_drives[k];
+            auto &drives = sc.tying_drives[l];
             drives.resize(dpc);
             for (unsigned int i = 0; i < dpc; ++i)
-              drives[i] = plate_drive(comp[i], sc.fev_tying.shape_value(i, k),
-                                      sc.fev_tying.shape_grad(i, k));
-            z.fill(0.);
-            assembly::gather_local_variables<n_plate>(drives, sc.U_local, z);
-            const Tensor<2, 2> J    = sc.fev_tying.jacobian(k);
-            const unsigned int comp_k = assumed_shear.component(k);
+              drives[i] = plate_drive(comp[i], sc.fev_tying.shape_value(i, l),
+                                      sc.fev_tying.shape_grad(i, l));
+            sc.tying_z[l].fill(0.);
+            assembly::gather_local_variables<n_plate>(drives, sc.U_local, sc.tying_z[l]);
+          }
+        for (unsigned int k = 0; k < n_tying; ++k)
+          {
+            const unsigned int location = assumed_shear.location_of(k);
+            const auto &       drives   = sc.tying_drives[location];
+            const auto &       z        = sc.tying_z[location];
+            const Tensor<2, 2> J        = sc.fev_tying.jacobian(location);
+            const unsigned int comp_k   = assumed_shear.component(k);
             // The model's own chain rule if it has one; else nested AD: the
             // shear depends on du/dX and theta, local variables 3 to 10.
             if (nested_ad_only ||
@@ -503,10 +512,23 @@ namespace cosmo
                                   ddW[2 * assumed_shear.component(k) + assumed_shear.component(l)];
               }
           }
-        // sum_k mu_k (de_k/dU, d2e_k/dU2) through the tying points' drives, then V M V^T.
-        for (unsigned int k = 0; k < n_tying; ++k)
-          assembly::add_point<n_plate>(sc.tying_drives[k], sc.tying_gradient[k],
-                                       sc.tying_hessian[k], sc.mu[k], jacobian, c.r, c.K);
+        // sum_k mu_k (de_k/dU, d2e_k/dU2) through the drives, one pass per location (the
+        // strains tied there summed), then V M V^T.
+        for (unsigned int l = 0; l < n_locations; ++l)
+          {
+            std::array<double, n_plate>           g{};
+            std::array<double, n_plate * n_plate> H{};
+            for (unsigned int k = 0; k < n_tying; ++k)
+              if (assumed_shear.location_of(k) == l)
+                {
+                  for (unsigned int m = 0; m < n_plate; ++m)
+                    g[m] += sc.mu[k] * sc.tying_gradient[k][m];
+                  if (jacobian)
+                    for (unsigned int m = 0; m < n_plate * n_plate; ++m)
+                      H[m] += sc.mu[k] * sc.tying_hessian[k][m];
+                }
+            assembly::add_point<n_plate>(sc.tying_drives[l], g, H, 1., jacobian, c.r, c.K);
+          }
         if (jacobian)
           {
             sc.V.mmult(sc.VM, sc.M);

@@ -69,20 +69,30 @@ namespace cosmo
           A.mmult(coefficients, B);
           n_per_component = degree * along.size();
         }
-      std::vector<Point<2>> p;
       // e_0: the low points along xi_0, the high (or edge) points along xi_1; e_1 the transpose.
-      const std::vector<double> &tied = edges ? along : high;
+      const std::vector<double> &second = edges ? along : high;
       for (unsigned int c = 0; c < 2; ++c)
-        for (const double b : tied)
+        for (const double b : second)
           for (const double a : low)
-            p.push_back(c == 0 ? Point<2>(a, b) : Point<2>(b, a));
-      points = Quadrature<2>(p, std::vector<double>(p.size(), 1.));
+            tied.push_back(c == 0 ? Point<2>(a, b) : Point<2>(b, a));
+      // The distinct locations (the same coordinates bitwise: both come from one list).
+      std::vector<Point<2>> distinct;
+      for (const auto &x : tied)
+        {
+          unsigned int j = 0;
+          while (j < distinct.size() && !(distinct[j][0] == x[0] && distinct[j][1] == x[1]))
+            ++j;
+          if (j == distinct.size())
+            distinct.push_back(x);
+          location.push_back(j);
+        }
+      points = Quadrature<2>(distinct, std::vector<double>(distinct.size(), 1.));
     }
 
     FullMatrix<double>
     AssumedShear::interpolation(const Quadrature<2> &q) const
     {
-      FullMatrix<double> N(q.size(), points.size());
+      FullMatrix<double> N(q.size(), tied.size());
       for (unsigned int i = 0; i < q.size(); ++i)
         {
           const Point<2> &x = q.point(i);

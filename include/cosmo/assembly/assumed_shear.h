@@ -53,16 +53,28 @@ namespace cosmo
       /// The tying points of FE_Q(degree) (degree >= 1), on the edges or interior.
       explicit AssumedShear(unsigned int degree, bool edge_tying = true);
 
-      /// All tying points on the unit cell, those of e_0 first (weights 1, unused).
+      /**
+       * The distinct locations of the tying points on the unit cell (weights
+       * 1, unused): with edge tying, e_0 and e_1 share their interior points,
+       * so a cell evaluates its fields at 4 p + p^2 locations for 2 p (p + 2)
+       * tied strains.
+       */
       const Quadrature<2> &
       tying_points() const
       {
         return points;
       }
+      /// The number of tied strains (those of e_0 first).
       unsigned int
       n_tying_points() const
       {
-        return points.size();
+        return location.size();
+      }
+      /// The location (index into tying_points()) of tied strain k.
+      unsigned int
+      location_of(const unsigned int k) const
+      {
+        return location[k];
       }
       /// The covariant component tied at tying point k (0 or 1).
       unsigned int
@@ -86,6 +98,8 @@ namespace cosmo
       bool                  edges;
       std::vector<double>   along;
       FullMatrix<double>    coefficients;
+      std::vector<Point<2>> tied; ///< the point of each tied strain
+      std::vector<unsigned int> location;
       Quadrature<2>         points;
     };
   } // namespace assembly
