@@ -356,7 +356,7 @@ namespace cosmo
     PlateRodProblem::check_plate_fields() const
     {
       // Where the energy is evaluated: the Gauss points of every cell (the assumed shear's tying
-      // points lie between them).
+      // points lie between them or on the cell's edges, within the cell).
       const QGauss<2>       quadrature(degree + 1);
       FEValues<2>           fev(*mapping, *fe, quadrature, update_quadrature_points);
       std::vector<Point<2>> points;

@@ -26,16 +26,18 @@
  *   points). This is the canonical interpolation of the rotated
  *   Raviart-Thomas (Nedelec) space, with the tangential shear continuous
  *   from cell to cell: the plate element of Bathe, Brezzi and Cho (1989),
- *   MITC9 for p = 2, whose convergence is uniform in the thickness (Brezzi,
- *   Fortin, Stenberg 1991). On the distorted coarse cells of a disc its
- *   error does not grow as the plate thins (doc/theory-plate-rod.md
- *   section 7);
+ *   MITC9 for p = 2, whose convergence is uniform in the thickness on
+ *   affine meshes (Brezzi, Fortin, Stenberg 1991). On the distorted
+ *   (non-affine) coarse cells of a disc its error, measured, does not grow
+ *   as the plate thins (doc/theory-plate-rod.md sections 7 and 9);
  * - interior tying: the values at the p + 1 Gauss points (the MITC9 shell
- *   element of Bucalem and Bathe 1993): the same space and the same
- *   element on parallelograms asymptotically, but the shear is not
- *   tangentially continuous, and on the coarse distorted cells of a disc
- *   its error grows about tenfold from h/R = 0.01 to 0.001. Kept for
- *   comparison with earlier results.
+ *   element of Bucalem and Bathe 1993): the same space, and on
+ *   parallelograms the same strains for the linear plate (the discrete
+ *   fields' covariant strain is then of degree p along the tied direction,
+ *   which both tyings reproduce), but the shear is not tangentially
+ *   continuous, and on the coarse distorted cells of a disc its error grew
+ *   8 to 11 times from h/R = 0.01 to 0.001. Kept for comparison with
+ *   earlier results.
  *
  * This class holds the tying points on the unit cell and the interpolation
  * weights at the points of a quadrature; the assembly (application
@@ -57,7 +59,7 @@ namespace cosmo
        * The distinct locations of the tying points on the unit cell (weights
        * 1, unused): with edge tying, e_0 and e_1 share their interior points,
        * so a cell evaluates its fields at 4 p + p^2 locations for 2 p (p + 2)
-       * tied strains.
+       * tied strains (p >= 2; p = 1: 4 of each).
        */
       const Quadrature<2> &
       tying_points() const
