@@ -669,6 +669,14 @@ namespace cosmo
       return std::isfinite(plate_energy + rod_energy) ? 0 : 1;
     }
 
+    double
+    PlateRodProblem::energy(const Vector<double> &U)
+    {
+      Vector<double> R;
+      AssertThrow(residual(U, R) == 0, ExcMessage("the energy cannot be evaluated at this state"));
+      return assembled_energy[0] + assembled_energy[1];
+    }
+
     int
     PlateRodProblem::residual(const Vector<double> &U, Vector<double> &R)
     {

@@ -149,6 +149,10 @@ namespace cosmo
       /// Restore it (and rewrite steps.csv and the PVD files as they were then).
       void
       load_progress(io::CheckpointReader &r);
+      /// The total energy, plate and rim, at U and the current load parameter (one
+      /// residual assembly; the residual is its gradient, test plate_rod.tangent_fd).
+      double
+      energy(const Vector<double> &U);
       /// Diagnostics of a state (energies, deflections, rim Fourier amplitudes).
       PlateRodState
       analyse(const Vector<double> &U, unsigned int n_modes = PlateRodProblem::n_modes) const;
