@@ -920,13 +920,14 @@ namespace
   // section 7) at h/R = 0.1, 0.04, 0.01 and 0.001: the dome threshold (quarter
   // disc, rho = 10.9, rim EA = GA = 0.1, Cosserat), the dome height on the
   // bifurcated branch at 1.5 times the threshold and, at h/R = 0.01, the
-  // saddle n = 2 threshold, over
-  // refinements 1, 2, 3 (366, 1302, 4902 DoFs). Each refinement must divide the successive difference by 4 or
-  // more (second order; measured 13 to 16 at every thickness with the
-  // edge-tied shear, the default; the interior tying gave 16 to 24 at 0.04
-  // and 0.01 but 9 to 11 at 0.001, pre-asymptotic on the coarsest cells),
-  // beyond the thresholds' resolutions and the interpolation error of the
-  // branch quantity.
+  // saddle n = 2 threshold, over refinements 0, 1, 2 (96, 366, 1302 DoFs)
+  // for the thresholds and 1, 2, 3 (366, 1302, 4902) for the branch. Each
+  // refinement must divide the successive difference by 4 or more (second
+  // order; measured with the edge-tied shear, the default: 14 to 14.7 for
+  // the thresholds and 13 to 14 for the branch at every thickness; the
+  // interior tying gave 16 to 24 at 0.04 and 0.01 but 9 to 11 at 0.001 over
+  // 1, 2, 3, pre-asymptotic on the coarsest cells), beyond the thresholds'
+  // resolutions and the interpolation error of the branch quantity.
   void
   shear_convergence()
   {
@@ -940,14 +941,14 @@ namespace
       check(what + ": second order or better (ratio of successive differences >= 4)",
             d12 < d01 / 4 - 2 * r);
     };
-    std::map<double, double> coarse_error; // h/R -> |t(366 DoFs)/t(4902 DoFs) - 1|
+    std::map<double, double> coarse_error; // h/R -> |t(366 DoFs)/t(4902 DoFs) - 1| (k = 1, 3)
     for (const double h : {0.1, 0.04, 0.01, 0.001})
       for (const std::string &setting :
            h == 0.01 ? std::vector<std::string>{"dome", "saddle", "branch"} :
                        std::vector<std::string>{"dome", "branch"})
         {
           std::vector<double> values, resolutions;
-          for (const unsigned int k : {1u, 2u, 3u})
+          for (const unsigned int k : {0u, 1u, 2u, 3u})
             {
               Setup s;
               s.model        = "cosserat";
@@ -1024,9 +1025,17 @@ namespace
                << (setting == "dome"   ? "dome threshold" :
                    setting == "saddle" ? "saddle threshold" :
                                          "dome height on the bifurcated branch at t = 0.75");
-          order_check(what.str(), values, resolutions);
+          // Thresholds: refinements 0, 1, 2, whose differences stand far above
+          // the resolutions (at h/R = 0.001 the difference of 2 -> 3, 3.8e-5,
+          // is near its resolution bound, 5.5e-5); the branch quantity:
+          // 1, 2, 3 (its 0 -> 1 difference is pre-asymptotic, ratio 6 to 7.6).
+          const unsigned int first = setting == "branch" ? 1 : 0;
+          order_check(what.str(),
+                      std::vector<double>(values.begin() + first, values.begin() + first + 3),
+                      std::vector<double>(resolutions.begin() + first,
+                                          resolutions.begin() + first + 3));
           if (setting == "dome")
-            coarse_error[h] = std::abs(values[0] / values[2] - 1);
+            coarse_error[h] = std::abs(values[1] / values[3] - 1);
         }
     // Uniform in the thickness: the dome threshold's error at 366 DoFs
     // (against 4902, whose own error is below 1e-4 of it) must not grow by
