@@ -514,10 +514,13 @@ namespace cosmo
           }
         // sum_k mu_k (de_k/dU, d2e_k/dU2) through the drives, one pass per location (the
         // strains tied there summed), then V M V^T.
+        std::array<double, n_plate>           g;
+        std::array<double, n_plate * n_plate> H; // (read by add_point only with the Jacobian)
         for (unsigned int l = 0; l < n_locations; ++l)
           {
-            std::array<double, n_plate>           g{};
-            std::array<double, n_plate * n_plate> H{};
+            g.fill(0.);
+            if (jacobian)
+              H.fill(0.);
             for (unsigned int k = 0; k < n_tying; ++k)
               if (assumed_shear.location_of(k) == l)
                 {

@@ -7,6 +7,7 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/vtu_patches.h>
+#include <cosmo/solvers/newton.h>
 
 #include "plate_rod_problem.h"
 
@@ -175,8 +176,7 @@ namespace cosmo
       s.n_negative    = report.n_negative;
       s.branch        = report.branch;
       auto same_state = [&](const Vector<double> &V, const double load) {
-        return V.size() == U.size() && load == load_parameter &&
-               std::equal(U.begin(), U.end(), V.begin());
+        return load == load_parameter && solvers::same_point(U, V);
       };
       // The driver has just factorized at this state (or at its predictor,
       // one small Newton step away), unless it located an event since.

@@ -1,6 +1,7 @@
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/kinematics/helix.h>
+#include <cosmo/solvers/newton.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -487,8 +488,7 @@ namespace cosmo
     bool
     ReducedRodProblem::factorized_here(const Vector<double> &U) const
     {
-      return factorized_at.size() == U.size() && factorized_load == load_parameter &&
-             std::equal(U.begin(), U.end(), factorized_at.begin());
+      return factorized_load == load_parameter && solvers::same_point(U, factorized_at);
     }
 
     int

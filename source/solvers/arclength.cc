@@ -314,8 +314,7 @@ namespace cosmo
         {
           // (the predictor's, which newton_solve has just evaluated, is asked
           // for again by the corrector's own Newton step)
-          if (last_status == 0 && X.size() == last_X.size() &&
-              std::equal(X.begin(), X.end(), last_X.begin()))
+          if (last_status == 0 && same_point(X, last_X))
             {
               R = last_R;
               return 0;
@@ -765,9 +764,8 @@ namespace cosmo
       const unsigned int n = problem.n_unknowns();
       problem.set_load_parameter(s.lambda);
       Vector<double> Rl(n), z(n);
-      s.factorized_at_predictor = at_predictor.valid && at_predictor.lambda == s.lambda &&
-                                  at_predictor.U.size() == n &&
-                                  std::equal(s.U.begin(), s.U.end(), at_predictor.U.begin());
+      s.factorized_at_predictor =
+        at_predictor.valid && at_predictor.lambda == s.lambda && same_point(s.U, at_predictor.U);
       at_predictor.valid = false;
       if (s.factorized_at_predictor)
         {

@@ -74,6 +74,12 @@ namespace cosmo
       return true;
     }
 
+    bool
+    same_point(const Vector<double> &a, const Vector<double> &b)
+    {
+      return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+    }
+
     double
     scaled_residual_norm(const NonlinearSystem &system, const Vector<double> &R)
     {
@@ -119,8 +125,7 @@ namespace cosmo
 
       // Whether u is (bitwise) the point of the residual kept in last_r.
       auto is_last = [&](const Vector<double> &u) {
-        return last_status >= 0 && u.size() == last_u.size() &&
-               std::equal(u.begin(), u.end(), last_u.begin());
+        return last_status >= 0 && same_point(u, last_u);
       };
 
       // take_guess: the guess first, taken if it passes the stopping test;

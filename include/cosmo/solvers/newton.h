@@ -97,6 +97,14 @@ namespace cosmo
     bool
     dq_point_of(const Vector<double> &v, const Vector<double> &u, const Vector<double> &p, double &sigma);
 
+    /**
+     * Whether a and b are the same point: the same size and every entry
+     * equal. How a cached residual or factorization is matched to the state
+     * asked for (a state that differs in the last bit is another state).
+     */
+    bool
+    same_point(const Vector<double> &a, const Vector<double> &b);
+
     /// max_i |w_i R_i| with the system's residual_weights(): its stopping test.
     double
     scaled_residual_norm(const NonlinearSystem &system, const Vector<double> &R);
