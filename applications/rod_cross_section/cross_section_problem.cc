@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/numerics/vector_tools_interpolate.h>
 
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/geometry/mirror_dofs.h>
@@ -677,6 +678,80 @@ namespace cosmo
       solvers::newton_solve(*this, solution, newton_settings);
       last_state = current_state();
       return last_state;
+    }
+
+    bool
+    CrossSectionProblem::first_step_guess(const double t, Vector<double> &U)
+    {
+      if (coarse_start_levels == 0 || geometry.refinements == 0 || parameters_text.empty())
+        return false;
+      io::PhaseTimer::Scope scope(timer, "coarse-mesh start");
+      // A copy of this problem on the section refined once less, from the run's own parameters.
+      ParameterHandler prm;
+      declare_parameters(prm);
+      prm.parse_input_from_string(parameters_text);
+      CrossSectionProblem coarse;
+      coarse.parse_parameters(prm);
+      coarse.quiet                = true;
+      coarse.parameters_text      = parameters_text;
+      coarse.geometry.refinements = geometry.refinements - 1;
+      coarse.coarse_start_levels  = coarse_start_levels - 1;
+      try
+        {
+          coarse.setup_system();
+        }
+      catch (const io::InputError &e)
+        {
+          // E.g. a shape that needs a refinement more than the coarser mesh has.
+          say("  coarse-mesh start: no coarser mesh of this section (" + std::string(e.what()) +
+              "); the first step starts from the reference state");
+          return false;
+        }
+      // The interpolation follows the cells' hierarchy: the coarse cells must be the same,
+      // up to each mesh's centroid shift (a shape meshed anew per refinement is not nested).
+      const double tolerance = 1e-6 * section_properties.diameter;
+      bool         nested    = coarse.triangulation.n_cells(0) == triangulation.n_cells(0);
+      for (auto a = coarse.triangulation.begin(0), b = triangulation.begin(0);
+           nested && a != coarse.triangulation.end(0);
+           ++a, ++b)
+        for (const unsigned int v : a->vertex_indices())
+          nested = nested && ((a->vertex(v) - coarse.geometry.applied_shift) -
+                              (b->vertex(v) - geometry.applied_shift))
+                                 .norm() <= tolerance;
+      if (!nested)
+        {
+          say("  coarse-mesh start: the section refined once less has other coarse cells (a "
+              "shape meshed anew per refinement); the first step starts from the reference state");
+          return false;
+        }
+      Vector<double> Uc = coarse.solution;
+      coarse.first_step_guess(t, Uc);
+      coarse.set_load_parameter(t);
+      solvers::NewtonResult r;
+      try
+        {
+          r = solvers::newton_solve(coarse, Uc, newton_settings);
+        }
+      catch (const solvers::NewtonFailure &e)
+        {
+          say("  coarse-mesh start: Newton failed on " + std::to_string(coarse.n_unknowns()) +
+              " unknowns (" + e.what() + "); starting from the reference state");
+          return false;
+        }
+      Vector<double> field_coarse(coarse.n_u()), field(n_u());
+      for (unsigned int i = 0; i < coarse.n_u(); ++i)
+        field_coarse[i] = Uc[i];
+      VectorTools::interpolate_to_different_mesh(coarse.dof_handler, field_coarse, dof_handler, field);
+      for (unsigned int i = 0; i < n_u(); ++i)
+        U[i] = field[i];
+      for (unsigned int k = 0; k < n_gauge + n_strains; ++k)
+        U[n_u() + k] = Uc[coarse.n_u() + k];
+      coarse_start_report = coarse.coarse_start_report + (coarse.coarse_start_report.empty() ? "" : ", ") +
+                            std::to_string(r.iterations) + " on " +
+                            std::to_string(coarse.n_unknowns());
+      say("  first step started on coarser meshes (Newton iterations on unknowns: " +
+          coarse_start_report + ")");
+      return true;
     }
 
     CrossSectionState

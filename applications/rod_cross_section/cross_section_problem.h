@@ -104,6 +104,10 @@ namespace cosmo
       // ContinuationProblem
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      /// Nested iteration: the first step solved on the section refined 'Coarse-mesh start'
+      /// times less (recursively), interpolated to this mesh.
+      bool
+      first_step_guess(double t, Vector<double> &U) override;
       /// The path so far, steps.csv's rows and the PVD lists, for a checkpoint.
       void
       save_progress(io::CheckpointWriter &w) const override;
@@ -133,6 +137,10 @@ namespace cosmo
       solvers::ContinuationSettings  continuation_settings;
       solvers::ArclengthSettings     arclength_settings;
       std::string                    linear_solver_name;
+      unsigned int                   coarse_start_levels = 0;
+      std::string                    parameters_text; // the run's parameters, for a coarser copy
+      bool                           quiet = false;   // a coarser copy says nothing
+      std::string                    coarse_start_report; // Newton iterations per coarser mesh
       std::string                    output_directory;
       bool                           write_output = false;
       std::string                    vtu_frequency;
@@ -230,7 +238,8 @@ namespace cosmo
       void
       say(const std::string &line) const
       {
-        record.say(line);
+        if (!quiet)
+          record.say(line);
       }
     };
 

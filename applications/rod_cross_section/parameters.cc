@@ -39,6 +39,14 @@ namespace cosmo
                         Patterns::Selection(solvers::SparseDirectSolver::kind_names()),
                         "Sparse direct solver of the Newton systems: MUMPS (LDL^T, "
                         "gives the stability indicator) or UMFPACK (LU).");
+      prm.declare_entry("Coarse-mesh start", "2", Patterns::Integer(0, 10),
+                        "Nested iteration for the first continuation step: it is solved "
+                        "first on the section refined this many times less (each level "
+                        "started from the one below it), and the solution, interpolated, "
+                        "starts Newton on the full mesh, which then needs only its last "
+                        "iterations. The converged state is the full mesh's, to Newton's "
+                        "tolerance. 0: start from the reference state. Used where the "
+                        "coarser mesh has the same coarse cells (every built-in shape).");
       prm.leave_subsection();
       solvers::ContinuationSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
@@ -80,6 +88,13 @@ namespace cosmo
       newton_settings.parse_parameters(prm);
       prm.enter_subsection("Nonlinear solver");
       linear_solver_name = prm.get("Linear solver");
+      coarse_start_levels = prm.get_integer("Coarse-mesh start");
+      {
+        // The whole set, from which first_step_guess() makes the coarser copies.
+        std::ostringstream text;
+        prm.print_parameters(text, ParameterHandler::ShortPRM);
+        parameters_text = text.str();
+      }
       prm.leave_subsection();
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);

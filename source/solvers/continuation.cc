@@ -149,6 +149,8 @@ namespace cosmo
           Vector<double> U_trial = U;
           if (dt_previous > 0)
             U_trial.add((t_new - t) / dt_previous, U, -(t_new - t) / dt_previous, U_previous);
+          else if (step == 0)
+            problem.first_step_guess(t_new, U_trial);
 
           problem.set_load_parameter(t_new);
           try

@@ -53,6 +53,19 @@ namespace cosmo
       /// Called after every converged step with the state at t.
       virtual void
       converged_step(const Vector<double> &U, const StepReport &report) = 0;
+      /**
+       * A start for the first step (from the starting state at t, before a
+       * secant predictor exists) better than the starting state itself, e.g.
+       * the step solved on a coarser mesh and interpolated (nested
+       * iteration: the full mesh then needs only Newton's last, quadratic
+       * iterations). Returns false, U untouched, where there is none. The
+       * converged state does not depend on it beyond Newton's tolerance.
+       */
+      virtual bool
+      first_step_guess(double /*t*/, Vector<double> & /*U*/)
+      {
+        return false;
+      }
     };
 
 
