@@ -6,6 +6,9 @@
 // (factorizations spent between detection and location). Run from the build
 // directory:
 //   ./benchmark_plate_rod_growth [max refinements = 5]
+//   ./benchmark_plate_rod_growth assembly [refinements = 4] [residuals = 50] [Jacobians = 6]
+// The second form times the assemblies alone (the quarter sector at the
+// bifurcated dome's state, t = 0.5, taken from a short path), to profile them.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -15,16 +18,74 @@
 
 #include <chrono>
 #include <iomanip>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
 using namespace dealii;
 using namespace cosmo;
 
+namespace
+{
+  /// The dome example's plate and rim (closed-form critical t = 0.226) on a sector of 90 degrees.
+  std::string
+  dome_parameters(const std::string &domain, const unsigned int refinements, const std::string &location)
+  {
+    std::ostringstream t;
+    t << "subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1.0004\nend\n"
+      << "subsection Rim rod\n set Stiffnesses = 0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6\nend\n"
+      << "subsection Mesh\n set Domain = " << domain << "\n set Sector angle = 90\n"
+      << " set Global refinements = " << refinements << "\nend\n"
+      << "subsection Growth path\n set Stop at first event = true\nend\n"
+      << "subsection Arclength continuation\n set Initial step = 0.05\n set Maximum step = 0.1\n"
+      << " set Parameter range = 0, 1\n set Event tolerance = 1e-6\n set Event location = "
+      << location << "\nend\n";
+    return t.str();
+  }
+
+  /// Seconds per residual and per Jacobian assembly (with its factorization apart) at a
+  /// state with every field nonzero: the flat state at t = 0.5 plus a smooth perturbation.
+  int
+  time_assemblies(const unsigned int refinements, const unsigned int calls, const unsigned int jacobians)
+  {
+    ParameterHandler prm;
+    plate_rod::PlateRodProblem::declare_parameters(prm);
+    prm.parse_input_from_string(dome_parameters("sector", refinements, "newton"));
+    plate_rod::PlateRodProblem p;
+    p.parse_parameters(prm);
+    p.set_quiet(true);
+    p.setup_system();
+    p.solve_flat_state(0.5);
+    Vector<double> U = p.current_solution(), R(p.n_unknowns());
+    for (unsigned int i = 0; i < U.size(); ++i)
+      U[i] += 1e-3 * std::sin(0.37 * i);
+    using clock = std::chrono::steady_clock;
+    auto start = clock::now();
+    for (unsigned int k = 0; k < calls; ++k)
+      p.residual(U, R);
+    const double residual =
+      std::chrono::duration<double>(clock::now() - start).count() / std::max(1u, calls);
+    for (unsigned int k = 0; k < jacobians; ++k)
+      p.setup_jacobian(U);
+    const auto &tm  = p.timings();
+    auto        per = [&](const std::string &phase) {
+      return tm.calls(phase) ? tm.seconds(phase) / tm.calls(phase) * 1e3 : 0.;
+    };
+    std::cout << p.n_dofs() << " DoFs: residual " << residual * 1e3 << " ms, Jacobian assembly "
+              << per("assembly (Jacobian)") << " ms, factorization " << per("factorization")
+              << " ms (|R| "
+              << R.l2_norm() << ")" << std::endl;
+    return 0;
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
   const auto mpi = cosmo::io::ranks::init_mpi(argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "assembly")
+    return time_assemblies(argc > 2 ? std::stoi(argv[2]) : 4, argc > 3 ? std::stoi(argv[3]) : 50,
+                           argc > 4 ? std::stoi(argv[4]) : 6);
   const unsigned int               max_refinements = argc > 1 ? std::stoi(argv[1]) : 5;
   std::cout << "domain     location   refs     DoFs  steps  t_critical        resolution  event "
                "factorizations  to critical [s]  per step [s]  Jacobian [s]  factorization [s]  "
@@ -33,19 +94,9 @@ main(int argc, char **argv)
     for (const std::string domain : {"sector", "full disc"})
       for (const std::string location : {"newton", "bisection"})
       {
-        // The dome example's plate and rim (closed-form critical t = 0.226).
         ParameterHandler prm;
         plate_rod::PlateRodProblem::declare_parameters(prm);
-        std::ostringstream t;
-        t << "subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1.0004\nend\n"
-          << "subsection Rim rod\n set Stiffnesses = 0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6\nend\n"
-          << "subsection Mesh\n set Domain = " << domain << "\n set Sector angle = 90\n"
-          << " set Global refinements = " << k << "\nend\n"
-          << "subsection Growth path\n set Stop at first event = true\nend\n"
-          << "subsection Arclength continuation\n set Initial step = 0.05\n set Maximum step = 0.1\n"
-          << " set Parameter range = 0, 1\n set Event tolerance = 1e-6\n set Event location = "
-          << location << "\nend\n";
-        prm.parse_input_from_string(t.str());
+        prm.parse_input_from_string(dome_parameters(domain, k, location));
         plate_rod::PlateRodProblem p;
         p.parse_parameters(prm);
         p.set_quiet(true);
