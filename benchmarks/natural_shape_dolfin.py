@@ -12,12 +12,16 @@ int (X1 u2 - X2 u1) = 0, int X1 u3 = int X2 u3 = 0 by multipliers, all six
 strains free (natural shape). Newton from the reference state with the
 exact tangent (UFL), MUMPS. Exact answer: kappa2 = -0.3.
 
-usage: natural_shape_dolfin.py N [g]
+usage: natural_shape_dolfin.py N [g] [stiffness]
   N: rings of dolfin's UnitDiscMesh; g: the growth factor as a Python
   expression in X[0], X[1] (default "1 + 0.3*X[0]", whose natural state
   u = 0 lies in every FE space; "1 + 0.3*X[0] + 0.3*X[1]**2" does not).
+  stiffness: also the 6x6 stiffness at the natural state, as cosmo reports
+  it (d resultants / d strains, the field and multipliers relaxed): the
+  Jacobian assembled and factorized there, six solves for the unit strain
+  loads, whose strain parts are the columns of K^-1.
 prints the DoFs, Newton iterations, kappa2 (and its error against -0.3 for
-the default growth) and the time per phase.
+the default growth), the time per phase and, with 'stiffness', K.
 """
 import sys
 import time
@@ -31,6 +35,7 @@ df.set_log_level(df.LogLevel.WARNING)
 
 n = int(sys.argv[1]) if len(sys.argv) > 1 else 40
 growth = sys.argv[2] if len(sys.argv) > 2 else "1 + 0.3*X[0]"
+with_stiffness = len(sys.argv) > 3 and sys.argv[3] == "stiffness"
 t0 = time.time()
 mesh = df.UnitDiscMesh.create(df.MPI.comm_world, n, 2, 2)  # quadratic (curved) cells
 V = df.VectorElement("CG", mesh.ufl_cell(), 2, dim=3)
@@ -74,7 +79,28 @@ t1 = time.time()
 iterations, converged = solver.solve()
 t_solve = time.time() - t1
 strains = w.sub(1, deepcopy=True).vector().get_local()
+t_stiffness = 0
+if with_stiffness:
+    import numpy as np
+    t2 = time.time()
+    A = df.assemble(jacobian)
+    lu = df.LUSolver(A, "mumps")
+    strain_dofs = W.sub(1).dofmap().dofs()
+    Kinv = np.zeros((6, 6))
+    for k in range(6):
+        b, x = df.Function(W).vector(), df.Function(W).vector()
+        values = np.zeros(b.local_size())
+        values[strain_dofs[k]] = 1.0
+        b.set_local(values)
+        b.apply("insert")
+        lu.solve(x, b)
+        Kinv[:, k] = x.get_local()[strain_dofs]
+    K = np.linalg.inv(Kinv)
+    t_stiffness = time.time() - t2
 print("dolfin: %d DoFs, Newton %d iterations (converged %s), kappa2 %.12g (error against -0.3 "
-      "%.2e), setup %.2f s, solve %.2f s, whole process %.2f s"
+      "%.2e), setup %.2f s, solve %.2f s, stiffness %.2f s, whole process %.2f s"
       % (W.dim(), iterations, converged, strains[4], abs(strains[4] + 0.3), t_setup, t_solve,
-         time.time() - t_start))
+         t_stiffness, time.time() - t_start))
+if with_stiffness:
+    print("dolfin stiffness (nu1, nu2, nu3, kappa1, kappa2, kappa3): "
+          + " ".join("%.10g" % K[i, j] for i in range(6) for j in range(6)))

@@ -6,8 +6,12 @@
 # P2, UFL's exact tangent, MUMPS). Whole processes, wall time, the median of
 # RUNS paired runs after one warm-up of each (DOLFIN's JIT cache); prints the
 # ratio and cosmo's split per phase (summary.json).
-#   bash benchmarks/natural_shape_vs_dolfin.sh [build dir] [refinements] [dolfin rings] [runs] [growth] [coarse levels]
-# Defaults: build, 5 (61 839 DoFs), 40 (about 61 600 DoFs), 3, "1 + 0.3*x", 2.
+#   bash benchmarks/natural_shape_vs_dolfin.sh [build dir] [refinements] [dolfin rings] [runs] [growth] [coarse levels] [peer]
+# Defaults: build, 5 (61 839 DoFs), 40 (about 61 600 DoFs), 3, "1 + 0.3*x", 2, shape.
+# peer: "shape", the natural shape alone (the script as the issue filed it),
+# or "stiffness", the natural shape and the 6x6 stiffness there, which cosmo
+# reports too (one more assembly and factorization in both); then the two
+# stiffnesses are compared.
 # growth: the axial growth factor in x, y (muparser; given to DOLFIN with x, y
 # -> X[0], X[1] and ^ -> **). The default's natural state, u = 0, lies in both
 # FE spaces, so cosmo's coarse-mesh start (Nonlinear solver / Coarse-mesh
@@ -17,7 +21,7 @@
 set -euo pipefail
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="$(realpath "${1:-$REPO/build}")" REF="${2:-5}" RINGS="${3:-40}" RUNS="${4:-3}"
-GROWTH="${5:-1 + 0.3*x}" LEVELS="${6:-2}"
+GROWTH="${5:-1 + 0.3*x}" LEVELS="${6:-2}" PEER="${7:-shape}"
 PYGROWTH="$(echo "$GROWTH" | sed -e 's/x/X[0]/g' -e 's/y/X[1]/g' -e 's/\^/**/g')"
 if ! dpkg-query -W -f='${Status}' python3-dolfin 2>/dev/null | grep -q "install ok installed"; then
   SUDO=""; [[ $(id -u) -ne 0 ]] && SUDO="sudo"
@@ -32,11 +36,11 @@ printf 'subsection Nonlinear solver\n  set Coarse-mesh start = %s\nend\n' "$LEVE
 now() { date +%s.%N; }
 cosmo_times=() dolfin_times=()
 "$BUILD/rod_cross_section" --quiet "$work/disc.prm"
-(cd "$work" && /usr/bin/python3 "$REPO/benchmarks/natural_shape_dolfin.py" "$RINGS" "$PYGROWTH" >/dev/null 2>&1)
+(cd "$work" && /usr/bin/python3 "$REPO/benchmarks/natural_shape_dolfin.py" "$RINGS" "$PYGROWTH" "$PEER" >/dev/null 2>&1)
 for ((k = 0; k < RUNS; ++k)); do
   a=$(now); "$BUILD/rod_cross_section" --quiet "$work/disc.prm"; b=$(now)
   cosmo_times+=("$(echo "$b - $a" | bc -l)")
-  a=$(now); (cd "$work" && /usr/bin/python3 "$REPO/benchmarks/natural_shape_dolfin.py" "$RINGS" "$PYGROWTH" > "$work/dolfin.txt" 2>/dev/null); b=$(now)
+  a=$(now); (cd "$work" && /usr/bin/python3 "$REPO/benchmarks/natural_shape_dolfin.py" "$RINGS" "$PYGROWTH" "$PEER" > "$work/dolfin.txt" 2>/dev/null); b=$(now)
   dolfin_times+=("$(echo "$b - $a" | bc -l)")
 done
 median() { printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
@@ -46,7 +50,15 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 t = s["timings"]
 mc, md = float(sys.argv[2]), float(sys.argv[3])
-print(open(sys.argv[4]).read().strip())
+dolfin = open(sys.argv[4]).read().strip().splitlines()
+print(dolfin[0])
+for line in dolfin[1:]:
+    if line.startswith("dolfin stiffness"):
+        Kd = [float(v) for v in line.split(":")[1].split()]
+        Kc = [v for row in s["stiffness"] for v in row]
+        scale = max(abs(v) for v in Kc)
+        print("  6x6 stiffness, cosmo (Q2) against dolfin (P2): max difference %.2e of the largest entry %.4g"
+              % (max(abs(a - b) for a, b in zip(Kc, Kd)) / scale, scale))
 print("cosmo:  %d DoFs (with 12 global), Newton %s, kappa2 %.12g (error against -0.3 %.2e)" %
       (s["mesh"]["field_dofs"] + 12, s.get("newton_iterations"), s["strains"]["kappa2"],
        abs(s["strains"]["kappa2"] + 0.3)))
