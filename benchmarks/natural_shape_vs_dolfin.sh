@@ -13,7 +13,8 @@
 # reports too (one more assembly and factorization in both); then the two
 # stiffnesses are compared.
 # growth: the axial growth factor in x, y (muparser; given to DOLFIN with x, y
-# -> X[0], X[1] and ^ -> **). The default's natural state, u = 0, lies in both
+# -> X[0], X[1] and ^ -> **, letter by letter: no function names such as exp
+# that contain an x or a y). The default's natural state, u = 0, lies in both
 # FE spaces, so cosmo's coarse-mesh start (Nonlinear solver / Coarse-mesh
 # start, 0 to switch it off) leaves nothing to do on the full mesh; with
 # "1 + 0.3*x + 0.3*y^2" the full mesh needs two Newton iterations.

@@ -7,8 +7,8 @@
 // directory:
 //   ./benchmark_plate_rod_growth [max refinements = 5]
 //   ./benchmark_plate_rod_growth assembly [refinements = 4] [residuals = 50] [Jacobians = 6]
-// The second form times the assemblies alone (the quarter sector at the
-// bifurcated dome's state, t = 0.5, taken from a short path), to profile them.
+// The second form times the assemblies alone (the quarter sector, at the flat
+// state at t = 0.5 plus a smooth perturbation of every unknown), to profile them.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 

@@ -3,11 +3,12 @@
 
 Every number of the named tables and of summary.json (events, states,
 stiffness, ...) must agree to 1e-12 relative (of the larger, or for a
-table column of the largest value of its quantity: the columns of one unit,
-e.g. the six strains' [1] and [1/L], or of one name before its first '_',
-e.g. the 6x6 stiffness' K_*: an entry that is zero by symmetry carries the
-round-off of its matrix, about 1e-16 of the largest entry, not of itself;
-the OpenBLAS threads of one process and of a rank change it); wall times, file names, messages and
+table column of the largest finite value of its quantity: the columns of
+one unit, e.g. the strains' [1] and [1/L], or of one name before its first
+'_'; a stiffness entry K_a_b of sqrt(max |K_a_a| max |K_b_b|), the bound
+its matrix puts on it: an entry that is zero by symmetry carries the
+round-off of its matrix, not of itself, and the OpenBLAS threads of one
+process and of a rank change it); wall times, file names, messages and
 mpi_ranks, mumps_phases_on_all_ranks and factorization_memory (MPI ranks, the MUMPS phases
 they shared, the memory MUMPS used) are not results. A resumed run goes on
 from bitwise the state it saved,
@@ -63,20 +64,32 @@ def main():
         def quantity(name):
             return name[name.index("["):] if "[" in name else name.split(" ")[0].split("_")[0]
 
-        scales = {}
+        scales, column_max = {}, {}
         for c, name in enumerate(ra[0]):
             for x in ra[1:]:
                 try:
                     v = abs(float(x[c]))
                 except ValueError:
                     continue
-                if not math.isnan(v):
+                if math.isfinite(v):
                     scales[quantity(name)] = max(scales.get(quantity(name), 0), v)
+                    column_max[name.split(" ")[0]] = max(column_max.get(name.split(" ")[0], 0), v)
+
+        def scale_of(name):
+            key = name.split(" ")[0]
+            parts = key.split("_")
+            if len(parts) == 3 and parts[0] == "K":
+                diagonal = ["K_%s_%s" % (p, p) for p in parts[1:]]
+                if all(d in column_max for d in diagonal):
+                    return math.sqrt(column_max[diagonal[0]] * column_max[diagonal[1]])
+                return column_max.get(key, 0)
+            return scales.get(quantity(name), 0)
+
         for c, name in enumerate(ra[0]):
             if name.split(" ")[0] in SKIP:
                 continue
             col = [(float(x[c]), float(y[c])) for x, y in zip(ra[1:], rb[1:])]
-            scale = scales.get(quantity(name), 0)
+            scale = scale_of(name)
             bad += ["%s column %s row %d: %r against %r" % (table, name, k + 1, x, y)
                     for k, (x, y) in enumerate(col) if not close(x, y, scale)][:2]
     try:

@@ -4,6 +4,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/numerics/vector_tools_interpolate.h>
@@ -707,21 +708,16 @@ namespace cosmo
               "); the first step starts from the reference state");
           return false;
         }
-      // The interpolation follows the cells' hierarchy: the coarse cells must be the same,
-      // up to each mesh's centroid shift (a shape meshed anew per refinement is not nested).
-      const double tolerance = 1e-6 * section_properties.diameter;
-      bool         nested    = coarse.triangulation.n_cells(0) == triangulation.n_cells(0);
-      for (auto a = coarse.triangulation.begin(0), b = triangulation.begin(0);
-           nested && a != coarse.triangulation.end(0);
-           ++a, ++b)
-        for (const unsigned int v : a->vertex_indices())
-          nested = nested && ((a->vertex(v) - coarse.geometry.applied_shift) -
-                              (b->vertex(v) - geometry.applied_shift))
-                                 .norm() <= tolerance;
+      // The interpolation follows the cells' hierarchy: the coarse cells must be the same
+      // (interpolate_to_different_mesh asserts it, to the last bit). A section meshed anew per
+      // refinement is not nested; nor is one shifted to its centroid, whose discrete centroid
+      // moves with the refinement.
+      const bool nested = GridTools::have_same_coarse_mesh(coarse.triangulation, triangulation);
       if (!nested)
         {
           say("  coarse-mesh start: the section refined once less has other coarse cells (a "
-              "shape meshed anew per refinement); the first step starts from the reference state");
+              "shape meshed anew per refinement, or shifted to its centroid); the first step "
+              "starts from the reference state");
           return false;
         }
       Vector<double> Uc = coarse.solution;
@@ -735,7 +731,9 @@ namespace cosmo
       catch (const solvers::NewtonFailure &e)
         {
           say("  coarse-mesh start: Newton failed on " + std::to_string(coarse.n_unknowns()) +
-              " unknowns (" + e.what() + "); starting from the reference state");
+              " unknowns (" + e.what() + "); starting from the reference state, also after a "
+              "cut-back");
+          coarse_start_levels = 0; // a cut-back would only repeat the failing coarse solves
           return false;
         }
       Vector<double> field_coarse(coarse.n_u()), field(n_u());

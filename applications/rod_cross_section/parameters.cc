@@ -45,8 +45,12 @@ namespace cosmo
                         "started from the one below it), and the solution, interpolated, "
                         "starts Newton on the full mesh, which then needs only its last "
                         "iterations. The converged state is the full mesh's, to Newton's "
-                        "tolerance. 0: start from the reference state. Used where the "
-                        "coarser mesh has the same coarse cells (every built-in shape).");
+                        "tolerance, where the equilibrium at the first step's load is "
+                        "unique (else Newton may reach another from any start: use 0 or "
+                        "a smaller 'Initial step'). 0: start from the reference state. Used "
+                        "where the coarser mesh has the same coarse cells (every built-in "
+                        "shape; not a mesh shifted to its centroid), by the natural-parameter "
+                        "continuation (not on arclength paths).");
       prm.leave_subsection();
       solvers::ContinuationSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);

@@ -58,8 +58,9 @@ namespace cosmo
        * secant predictor exists) better than the starting state itself, e.g.
        * the step solved on a coarser mesh and interpolated (nested
        * iteration: the full mesh then needs only Newton's last, quadratic
-       * iterations). Returns false, U untouched, where there is none. The
-       * converged state does not depend on it beyond Newton's tolerance.
+       * iterations). Returns false, U untouched, where there is none. Where
+       * the equilibrium at that load is unique, the converged state does not
+       * depend on it beyond Newton's tolerance.
        */
       virtual bool
       first_step_guess(double /*t*/, Vector<double> & /*U*/)
