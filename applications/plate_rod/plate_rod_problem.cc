@@ -450,9 +450,14 @@ namespace cosmo
             sc.tying_z[l].fill(0.);
             assembly::gather_local_variables<n_plate>(drives, sc.U_local, sc.tying_z[l]);
           }
-        for (unsigned int k = 0; k < n_tying; ++k)
+        // Location by location: the strains tied at one location follow each other, so that
+        // the model's shear derivatives can reuse its director there.
+        for (unsigned int l = 0; l < n_locations; ++l)
+          for (unsigned int k = 0; k < n_tying; ++k)
           {
-            const unsigned int location = assumed_shear.location_of(k);
+            if (assumed_shear.location_of(k) != l)
+              continue;
+            const unsigned int location = l;
             const auto &       drives   = sc.tying_drives[location];
             const auto &       z        = sc.tying_z[location];
             const Tensor<2, 2> J        = sc.fev_tying.jacobian(location);
