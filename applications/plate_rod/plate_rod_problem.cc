@@ -411,6 +411,10 @@ namespace cosmo
       const FullMatrix<double>     tying_weights = assumed_shear.interpolation(full);
       const unsigned int           n_tying       = assumed_shear.n_tying_points();
       const unsigned int           n_locations   = assumed_shear.tying_points().size();
+      // The tied strains at each location (e_0 and e_1 share some), once per assembly.
+      std::vector<std::vector<unsigned int>> strains_at(n_locations);
+      for (unsigned int k = 0; k < n_tying; ++k)
+        strains_at[assumed_shear.location_of(k)].push_back(k);
       const double    t            = load_parameter;
       const double    g_rod        = rod_growth_at(t);
       const auto      rod          = rod_law();
@@ -452,12 +456,9 @@ namespace cosmo
           }
         // Location by location: the strains tied at one location follow each other, so that
         // the model's shear derivatives can reuse its director there.
-        for (unsigned int l = 0; l < n_locations; ++l)
-          for (unsigned int k = 0; k < n_tying; ++k)
+        for (unsigned int location = 0; location < n_locations; ++location)
+          for (const unsigned int k : strains_at[location])
           {
-            if (assumed_shear.location_of(k) != l)
-              continue;
-            const unsigned int location = l;
             const auto &       drives   = sc.tying_drives[location];
             const auto &       z        = sc.tying_z[location];
             const Tensor<2, 2> J        = sc.fev_tying.jacobian(location);
@@ -526,15 +527,14 @@ namespace cosmo
             g.fill(0.);
             if (jacobian)
               H.fill(0.);
-            for (unsigned int k = 0; k < n_tying; ++k)
-              if (assumed_shear.location_of(k) == l)
-                {
-                  for (unsigned int m = 0; m < n_plate; ++m)
-                    g[m] += sc.mu[k] * sc.tying_gradient[k][m];
-                  if (jacobian)
-                    for (unsigned int m = 0; m < n_plate * n_plate; ++m)
-                      H[m] += sc.mu[k] * sc.tying_hessian[k][m];
-                }
+            for (const unsigned int k : strains_at[l])
+              {
+                for (unsigned int m = 0; m < n_plate; ++m)
+                  g[m] += sc.mu[k] * sc.tying_gradient[k][m];
+                if (jacobian)
+                  for (unsigned int m = 0; m < n_plate * n_plate; ++m)
+                    H[m] += sc.mu[k] * sc.tying_hessian[k][m];
+              }
             assembly::add_point<n_plate>(sc.tying_drives[l], g, H, 1., jacobian, c.r, c.K);
           }
         if (jacobian)

@@ -117,8 +117,8 @@ namespace cosmo
               for (const auto &e : m.entries[k])
                 g[e.first[0]] += e.second * V[e.first[1]];
               double q = 0;
-              for (const auto &e : m.entries[k])
-                q += V[e.first[0]] * e.second * V[e.first[1]];
+              for (int a = 0; a < n_vectors; ++a)
+                q += V[a] * g[a];
               s[k] = m.s0[k] + 0.5 * q;
             }
         }
