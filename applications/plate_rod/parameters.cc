@@ -218,6 +218,7 @@ namespace cosmo
     void
     PlateRodProblem::parse_parameters(ParameterHandler &prm)
     {
+      residuals.clear();
       prm.enter_subsection("Plate");
       radius    = prm.get_double("Radius");
       thickness = prm.get_double("Thickness");

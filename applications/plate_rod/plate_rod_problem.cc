@@ -288,6 +288,9 @@ namespace cosmo
     void
     PlateRodProblem::setup_system()
     {
+      residuals.clear();
+      // A stiffness with its constraints eliminated: every diagonal entry is nonzero.
+      solver.set_nonzero_diagonal(true);
       make_mesh();
       fe = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 6);
       dof_handler.reinit(triangulation);
@@ -644,22 +647,22 @@ namespace cosmo
             }
       };
 
-      if (R)
-        {
-          R->reinit(n_unknowns());
-        }
+      // A Jacobian assembly computes the residual at its state as well (the
+      // local gradients are at hand): it is kept for the drivers' next request.
+      Vector<double> jacobian_residual;
+      if (jacobian && !R)
+        R = &jacobian_residual;
+      R->reinit(n_unknowns());
       if (jacobian)
         matrix = 0;
       double plate_energy = 0, rod_energy = 0;
       auto   copier = [&](const Copy &c) {
         plate_energy += c.plate_energy;
         rod_energy += c.rod_energy;
-        if (R && jacobian)
+        if (jacobian)
           constraints.distribute_local_to_global(c.K, c.r, c.idx, matrix, *R);
-        else if (R)
+        else
           constraints.distribute_local_to_global(c.r, c.idx, *R);
-        else if (jacobian)
-          constraints.distribute_local_to_global(c.K, c.idx, matrix);
       };
       WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
                       Scratch(*mapping, *fe, full, reduced, face, assumed_shear.tying_points()),
@@ -669,6 +672,7 @@ namespace cosmo
       assembled_at       = U;
       assembled_load     = load_parameter;
       assembled_energy   = {{plate_energy, rod_energy}};
+      residuals.store(U, load_parameter, *R, {plate_energy, rod_energy});
       if (energies)
         {
           energies[0] = plate_energy;
@@ -688,6 +692,14 @@ namespace cosmo
     int
     PlateRodProblem::residual(const Vector<double> &U, Vector<double> &R)
     {
+      if (const auto *e = residuals.find(U, load_parameter))
+        {
+          R                = e->R;
+          assembled_at     = U;
+          assembled_load   = load_parameter;
+          assembled_energy = {{e->scalars[0], e->scalars[1]}};
+          return std::isfinite(assembled_energy[0] + assembled_energy[1]) ? 0 : 1;
+        }
       io::PhaseTimer::Scope scope(timer, "assembly (residual)");
       return assemble(U, &R, false);
     }

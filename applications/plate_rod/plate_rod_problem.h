@@ -334,6 +334,9 @@ namespace cosmo
       Vector<double>               assembled_at;   ///< the state of the last assembly
       double                       assembled_load = 0;
       std::array<double, 2>        assembled_energy{}; ///< its plate and rim energies
+      /// The last two assemblies' residuals, with their energies (cleared by
+      /// parse_parameters and setup_system, which change what R depends on).
+      solvers::ResidualCache       residuals;
 
       // Run records
       std::vector<PlateRodState>        states;

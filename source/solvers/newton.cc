@@ -80,6 +80,37 @@ namespace cosmo
       return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
     }
 
+    const ResidualCache::Entry *
+    ResidualCache::find(const Vector<double> &U, const double load) const
+    {
+      for (unsigned int k = 0; k < entries.size(); ++k)
+        if (valid[k] && entries[k].load == load && same_point(entries[k].U, U))
+          return &entries[k];
+      return nullptr;
+    }
+
+    void
+    ResidualCache::store(const Vector<double> &U, const double load, const Vector<double> &R,
+                         const std::vector<double> &scalars)
+    {
+      unsigned int k = 1 - newest; // the older entry, unless this state is held already
+      for (unsigned int j = 0; j < entries.size(); ++j)
+        if (valid[j] && entries[j].load == load && same_point(entries[j].U, U))
+          k = j;
+      entries[k].U       = U;
+      entries[k].R       = R;
+      entries[k].load    = load;
+      entries[k].scalars = scalars;
+      valid[k]           = true;
+      newest             = k;
+    }
+
+    void
+    ResidualCache::clear()
+    {
+      valid.fill(false);
+    }
+
     double
     scaled_residual_norm(const NonlinearSystem &system, const Vector<double> &R)
     {

@@ -441,6 +441,16 @@ namespace cosmo
             }
           else
             id.icntl[6] = ordering;
+          // No maximum weighted matching where the caller says the diagonal has
+          // no zero (set_nonzero_diagonal()) and this matrix agrees.
+          if (nonzero_diagonal)
+            {
+              bool zero_on_diagonal = false;
+              for (unsigned int row = 0; row < A.m() && !zero_on_diagonal; ++row)
+                zero_on_diagonal = A.diag_element(row) == 0;
+              if (!zero_on_diagonal)
+                id.icntl[5] = 0;
+            }
           // The upper triangle in coordinate format; the pattern is fixed,
           // so the index map is computed once.
           mumps->irn.clear();

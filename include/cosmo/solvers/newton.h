@@ -4,8 +4,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 /**
  * Checked Newton: SUNDIALS KINSOL (Newton with line search) through deal.II,
@@ -104,6 +106,42 @@ namespace cosmo
      */
     bool
     same_point(const Vector<double> &a, const Vector<double> &b);
+
+    /**
+     * The last two residuals a problem assembled, each with its state, load
+     * parameter and any scalars the assembly gave with it (energies). A
+     * Jacobian assembly yields the residual at its state for little more, and
+     * the drivers ask again for residuals they had: KINSOL's last iterate is
+     * the first R(U) of the critical-point Newton, the residual at a Newton
+     * iterate the base of a one-sided dR/dlambda
+     * (BifurcationProblem::load_derivative). A hit is the same state bitwise
+     * (same_point) and the same load parameter; the problem clears the cache
+     * when anything else its residual depends on changes.
+     */
+    class ResidualCache
+    {
+    public:
+      struct Entry
+      {
+        Vector<double>      U, R;
+        double              load = 0;
+        std::vector<double> scalars;
+      };
+      /// The entry at (U, load), or nullptr.
+      const Entry *
+      find(const Vector<double> &U, double load) const;
+      /// Keep R(U) at load, replacing the entry of that state or the older one.
+      void
+      store(const Vector<double> &U, double load, const Vector<double> &R,
+            const std::vector<double> &scalars = {});
+      void
+      clear();
+
+    private:
+      std::array<Entry, 2> entries;
+      std::array<bool, 2>  valid{{false, false}};
+      unsigned int         newest = 0;
+    };
 
     /// max_i |w_i R_i| with the system's residual_weights(): its stopping test.
     double
