@@ -70,8 +70,17 @@ for phase in ("assembly (residual)", "assembly (Jacobian)", "factorization", "so
         c = t[phase]
         print("  %-22s %3d x %.3f s = %.2f s" % (phase, c["calls"], c["seconds"] / c["calls"], c["seconds"]))
 jac, fac = t["assembly (Jacobian)"], t["factorization"]
-print("  one Newton iteration (Jacobian + factorization): %.3f s" %
-      (jac["seconds"] / jac["calls"] + fac["seconds"] / fac["calls"]))
+jf = jac["seconds"] / jac["calls"] + fac["seconds"] / fac["calls"]
+print("  one Jacobian + factorization: %.3f s" % jf)
+# A Newton iteration on the full mesh: its Jacobian and factorization, and
+# every residual and solve of the process (the stiffness's Jacobian and
+# factorization at the natural state, the last call of each, are not one).
+it = s.get("newton_iterations") or 0
+if it > 0:
+    rest = sum(t[p]["seconds"] for p in ("assembly (residual)", "solve") if p in t)
+    per = jf + rest / it
+    print("  per Newton iteration on the full mesh (%d): %.3f s = %.2fx (Jacobian + factorization)"
+          % (it, per, per / jf))
 print("  the rest of the process (start-up, mesh, section properties, output): %.2f s"
       % (mc - sum(t[p]["seconds"] for p in ("assembly (residual)", "assembly (Jacobian)", "factorization", "solve",
                                               "coarse-mesh start") if p in t)))
