@@ -650,7 +650,7 @@ namespace cosmo
       // A Jacobian assembly computes the residual at its state as well (the
       // local gradients are at hand): it is kept for the drivers' next request.
       Vector<double> jacobian_residual;
-      if (jacobian && !R)
+      if (!R)
         R = &jacobian_residual;
       R->reinit(n_unknowns());
       if (jacobian)

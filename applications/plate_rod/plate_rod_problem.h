@@ -149,7 +149,7 @@ namespace cosmo
       /// Restore it (and rewrite steps.csv and the PVD files as they were then).
       void
       load_progress(io::CheckpointReader &r);
-      /// The total energy, plate and rim, at U and the current load parameter (one
+      /// The total energy, plate and rim, at U and the current load parameter (at most one
       /// residual assembly; the residual is its gradient, test plate_rod.tangent_fd).
       double
       energy(const Vector<double> &U);

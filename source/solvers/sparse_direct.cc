@@ -442,7 +442,9 @@ namespace cosmo
           else
             id.icntl[6] = ordering;
           // No maximum weighted matching where the caller says the diagonal has
-          // no zero (set_nonzero_diagonal()) and this matrix agrees.
+          // no zero (set_nonzero_diagonal()) and the matrix analysed agrees
+          // (later matrices of the same pattern are not checked again: a zero
+          // there costs delayed pivots, not accuracy).
           if (nonzero_diagonal)
             {
               bool zero_on_diagonal = false;

@@ -112,11 +112,14 @@ namespace cosmo
      * parameter and any scalars the assembly gave with it (energies). A
      * Jacobian assembly yields the residual at its state for little more, and
      * the drivers ask again for residuals they had: KINSOL's last iterate is
-     * the first R(U) of the critical-point Newton, the residual at a Newton
-     * iterate the base of a one-sided dR/dlambda
-     * (BifurcationProblem::load_derivative). A hit is the same state bitwise
+     * the first R(U) of the critical-point Newton, and each later iterate's
+     * R(U) follows the Jacobian there. A hit is the same state bitwise
      * (same_point) and the same load parameter; the problem clears the cache
-     * when anything else its residual depends on changes.
+     * when anything else its residual depends on changes. A residual from a
+     * Jacobian assembly may differ from a residual-only assembly's in the
+     * last bits (second- against first-order AD): which one a driver gets
+     * depends on the calls before, which the inputs determine, never on
+     * the threads (test plate_rod.tangent_fd compares the two).
      */
     class ResidualCache
     {
