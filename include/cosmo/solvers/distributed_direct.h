@@ -1,0 +1,63 @@
+#ifndef cosmo_solvers_distributed_direct_h
+#define cosmo_solvers_distributed_direct_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+/**
+ * MUMPS LDL^T with distributed assembled input, for runs whose matrix is
+ * assembled on several ranks (a mesh distributed over them, issue: beyond one
+ * machine). Every rank calls every function (SPMD), each giving the entries
+ * of its own rows; the right-hand side and the solution are replicated
+ * vectors (the drivers' vectors stay whole on every rank: 8 MB per million
+ * unknowns, far below the factors). The inertia is INFOG(12) with
+ * ICNTL(13) = 1, exact in parallel as in solvers::factorization_ranks.
+ */
+namespace cosmo
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    class DistributedDirectSolver
+    {
+    public:
+      explicit DistributedDirectSolver(MPI_Comm comm);
+      ~DistributedDirectSolver();
+
+      /**
+       * Factorize the symmetric matrix of order n whose upper-triangle entries
+       * this rank holds: rows[k], columns[k] (0-based, rows[k] <= columns[k]
+       * after symmetrization: an entry below the diagonal is taken as its
+       * mirror), values[k]. Duplicates are summed. The analysis runs the first
+       * time and whenever the entries' positions change.
+       */
+      void
+      factorize(unsigned int                     n,
+                const std::vector<unsigned int> &rows,
+                const std::vector<unsigned int> &columns,
+                const std::vector<double> &      values);
+
+      /// Solve in place, the same replicated vector on every rank.
+      void
+      solve(Vector<double> &rhs_and_solution) const;
+
+      /// Negative eigenvalues of the last matrix factorized (the same on every rank).
+      int
+      n_negative_eigenvalues() const
+      {
+        return n_negative;
+      }
+
+    private:
+      struct Data;
+      std::unique_ptr<Data> data;
+      int                   n_negative = -1;
+    };
+  } // namespace solvers
+} // namespace cosmo
+
+#endif
