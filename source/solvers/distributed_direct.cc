@@ -128,6 +128,23 @@ namespace cosmo
     }
 
     void
+    DistributedDirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
+    {
+      std::vector<unsigned int> rows, columns;
+      std::vector<double>       values;
+      const auto                range = A.local_range();
+      for (auto row = range.first; row < range.second; ++row)
+        for (auto it = A.begin(row); it != A.end(row); ++it)
+          if (it->column() >= row) // the upper triangle
+            {
+              rows.push_back(row);
+              columns.push_back(it->column());
+              values.push_back(it->value());
+            }
+      factorize(A.m(), rows, columns, values);
+    }
+
+    void
     DistributedDirectSolver::solve(Vector<double> &x) const
     {
 #ifdef COSMO_WITH_MUMPS

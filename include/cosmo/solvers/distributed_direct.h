@@ -2,6 +2,7 @@
 #define cosmo_solvers_distributed_direct_h
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
@@ -40,6 +41,14 @@ namespace cosmo
                 const std::vector<unsigned int> &rows,
                 const std::vector<unsigned int> &columns,
                 const std::vector<double> &      values);
+
+      /**
+       * Factorize a symmetric matrix distributed by rows over the ranks of
+       * this solver's communicator (a matrix assembled on the locally owned
+       * cells of a distributed mesh): each rank gives its locally owned rows.
+       */
+      void
+      factorize(const TrilinosWrappers::SparseMatrix &A);
 
       /// Solve in place, the same replicated vector on every rank.
       void
