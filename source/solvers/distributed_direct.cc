@@ -16,7 +16,7 @@ namespace cosmo
 #ifdef COSMO_WITH_MUMPS
     struct DistributedDirectSolver::Data
     {
-      DMUMPS_STRUC_C   id;
+      DMUMPS_STRUC_C   id{};
       MPI_Comm         comm = MPI_COMM_NULL;
       bool             analysed = false;
       std::vector<int> irn, jcn;     // 1-based, this rank's entries
@@ -28,7 +28,13 @@ namespace cosmo
       {
         id.job = job;
         dmumps_c(&id);
-        // INFOG(1) is the same on every rank: all of them throw, or none.
+        check(job);
+      }
+
+      /// INFOG(1) is the same on every rank: all of them throw, or none.
+      void
+      check(const int job) const
+      {
         if (id.infog[0] < 0)
           throw std::runtime_error("MUMPS (distributed input) failed in phase " + std::to_string(job) +
                                    ": INFOG(1) = " + std::to_string(id.infog[0]) +
@@ -84,11 +90,19 @@ namespace cosmo
 #ifdef COSMO_WITH_MUMPS
       auto &d = *data;
       std::vector<int> irn(rows.size()), jcn(rows.size());
+      int              below = 0;
       for (std::size_t k = 0; k < rows.size(); ++k)
         {
-          irn[k] = std::min(rows[k], columns[k]) + 1;
-          jcn[k] = std::max(rows[k], columns[k]) + 1;
+          below |= rows[k] > columns[k];
+          irn[k] = rows[k] + 1;
+          jcn[k] = columns[k] + 1;
         }
+      // (all ranks decide together: a throw on one rank alone would leave the
+      // others waiting in the next collective call)
+      MPI_Allreduce(MPI_IN_PLACE, &below, 1, MPI_INT, MPI_MAX, d.comm);
+      if (below)
+        throw std::invalid_argument("DistributedDirectSolver::factorize: an entry below the "
+                                    "diagonal (give the upper triangle, each pair once)");
       // A new analysis where the positions changed on any rank.
       int changed = !d.analysed || n != d.n || irn != d.irn || jcn != d.jcn;
       MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, d.comm);
@@ -104,6 +118,7 @@ namespace cosmo
           id.irn_loc = d.irn.data();
           id.jcn_loc = d.jcn.data();
           id.a_loc   = d.a.data();
+          d.analysed = false; // (until this analysis succeeds)
           d.call(1);
           d.analysed = true;
         }
@@ -117,8 +132,7 @@ namespace cosmo
               id.icntl[13] = 2 * id.icntl[13] + 100;
               continue;
             }
-          if (id.infog[0] < 0)
-            d.call(2); // throws with the code
+          d.check(2);
           break;
         }
       n_negative = id.infog[11];
@@ -132,15 +146,17 @@ namespace cosmo
     {
       std::vector<unsigned int> rows, columns;
       std::vector<double>       values;
-      const auto                range = A.local_range();
-      for (auto row = range.first; row < range.second; ++row)
-        for (auto it = A.begin(row); it != A.end(row); ++it)
-          if (it->column() >= row) // the upper triangle
-            {
-              rows.push_back(row);
-              columns.push_back(it->column());
-              values.push_back(it->value());
-            }
+      for (const auto row : A.locally_owned_range_indices())
+        {
+          const auto end = A.end(row);
+          for (auto it = A.begin(row); it != end; ++it)
+            if (it->column() >= row) // the upper triangle
+              {
+                rows.push_back(row);
+                columns.push_back(it->column());
+                values.push_back(it->value());
+              }
+        }
       factorize(A.m(), rows, columns, values);
     }
 
@@ -152,6 +168,10 @@ namespace cosmo
       auto &id = d.id;
       int   rank = 0;
       MPI_Comm_rank(d.comm, &rank);
+      if (x.size() != d.n)
+        throw std::invalid_argument("DistributedDirectSolver::solve: a vector of size " +
+                                    std::to_string(x.size()) + " for a matrix of order " +
+                                    std::to_string(d.n));
       // Centralized right-hand side and solution on the host (rank 0), then
       // the solution to every rank.
       id.nrhs = 1;

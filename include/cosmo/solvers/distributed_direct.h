@@ -31,10 +31,11 @@ namespace cosmo
 
       /**
        * Factorize the symmetric matrix of order n whose upper-triangle entries
-       * this rank holds: rows[k], columns[k] (0-based, rows[k] <= columns[k]
-       * after symmetrization: an entry below the diagonal is taken as its
-       * mirror), values[k]. Duplicates are summed. The analysis runs the first
-       * time and whenever the entries' positions change.
+       * this rank holds: rows[k] <= columns[k] (0-based), values[k]; each
+       * off-diagonal pair is given once, by one rank, and duplicates of a
+       * position are summed. An entry below the diagonal on any rank is an
+       * error on all of them (std::invalid_argument). The analysis runs the
+       * first time and whenever the entries' positions change on any rank.
        */
       void
       factorize(unsigned int                     n,
@@ -50,7 +51,7 @@ namespace cosmo
       void
       factorize(const TrilinosWrappers::SparseMatrix &A);
 
-      /// Solve in place, the same replicated vector on every rank.
+      /// Solve in place, the same replicated vector (of the matrix's order) on every rank.
       void
       solve(Vector<double> &rhs_and_solution) const;
 
