@@ -93,10 +93,9 @@ namespace cosmo
     ResidualCache::store(const Vector<double> &U, const double load, const Vector<double> &R,
                          const std::vector<double> &scalars)
     {
-      unsigned int k = 1 - newest; // the older entry, unless this state is held already
-      for (unsigned int j = 0; j < entries.size(); ++j)
-        if (valid[j] && entries[j].load == load && same_point(entries[j].U, U))
-          k = j;
+      // The entry of this state if it is held already, else the older one.
+      const Entry *      held = find(U, load);
+      const unsigned int k    = held ? held - entries.data() : 1 - newest;
       entries[k].U       = U;
       entries[k].R       = R;
       entries[k].load    = load;
