@@ -106,6 +106,15 @@ namespace cosmo
       prm.declare_entry("Polynomial degree", "2", Patterns::Integer(2, 4),
                         "Degree p of FE_Q(p) for all fields and of the mapping of the rim; "
                         "shear terms and the rod are integrated with p Gauss points.");
+      prm.declare_entry("Distributed", "false", Patterns::Bool(),
+                        "Under mpirun: divide the mesh over the ranks (a "
+                        "parallel::distributed::Triangulation), each rank assembling its own "
+                        "cells and holding its rows of the matrix, factorized by MUMPS with "
+                        "distributed input; plate VTUs as one .pvtu with a piece per rank. For "
+                        "plates too large for one node's memory or cores. The located thresholds "
+                        "agree with one process's to their resolution, not bitwise; resume with "
+                        "as many ranks as began the run (doc/parallel-runs.md). false: rank 0 "
+                        "assembles on its node and shares only large factorizations.");
       prm.leave_subsection();
       prm.enter_subsection("Growth path");
       prm.declare_entry("Start", "0", Patterns::Double(0, 1),
@@ -348,6 +357,7 @@ namespace cosmo
                              "at least 1 for the full disc (its coarse mesh has no vertex at the "
                              "centre for the gauge conditions)");
       degree      = prm.get_integer("Polynomial degree");
+      distributed_mesh = prm.get_bool("Distributed");
       prm.leave_subsection();
 
       prm.enter_subsection("Growth path");

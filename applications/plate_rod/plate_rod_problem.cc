@@ -3,6 +3,10 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/base/work_stream.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -18,6 +22,7 @@
 #include <cosmo/io/resources.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/ranks.h>
+#include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
 
@@ -130,6 +135,11 @@ namespace cosmo
     void
     PlateRodProblem::make_mesh()
     {
+      if (distributed_mesh && !distributed_mesh_of_ranks)
+        distributed_mesh_of_ranks =
+          std::make_unique<parallel::distributed::Triangulation<2>>(MPI_COMM_WORLD);
+      // The same coarse mesh and refinements on one process and on a distributed mesh.
+      Triangulation<2> &triangulation = this->triangulation();
       triangulation.clear();
       const bool sector = domain == "sector";
       if (sector && sector_n == 1)
@@ -191,17 +201,26 @@ namespace cosmo
       const bool sector = domain == "sector";
       // In-plane only: u3, theta1, theta2 = 0 everywhere, first (the mirror
       // conditions below then find those DoFs constrained already).
+      // On a distributed mesh each rank makes the constraints of the DoFs of
+      // the cells it knows (its own and their neighbours): every constraint
+      // here ties DoFs of one node, so the ranks that know a DoF agree on it.
+      std::vector<types::global_dof_index> cell_dofs(fe->n_dofs_per_cell());
       if (in_plane_only)
-        {
-          ComponentMask out_of_plane(6, false);
-          for (const unsigned int c : {2u, 3u, 4u})
-            out_of_plane.set(c, true);
-          for (const auto i : DoFTools::extract_dofs(dof_handler, out_of_plane))
-            constraints.add_line(i);
-        }
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              cell->get_dof_indices(cell_dofs);
+              for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+                {
+                  const unsigned int c = fe->system_to_component_index(k).first;
+                  if (c >= 2 && c <= 4 && !constraints.is_constrained(cell_dofs[k]))
+                    constraints.add_line(cell_dofs[k]);
+                }
+            }
       // The apex: no translation, director E3 (the gauge of the full disc; on a sector with
       // n >= 2 the mirrors imply all but u3 = 0, the one gauge left there).
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
           if (cell->vertex(v).norm() < 1e-10 * radius)
             for (unsigned int c = 0; c < 5; ++c)
@@ -214,6 +233,7 @@ namespace cosmo
         {
           // Rotation about E3: u2 = 0 at the rim point (R, 0) (modes cos(n theta) keep it).
           for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial())
             for (const unsigned int v : cell->vertex_indices())
               if ((cell->vertex(v) - Point<2>(radius, 0)).norm() < 1e-8 * radius)
                 {
@@ -237,6 +257,7 @@ namespace cosmo
               constraints.add_entry(slave, master, w);
           };
           for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial())
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
                   (cell->face(f)->boundary_id() == mirror_first ||
@@ -274,13 +295,29 @@ namespace cosmo
                     }
                 }
         }
-      // alpha lives on the rim: zero elsewhere.
-      ComponentMask alpha(6, false);
-      alpha.set(5, true);
-      const IndexSet all_alpha = DoFTools::extract_dofs(dof_handler, alpha);
-      const IndexSet rim_alpha = DoFTools::extract_boundary_dofs(dof_handler, alpha, {rim_id});
+      // alpha lives on the rim: zero elsewhere. (A cell with a DoF on the rim
+      // has its rim face there, so every rank that knows such a DoF sees it
+      // is on the rim.)
+      std::set<types::global_dof_index>    all_alpha, rim_alpha;
+      std::vector<types::global_dof_index> face_dofs(fe->n_dofs_per_face());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+              if (fe->system_to_component_index(k).first == 5)
+                all_alpha.insert(cell_dofs[k]);
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+                {
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                    if (fe->face_system_to_component_index(k).first == 5)
+                      rim_alpha.insert(face_dofs[k]);
+                }
+          }
       for (const auto i : all_alpha)
-        if (!rim_alpha.is_element(i) && !constraints.is_constrained(i))
+        if (!rim_alpha.count(i) && !constraints.is_constrained(i))
           constraints.add_line(i);
       constraints.close();
     }
@@ -293,22 +330,54 @@ namespace cosmo
       solver.set_nonzero_diagonal(true);
       make_mesh();
       fe = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 6);
-      dof_handler.reinit(triangulation);
+      dof_handler.reinit(triangulation());
       dof_handler.distribute_dofs(*fe);
       make_constraints();
-      DynamicSparsityPattern dsp(dof_handler.n_dofs());
-      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-      sparsity.copy_from(dsp);
-      matrix.reinit(sparsity);
+      if (distributed_mesh)
+        {
+          // Each rank's rows: those of its own DoFs, entries from its cells
+          // sent to their owners at compress().
+          const IndexSet owned    = dof_handler.locally_owned_dofs();
+          IndexSet       relevant;
+          DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+          TrilinosWrappers::SparsityPattern sp;
+          sp.reinit(owned, owned, relevant, MPI_COMM_WORLD);
+          DoFTools::make_sparsity_pattern(dof_handler, sp, constraints, false,
+                                          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
+          sp.compress();
+          distributed_matrix.reinit(sp);
+          layout = solvers::ReplicatedVectorLayout(MPI_COMM_WORLD, owned);
+          if (!distributed_solver)
+            distributed_solver = std::make_unique<solvers::DistributedDirectSolver>(MPI_COMM_WORLD);
+          sparsity.reinit(0, 0, 0);
+          matrix.reinit(sparsity);
+        }
+      else
+        {
+          DynamicSparsityPattern dsp(dof_handler.n_dofs());
+          DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+          sparsity.copy_from(dsp);
+          matrix.reinit(sparsity);
+          layout = solvers::ReplicatedVectorLayout();
+          distributed_solver.reset();
+        }
       solution.reinit(dof_handler.n_dofs());
+      // Per DoF, its field and whether it is constrained, taken from its owner's cells.
       dof_component.assign(dof_handler.n_dofs(), 0);
+      dof_constrained.assign(dof_handler.n_dofs(), 0);
       std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          cell->get_dof_indices(idx);
-          for (unsigned int i = 0; i < idx.size(); ++i)
-            dof_component[idx[i]] = fe->system_to_component_index(i).first;
-        }
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(idx);
+            for (unsigned int i = 0; i < idx.size(); ++i)
+              {
+                dof_component[idx[i]]   = fe->system_to_component_index(i).first;
+                dof_constrained[idx[i]] = constraints.is_constrained(idx[i]) ? 1 : 0;
+              }
+          }
+      layout.take_from_owners(dof_component);
+      layout.take_from_owners(dof_constrained);
       make_reflection();
       check_plate_fields();
     }
@@ -320,7 +389,8 @@ namespace cosmo
       // vector is axial, theta -> -diag(1, -1, 1) theta: theta1 and alpha
       // (about E3) odd, theta2 even. DoFs are paired by their support points.
       reflection.clear();
-      if (domain == "sector")
+      // (not on a distributed mesh: no rank has all DoFs' support points)
+      if (domain == "sector" || distributed_mesh)
         return;
       // (empty where the mesh is not mirror-symmetric: no reflection)
       const auto   mirror = geometry::mirror_dofs(*mapping, dof_handler, 1, radius);
@@ -364,6 +434,7 @@ namespace cosmo
       FEValues<2>           fev(*mapping, *fe, quadrature, update_quadrature_points);
       std::vector<Point<2>> points;
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           fev.reinit(cell);
           for (const auto &X : fev.get_quadrature_points())
@@ -654,19 +725,40 @@ namespace cosmo
         R = &jacobian_residual;
       R->reinit(n_unknowns());
       if (jacobian)
-        matrix = 0;
+        {
+          if (distributed_mesh)
+            distributed_matrix = 0;
+          else
+            matrix = 0;
+        }
       double plate_energy = 0, rod_energy = 0;
       auto   copier = [&](const Copy &c) {
         plate_energy += c.plate_energy;
         rod_energy += c.rod_energy;
-        if (jacobian)
+        if (jacobian && distributed_mesh)
+          constraints.distribute_local_to_global(c.K, c.r, c.idx, distributed_matrix, *R);
+        else if (jacobian)
           constraints.distribute_local_to_global(c.K, c.r, c.idx, matrix, *R);
         else
           constraints.distribute_local_to_global(c.r, c.idx, *R);
       };
-      WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
+      // This rank's cells (all of them on one process).
+      WorkStream::run(filter_iterators(dof_handler.active_cell_iterators(),
+                                       IteratorFilters::LocallyOwnedCell()),
+                      worker, copier,
                       Scratch(*mapping, *fe, full, reduced, face, assumed_shear.tying_points()),
                       Copy(dpc));
+      if (distributed_mesh)
+        {
+          // Every rank holds the whole residual and energies, the same bits on each.
+          if (jacobian)
+            distributed_matrix.compress(VectorOperation::add);
+          layout.sum_parts(*R);
+          std::vector<double> e = {plate_energy, rod_energy};
+          layout.sum(e);
+          plate_energy = e[0];
+          rod_energy   = e[1];
+        }
       // Every assembly evaluates the energy: keep it with its state, so that the
       // output of a converged step need not assemble once more.
       assembled_at       = U;
@@ -715,7 +807,10 @@ namespace cosmo
       io::PhaseTimer::Scope scope(timer, "factorization");
       try
         {
-          solver.factorize(matrix);
+          if (distributed_mesh)
+            distributed_solver->factorize(distributed_matrix);
+          else
+            solver.factorize(matrix);
         }
       catch (std::exception &e)
         {
@@ -733,14 +828,21 @@ namespace cosmo
     {
       io::PhaseTimer::Scope scope(timer, "solve");
       dst = rhs;
-      solver.solve(dst);
+      if (distributed_mesh)
+        distributed_solver->solve(dst);
+      else
+        solver.solve(dst);
       constraints.distribute(dst);
+      // (each rank set the slaves it knows: everyone takes them from their owners)
+      layout.take_from_owners(dst);
       return 0;
     }
 
     double
     PlateRodProblem::jacobian_abs_form(const Vector<double> &v) const
     {
+      if (distributed_mesh)
+        return solvers::absolute_quadratic_form(distributed_matrix, v, layout);
       return solvers::absolute_quadratic_form(matrix, v);
     }
 
@@ -757,7 +859,7 @@ namespace cosmo
       mask.reinit(n_unknowns());
       mask = 1.;
       for (unsigned int i = 0; i < mask.size(); ++i)
-        if (constraints.is_constrained(i))
+        if (dof_constrained[i])
           mask[i] = 0;
     }
 
@@ -849,8 +951,12 @@ namespace cosmo
       info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness
            << " (h/R = " << thickness / radius << "), "
            << (domain == "sector" ? "sector pi/" + std::to_string(sector_n) : std::string("full disc"))
-           << ", " << triangulation.n_active_cells() << " cells, Q" << degree << ", "
-           << dof_handler.n_dofs() << " DoFs (" << constraints.n_constraints() << " constrained)";
+           << ", " << triangulation().n_global_active_cells() << " cells, Q" << degree << ", "
+           << dof_handler.n_dofs() << " DoFs ("
+           << std::count(dof_constrained.begin(), dof_constrained.end(), 1) << " constrained)";
+      if (distributed_mesh)
+        info << ", the mesh distributed over " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+             << (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ? " rank" : " ranks");
       say(info.str());
       if (!stiffness_file.empty())
         {
@@ -944,7 +1050,9 @@ namespace cosmo
       j["radius"]    = radius;
       j["thickness"] = thickness;
       j["dofs"]      = dof_handler.n_dofs();
-      j["cells"]     = triangulation.n_active_cells();
+      j["cells"]     = triangulation().n_global_active_cells();
+      if (distributed_mesh)
+        j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       j["closed_form"] = closed;
       if (!states.empty())
         {
@@ -970,7 +1078,8 @@ namespace cosmo
           x["n_negative_before"] = e.n_negative_before;
           x["n_negative_after"]  = e.n_negative_after;
           const std::string tag  = Utilities::int_to_string(k + 1, 2);
-          x["state_vtu"]         = "event-" + tag + ".vtu";
+          const std::string vtu  = distributed_mesh ? ".pvtu" : ".vtu";
+          x["state_vtu"]         = "event-" + tag + vtu;
           if (!located_events[k].mode.empty())
             {
               Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
@@ -981,7 +1090,7 @@ namespace cosmo
               x["mode_type_out_of_plane"] = c.second ? 1 : 0;
               x["mode_type_margin"]   = margins.type;
               x["mode_number_margin"] = margins.number;
-              x["mode_vtu"]     = "event-" + tag + "-mode.vtu";
+              x["mode_vtu"]     = "event-" + tag + "-mode" + vtu;
               x["eigenvalue"]   = e.eigenvalue;
             }
           solvers::add_location_to_json(e, x);
@@ -996,6 +1105,14 @@ namespace cosmo
     {
       io::ParameterSweep sweep;
       sweep.parse_parameters(prm);
+      prm.enter_subsection("Mesh");
+      const bool distributed = prm.get_bool("Distributed");
+      prm.leave_subsection();
+      if (sweep.enabled() && distributed)
+        throw io::InputError("Mesh", "Distributed", "true",
+                             "a parameter study spreads its values over the MPI ranks, each "
+                             "value on one rank's whole mesh: set Distributed = false, or run "
+                             "the values one by one on a distributed mesh");
       if (sweep.enabled())
         {
           solvers::CriticalPointStudy study;
@@ -1015,8 +1132,11 @@ namespace cosmo
         }
       PlateRodProblem problem;
       problem.parse_parameters(prm);
-      if (io::ranks::idle(false))
+      // A distributed mesh: every rank runs the path on its part of the mesh.
+      if (io::ranks::idle(problem.mesh_is_distributed()))
         return;
+      if (problem.mesh_is_distributed())
+        io::collective_interrupts(MPI_COMM_WORLD);
       problem.run(options, prm);
     }
   } // namespace plate_rod

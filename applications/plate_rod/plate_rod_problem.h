@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -10,12 +11,14 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <cosmo/analysis/plate_rod_thresholds.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_record.h>
+#include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/plate_model.h>
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
@@ -23,6 +26,8 @@
 #include <cosmo/materials/rod_law.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point_study.h>
+#include <cosmo/solvers/distributed_direct.h>
+#include <cosmo/solvers/replicated_vector.h>
 #include <cosmo/solvers/sparse_direct.h>
 
 #include <map>
@@ -123,7 +128,8 @@ namespace cosmo
       int
       n_negative_eigenvalues() override
       {
-        return solver.n_negative_eigenvalues();
+        return distributed_solver ? distributed_solver->n_negative_eigenvalues() :
+                                    solver.n_negative_eigenvalues();
       }
       /// |v|.|J||v| with the assembled Hessian (resolution of a located event).
       double
@@ -202,6 +208,12 @@ namespace cosmo
       {
         return dof_handler.n_dofs();
       }
+      /// 'Mesh / Distributed': the mesh divided over the MPI ranks.
+      bool
+      mesh_is_distributed() const
+      {
+        return distributed_mesh;
+      }
       const SparseMatrix<double> &
       system_matrix() const
       {
@@ -258,6 +270,8 @@ namespace cosmo
       unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
       bool                           sector_as_full_disc = false; ///< plate VTUs: the sector's 2 n images
       unsigned int                   refinements = 3, degree = 2;
+      /// 'Mesh / Distributed': the mesh divided over the MPI ranks (doc/parallel-runs.md).
+      bool                           distributed_mesh = false;
       /// The registered plate model named by 'Model / Model' (kinematics/plate_model.h).
       std::unique_ptr<kinematics::PlateModel> model;
       /// 'Model / Shear integration' (assumed strain: assembly/assumed_shear.h).
@@ -316,8 +330,22 @@ namespace cosmo
       bool                           write_output = false;
       double                         load_parameter = 0;
 
-      // Discretization
-      Triangulation<2>             triangulation;
+      // Discretization (the mesh is serial_mesh, or distributed_mesh_of_ranks with
+      // 'Mesh / Distributed': then each rank assembles its own cells into
+      // distributed_matrix, factorized by distributed_solver, and the drivers'
+      // vectors are whole on every rank, kept equal by `layout`)
+      Triangulation<2>             serial_mesh;
+      std::unique_ptr<parallel::distributed::Triangulation<2>> distributed_mesh_of_ranks;
+      Triangulation<2> &
+      triangulation()
+      {
+        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
+      }
+      const Triangulation<2> &
+      triangulation() const
+      {
+        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
+      }
       std::unique_ptr<MappingQ<2>> mapping;
       std::unique_ptr<FESystem<2>> fe;
       DoFHandler<2>                dof_handler;
@@ -325,8 +353,12 @@ namespace cosmo
       SparsityPattern              sparsity;
       SparseMatrix<double>         matrix;
       solvers::SparseDirectSolver  solver;
+      TrilinosWrappers::SparseMatrix                   distributed_matrix;
+      std::unique_ptr<solvers::DistributedDirectSolver> distributed_solver;
+      solvers::ReplicatedVectorLayout                  layout;
       Vector<double>               solution;
       std::vector<unsigned char>   dof_component; ///< field component of each DoF
+      std::vector<unsigned char>   dof_constrained; ///< 1 where the constraints set the DoF
       Vector<double>               factorized_at;  ///< the state of the last factorization
       double                       factorized_load = 0;
       /// converged_step reports with the last factorization (a continued critical point)
@@ -387,10 +419,17 @@ namespace cosmo
       }
       void
       write_event(const Event &e, const Vector<double> &U, const Vector<double> *mode);
-      void
-      write_plate(const std::string &file, const Vector<double> &U) const;
-      void
-      write_rim(const std::string &file, const Vector<double> &U) const;
+      /// plate VTU `name`.vtu in the output directory, or `name`.pvtu of a distributed mesh's
+      /// pieces; returns the file name written (for the .pvd series).
+      std::string
+      write_plate(const std::string &name, const Vector<double> &U) const;
+      /// The same for the rim rod.
+      std::string
+      write_rim(const std::string &name, const Vector<double> &U) const;
+      /// Write `vtu` as write_plate() says (an io::VTUPatches of the plate or the rim).
+      template <int dim>
+      std::string
+      write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const;
     };
 
     void

@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/vtu_patches.h>
 #include <cosmo/solvers/newton.h>
 
@@ -66,6 +67,7 @@ namespace cosmo
       std::vector<Vector<double>> values(face.size(), Vector<double>(6));
       double              ur_mean = 0, length = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
             {
@@ -90,6 +92,20 @@ namespace cosmo
                     }
                 }
             }
+      if (layout.distributed())
+        {
+          // Each rank integrated over its own rim faces.
+          std::vector<double> parts = {ur_mean, length};
+          for (const auto *v : {&aw, &bw, &ar, &br})
+            parts.insert(parts.end(), v->begin(), v->end());
+          layout.sum(parts);
+          ur_mean = parts[0];
+          length  = parts[1];
+          unsigned int at = 2;
+          for (auto *v : {&aw, &bw, &ar, &br})
+            for (auto &x : *v)
+              x = parts[at++];
+        }
       const double span = sector ? M_PI / sector_n : 2 * M_PI;
       for (unsigned int k = 0; k < n_modes; ++k)
         {
@@ -109,6 +125,7 @@ namespace cosmo
       std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
       const unsigned int                   nodes = fe->base_element(0).n_dofs_per_cell();
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           cell->get_dof_indices(idx);
           for (unsigned int k = 0; k < nodes; ++k)
@@ -116,6 +133,9 @@ namespace cosmo
               std::max(s.max_abs_inplane, std::hypot(U[idx[fe->component_to_system_index(0, k)]],
                                                      U[idx[fe->component_to_system_index(1, k)]]));
         }
+      std::vector<double> largest = {s.max_abs_inplane};
+      layout.max(largest);
+      s.max_abs_inplane = largest[0];
       return s;
     }
 
@@ -124,11 +144,14 @@ namespace cosmo
     {
       // Mode numbers up to what the rim resolves: one per rim face over the full circle
       // (beyond, the Fourier amplitudes of the sampled rim alias).
-      unsigned int rim_faces = 0;
-      for (const auto &cell : triangulation.active_cell_iterators())
+      std::vector<double> faces(1, 0.);
+      for (const auto &cell : triangulation().active_cell_iterators())
+        if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            ++rim_faces;
+            ++faces[0];
+      layout.sum(faces);
+      const unsigned int rim_faces = static_cast<unsigned int>(faces[0]);
       const unsigned int full_circle = rim_faces * (domain == "sector" ? 2 * sector_n : 1);
       const auto         s = analyse(mode, std::max(2u, full_circle / sector_step() + 1));
       // Half the range of w (a mode's w is measured from the apex) against the largest
@@ -226,10 +249,8 @@ namespace cosmo
       steps_table.add_row(row);
       steps_table.write(output_directory + "/steps.csv");
       const std::string tag = Utilities::int_to_string(output_index++, 4);
-      write_plate(output_directory + "/plate-" + tag + ".vtu", U);
-      write_rim(output_directory + "/rim-" + tag + ".vtu", U);
-      plate_series->add(report.step, report.branch, report.t, "plate-" + tag + ".vtu");
-      rim_series->add(report.step, report.branch, report.t, "rim-" + tag + ".vtu");
+      plate_series->add(report.step, report.branch, report.t, write_plate("plate-" + tag, U));
+      rim_series->add(report.step, report.branch, report.t, write_rim("rim-" + tag, U));
     }
 
     void
@@ -255,6 +276,9 @@ namespace cosmo
       w.put(output_index);
       plate_series->save(w);
       rim_series->save(w);
+      // The DoFs of a distributed mesh are numbered by the ranks' parts: its
+      // state means something only on as many ranks (0: a serial mesh).
+      w.put(distributed_mesh ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 0u);
 
     }
 
@@ -281,6 +305,22 @@ namespace cosmo
       output_index = r.get_unsigned();
       plate_series->load(r);
       rim_series->load(r);
+      // (checkpoints written before distributed meshes end here: a serial mesh)
+      const unsigned int mesh_ranks = r.at_end() ? 0u : r.get_unsigned();
+      const unsigned int now_ranks =
+        distributed_mesh ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 0u;
+      if (mesh_ranks != now_ranks)
+        throw io::InputError(
+          "Mesh", "Distributed", distributed_mesh ? "true" : "false",
+          "the checkpoint was written " +
+            (mesh_ranks == 0 ? std::string("on a serial mesh") :
+                               "on a mesh distributed over " + std::to_string(mesh_ranks) + " ranks") +
+            ", whose DoF numbering this run's " +
+            (now_ranks == 0 ? std::string("serial mesh") :
+                              "mesh over " + std::to_string(now_ranks) + " ranks") +
+            " does not share: resume it " +
+            (mesh_ranks == 0 ? std::string("with Distributed = false") :
+                               "with mpirun -np " + std::to_string(mesh_ranks)));
 
       if (!r.at_end())
         throw std::runtime_error("the checkpoint holds more than this run reads");
@@ -311,7 +351,7 @@ namespace cosmo
     PlateRodProblem::write_event(const Event &, const Vector<double> &U, const Vector<double> *mode)
     {
       const std::string tag = Utilities::int_to_string(located_events.size(), 2);
-      write_plate(output_directory + "/event-" + tag + ".vtu", U);
+      write_plate("event-" + tag, U);
       if (mode)
         {
           // The mode added to the state, scaled to a tenth of the radius.
@@ -322,12 +362,24 @@ namespace cosmo
               m = std::max(m, std::abs((*mode)[i]));
           if (m > 0)
             V.add(0.1 * radius / m, *mode);
-          write_plate(output_directory + "/event-" + tag + "-mode.vtu", V);
+          write_plate("event-" + tag + "-mode", V);
         }
     }
 
-    void
-    PlateRodProblem::write_plate(const std::string &file, const Vector<double> &U) const
+    template <int dim>
+    std::string
+    PlateRodProblem::write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const
+    {
+      // A distributed mesh: every rank's piece and rank 0's .pvtu record in
+      // the run's directory (rank k > 0 runs in a directory of its own).
+      if (distributed_mesh)
+        return vtu.write_pieces(io::ranks::shared_directory() + "/" + name + ".vtu", MPI_COMM_WORLD);
+      vtu.write(output_directory + "/" + name + ".vtu");
+      return name + ".vtu";
+    }
+
+    std::string
+    PlateRodProblem::write_plate(const std::string &name, const Vector<double> &U) const
     {
       // The mid-surface at its reference points with the displacement, the
       // director, the growth factors and the membrane forces and bending
@@ -346,6 +398,7 @@ namespace cosmo
                              {"growth_circumferential", 1}, {"N_rr", 1}, {"N_tt", 1}, {"N_rt", 1},
                              {"M_rr", 1}, {"M_tt", 1}, {"M_rt", 1}});
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           fev.reinit(cell);
           fev.get_function_values(U, values);
@@ -409,11 +462,11 @@ namespace cosmo
               });
         }
       vtu.set_time(load_parameter);
-      vtu.write(file);
+      return write_patches(name, vtu);
     }
 
-    void
-    PlateRodProblem::write_rim(const std::string &file, const Vector<double> &U) const
+    std::string
+    PlateRodProblem::write_rim(const std::string &name, const Vector<double> &U) const
     {
       // The rim rod as a polyline through phi(X(S)) with its frame d1, d2, d3
       // and its strains and resultants (n = dpsi/dnu, m = dpsi/dkappa).
@@ -432,6 +485,7 @@ namespace cosmo
                              {"kappa1", 1}, {"kappa2", 1}, {"kappa3", 1}, {"n1", 1}, {"n2", 1},
                              {"n3", 1}, {"m1", 1}, {"m2", 1}, {"m3", 1}});
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
             {
@@ -507,7 +561,7 @@ namespace cosmo
                   });
             }
       vtu.set_time(load_parameter);
-      vtu.write(file);
+      return write_patches(name, vtu);
     }
 
     io::JSON

@@ -131,11 +131,26 @@ namespace cosmo
       return received;
     }
 
+    namespace
+    {
+      MPI_Comm interrupt_comm = MPI_COMM_NULL;
+    }
+
+    void
+    collective_interrupts(MPI_Comm comm)
+    {
+      if (interrupt_comm == MPI_COMM_NULL)
+        MPI_Comm_dup(comm, &interrupt_comm);
+    }
+
     void
     check_interrupt()
     {
-      if (received != 0)
-        throw Interrupted(received);
+      int signal = received;
+      if (interrupt_comm != MPI_COMM_NULL)
+        MPI_Allreduce(MPI_IN_PLACE, &signal, 1, MPI_INT, MPI_MAX, interrupt_comm);
+      if (signal != 0)
+        throw Interrupted(signal);
     }
 
     void

@@ -137,6 +137,46 @@ namespace cosmo
       write_file_atomically(file, [&](std::ostream &out) { out << text; });
     }
 
+    template <int dim>
+    std::string
+    VTUPatches<dim>::write_pieces(const std::string &file, MPI_Comm comm) const
+    {
+      const std::string  suffix = ".vtu";
+      AssertThrow(file.size() > suffix.size() &&
+                    file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0,
+                  ExcMessage("write_pieces: '" + file + "' does not end in .vtu"));
+      const std::string  path   = file.substr(0, file.size() - suffix.size());
+      const std::size_t  slash  = path.rfind('/');
+      const std::string  stem   = slash == std::string::npos ? path : path.substr(slash + 1);
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int size = Utilities::MPI::n_mpi_processes(comm);
+      auto piece = [&](const unsigned int r) { return "." + Utilities::int_to_string(r, 4) + ".vtu"; };
+      write(path + piece(rank));
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < size; ++r)
+            pieces.push_back(stem + piece(r));
+          std::ostringstream xml;
+          DataOutBase::write_pvtu_record(xml, pieces, names, vectors, DataOutBase::VtkFlags());
+          std::string text = xml.str();
+          if (!cell_names.empty())
+            {
+              std::ostringstream cells;
+              cells << "    <PCellData>\n";
+              for (const auto &name : cell_names)
+                cells << "      <PDataArray type=\"Int32\" Name=\"" << name << "\" format=\"ascii\"/>\n";
+              cells << "    </PCellData>\n";
+              const std::size_t at = text.find("<PPointData");
+              AssertThrow(at != std::string::npos, ExcInternalError());
+              const std::size_t line = text.rfind('\n', at);
+              text.insert(line == std::string::npos ? at : line + 1, cells.str());
+            }
+          write_file_atomically(path + ".pvtu", [&](std::ostream &out) { out << text; });
+        }
+      return stem + ".pvtu";
+    }
+
     template class VTUPatches<1>;
     template class VTUPatches<2>;
     template class VTUPatches<3>;

@@ -6,6 +6,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -182,6 +183,22 @@ namespace cosmo
 #else
       (void)x;
 #endif
+    }
+
+    double
+    absolute_quadratic_form(const TrilinosWrappers::SparseMatrix &A,
+                            const Vector<double> &                v,
+                            const ReplicatedVectorLayout &        layout)
+    {
+      std::vector<double> s(1, 0.);
+      for (const auto row : A.locally_owned_range_indices())
+        {
+          const auto end = A.end(row);
+          for (auto it = A.begin(row); it != end; ++it)
+            s[0] += std::abs(it->value() * v[row] * v[it->column()]);
+        }
+      layout.sum(s);
+      return s[0];
     }
   } // namespace solvers
 } // namespace cosmo

@@ -1,6 +1,8 @@
 #ifndef cosmo_io_run_directory_h
 #define cosmo_io_run_directory_h
 
+#include <mpi.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +52,16 @@ namespace cosmo
     /// Throw Interrupted if a signal was received: call between steps.
     void
     check_interrupt();
+
+    /**
+     * From now on check_interrupt() decides together with every rank of
+     * `comm`: it throws on all of them if any received a signal. For runs in
+     * which the ranks take every step together (a distributed mesh): a
+     * signal reaches the ranks at different moments, and a rank that
+     * stopped alone would leave the others waiting in a collective call.
+     */
+    void
+    collective_interrupts(MPI_Comm comm);
 
     /**
      * Take `directory` (created already) for this process: lock it, move the

@@ -2,6 +2,7 @@
 #define cosmo_io_vtu_patches_h
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
 #include <limits>
@@ -78,6 +79,17 @@ namespace cosmo
       /// Write all patches to `file` (.vtu), atomically.
       void
       write(const std::string &file) const;
+
+      /**
+       * Patches divided over the ranks of `comm` (a distributed mesh, each
+       * rank with its own cells'): every rank calls this with the same
+       * `file` (`<directory>/<stem>.vtu`). Each writes its patches as the
+       * piece `<stem>.<rank>.vtu` (4 digits), rank 0 the record
+       * `<stem>.pvtu` that lists them, which ParaView opens as one data set.
+       * Returns the record's name without its directory (for a .pvd).
+       */
+      std::string
+      write_pieces(const std::string &file, MPI_Comm comm) const;
 
     private:
       std::vector<std::string> names;

@@ -5,6 +5,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/solvers/replicated_vector.h>
+
 #include <memory>
 #include <vector>
 
@@ -67,6 +69,16 @@ namespace cosmo
       std::unique_ptr<Data> data;
       int                   n_negative = -1;
     };
+
+    /**
+     * |v|.|A||v| of a matrix distributed by rows and a replicated v (the
+     * resolution of a located event, as absolute_quadratic_form of a serial
+     * matrix): each rank sums its rows, the same total on every rank.
+     */
+    double
+    absolute_quadratic_form(const TrilinosWrappers::SparseMatrix &A,
+                            const Vector<double> &                v,
+                            const ReplicatedVectorLayout &        layout);
   } // namespace solvers
 } // namespace cosmo
 
