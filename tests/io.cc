@@ -121,6 +121,8 @@ main()
     j["nothing"]     = JSON();
     j["pi"]          = 3.141592653589793;
     j["tiny"]        = -1.2345678901234567e-300;
+    // A subnormal number (a Rayleigh quotient's margin can be one) is written and read back.
+    j["subnormal"]   = 1.2345e-310;
     j["stiffness"]   = JSON::array();
     for (int a = 0; a < 3; ++a)
       j["stiffness"].push_back(JSON::array({a + 0.1, 1. / 3, -2e10}));
@@ -130,6 +132,7 @@ main()
     check("JSON round trip: numbers bit for bit",
           r.find("pi")->as_number() == 3.141592653589793 &&
             r.find("tiny")->as_number() == -1.2345678901234567e-300 &&
+            r.find("subnormal")->as_number() == 1.2345e-310 &&
             r.find("stiffness")->at(2).at(1).as_number() == 1. / 3);
     check("JSON: a missing key is nullptr, null reads as NaN",
           r.find("absent") == nullptr && std::isnan(r.find("nothing")->as_number()));

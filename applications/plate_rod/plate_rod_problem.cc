@@ -389,8 +389,7 @@ namespace cosmo
       // vector is axial, theta -> -diag(1, -1, 1) theta: theta1 and alpha
       // (about E3) odd, theta2 even. DoFs are paired by their support points.
       reflection.clear();
-      // (not on a distributed mesh: no rank has all DoFs' support points)
-      if (domain == "sector" || distributed_mesh)
+      if (domain == "sector")
         return;
       // (empty where the mesh is not mirror-symmetric: no reflection)
       const auto   mirror = geometry::mirror_dofs(*mapping, dof_handler, 1, radius);

@@ -1,3 +1,4 @@
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 
@@ -20,9 +21,44 @@ namespace cosmo
     {
       const types::global_dof_index n = dof_handler.n_dofs();
       std::vector<Point<dim>>       points(n);
-      DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
       std::vector<unsigned int>            component(n);
       std::vector<types::global_dof_index> idx;
+      const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(
+        &dof_handler.get_triangulation());
+      if (parallel_mesh == nullptr)
+        DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+      else
+        {
+          // A mesh divided over ranks: each rank places its own DoFs, and
+          // every rank gets all of them (a sum in which each entry has one
+          // nonzero term, so exact and the same on every rank).
+          std::map<types::global_dof_index, Point<dim>> mine;
+          DoFTools::map_dofs_to_support_points(mapping, dof_handler, mine);
+          const IndexSet      owned = dof_handler.locally_owned_dofs();
+          std::vector<double> all((dim + 1) * n, 0.);
+          for (const auto &[i, p] : mine)
+            if (owned.is_element(i))
+              for (unsigned int d = 0; d < dim; ++d)
+                all[(dim + 1) * i + d] = p[d];
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                idx.resize(cell->get_fe().n_dofs_per_cell());
+                cell->get_dof_indices(idx);
+                for (unsigned int i = 0; i < idx.size(); ++i)
+                  if (owned.is_element(idx[i]))
+                    all[(dim + 1) * idx[i] + dim] = cell->get_fe().system_to_component_index(i).first;
+              }
+          MPI_Allreduce(MPI_IN_PLACE, all.data(), all.size(), MPI_DOUBLE, MPI_SUM,
+                        parallel_mesh->get_communicator());
+          for (types::global_dof_index i = 0; i < n; ++i)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                points[i][d] = all[(dim + 1) * i + d];
+              component[i] = static_cast<unsigned int>(all[(dim + 1) * i + dim]);
+            }
+        }
+      if (parallel_mesh == nullptr)
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           idx.resize(cell->get_fe().n_dofs_per_cell());

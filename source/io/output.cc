@@ -98,7 +98,8 @@ namespace cosmo
         {
           std::ostringstream t;
           t << std::setprecision(p) << v;
-          if (std::stod(t.str()) == v)
+          // (strtod, not stod: stod throws on a subnormal number)
+          if (std::strtod(t.str().c_str(), nullptr) == v)
             return t.str();
         }
       return s.str();
