@@ -1,11 +1,15 @@
+#include <deal.II/lac/trilinos_index_access.h>
+
 #include <cosmo/config.h>
 #include <cosmo/solvers/distributed_direct.h>
+#include <cosmo/solvers/sparse_direct.h>
 
 #ifdef COSMO_WITH_MUMPS
 #  include <dmumps_c.h>
 #endif
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -14,6 +18,30 @@ namespace cosmo
 {
   namespace solvers
   {
+    namespace
+    {
+      /// f(row, column, value) for the entries of this rank's rows, through
+      /// Epetra's views: deal.II's iterators over a Trilinos matrix cost about
+      /// a microsecond per entry (5 s per pass over 75 000 unknowns of the
+      /// plate, benchmarks/README.md "Distributed meshes").
+      template <typename F>
+      void
+      for_each_owned_entry(const TrilinosWrappers::SparseMatrix &A, const F &f)
+      {
+        const Epetra_CrsMatrix &M = A.trilinos_matrix();
+        for (int local = 0; local < M.NumMyRows(); ++local)
+          {
+            int     n = 0;
+            double *v = nullptr;
+            int *   c = nullptr;
+            M.ExtractMyRowView(local, n, v, c);
+            const unsigned int row = TrilinosWrappers::global_row_index(M, local);
+            for (int k = 0; k < n; ++k)
+              f(row, static_cast<unsigned int>(TrilinosWrappers::global_column_index(M, c[k])), v[k]);
+          }
+      }
+    } // namespace
+
 #ifdef COSMO_WITH_MUMPS
     struct DistributedDirectSolver::Data
     {
@@ -64,6 +92,13 @@ namespace cosmo
       id.icntl[17] = 3; // distributed assembled input, analysis and factorization
       id.icntl[12] = 1; // no ScaLAPACK on the root front: INFOG(12) is the exact inertia
       id.icntl[13] = 60; // extra workspace (delayed pivots of indefinite matrices)
+      // Sequential ordering on the host, QAMD as SparseDirectSolver's (its
+      // default here, chosen by MUMPS, took 2.4x the factorization time of
+      // the plate's: benchmarks/README.md, "Distributed meshes").
+      id.icntl[27] = 1;
+      id.icntl[6]  = 6;
+      if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
+        id.icntl[6] = std::atoi(o);
 #else
       (void)comm;
       throw std::runtime_error("DistributedDirectSolver needs MUMPS");
@@ -137,6 +172,15 @@ namespace cosmo
           break;
         }
       n_negative = id.infog[11];
+      FactorizationMemory f;
+      f.unknowns       = n;
+      f.factor_entries = id.infog[28] >= 0 ? double(id.infog[28]) : -1e6 * id.infog[28];
+      f.mb_per_rank    = id.infog[20];
+      f.mb_all_ranks   = id.infog[21];
+      int ranks        = 1;
+      MPI_Comm_size(d.comm, &ranks);
+      f.ranks = ranks;
+      note_factorization(f);
 #else
       (void)n, (void)rows, (void)columns, (void)values;
 #endif
@@ -147,17 +191,18 @@ namespace cosmo
     {
       std::vector<unsigned int> rows, columns;
       std::vector<double>       values;
-      for (const auto row : A.locally_owned_range_indices())
-        {
-          const auto end = A.end(row);
-          for (auto it = A.begin(row); it != end; ++it)
-            if (it->column() >= row) // the upper triangle
-              {
-                rows.push_back(row);
-                columns.push_back(it->column());
-                values.push_back(it->value());
-              }
-        }
+      const int                 entries = A.trilinos_matrix().NumMyNonzeros();
+      rows.reserve(entries / 2 + A.local_size());
+      columns.reserve(rows.capacity());
+      values.reserve(rows.capacity());
+      for_each_owned_entry(A, [&](const unsigned int row, const unsigned int column, const double v) {
+        if (column >= row) // the upper triangle
+          {
+            rows.push_back(row);
+            columns.push_back(column);
+            values.push_back(v);
+          }
+      });
       factorize(A.m(), rows, columns, values);
     }
 
@@ -191,12 +236,9 @@ namespace cosmo
                             const ReplicatedVectorLayout &        layout)
     {
       std::vector<double> s(1, 0.);
-      for (const auto row : A.locally_owned_range_indices())
-        {
-          const auto end = A.end(row);
-          for (auto it = A.begin(row); it != end; ++it)
-            s[0] += std::abs(it->value() * v[row] * v[it->column()]);
-        }
+      for_each_owned_entry(A, [&](const unsigned int row, const unsigned int column, const double a) {
+        s[0] += std::abs(a * v[row] * v[column]);
+      });
       layout.sum(s);
       return s[0];
     }

@@ -169,6 +169,13 @@ namespace cosmo
       return largest;
     }
 
+    void
+    note_factorization(const FactorizationMemory &f)
+    {
+      if (f.mb_all_ranks >= largest.mb_all_ranks)
+        largest = f;
+    }
+
     namespace factorization_ranks
     {
       void
@@ -503,14 +510,13 @@ namespace cosmo
           break;
         }
       n_negative = mumps->id.infog[11];
-      if (mumps->id.infog[21] >= largest.mb_all_ranks)
-        {
-          largest.unknowns       = sp.n_rows();
-          largest.factor_entries = factor_entries();
-          largest.mb_per_rank    = mumps->id.infog[20];
-          largest.mb_all_ranks   = mumps->id.infog[21];
-          largest.ranks          = mumps->m.shared ? ranks_size() : 1;
-        }
+      FactorizationMemory f;
+      f.unknowns       = sp.n_rows();
+      f.factor_entries = factor_entries();
+      f.mb_per_rank    = mumps->id.infog[20];
+      f.mb_all_ranks   = mumps->id.infog[21];
+      f.ranks          = mumps->m.shared ? ranks_size() : 1;
+      note_factorization(f);
 #endif
     }
 

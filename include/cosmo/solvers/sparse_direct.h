@@ -108,6 +108,9 @@ namespace cosmo
     };
     const FactorizationMemory &
     largest_factorization();
+    /// Keep `f` as the largest if it used more memory on all ranks (every MUMPS factorization).
+    void
+    note_factorization(const FactorizationMemory &f);
 
     class SparseDirectSolver
     {
