@@ -57,6 +57,8 @@ expect "a stiffness file with positive diagonal but indefinite (coupling 2 > sqr
 printf '{"stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,0.5,0,0],[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]]}\n' > asymmetric.json
 { base; printf 'subsection Rim rod\n set Stiffness file = asymmetric.json\nend\n'; } > asymmetric.prm
 expect "an asymmetric stiffness file" "entry 'Stiffness file' = 'asymmetric.json': a symmetric 6x6 stiffness (max |K_ab - K_ba| = 0.5)" asymmetric.prm
+{ base; printf 'subsection Mesh\n set Distributed = true\nend\nsubsection Parameter sweep\n set Entry = Plate/Thickness\n set Values = 0.01, 0.02\nend\n'; } > distributed_study.prm
+expect "a distributed mesh with a parameter study (which spreads its values over the ranks)" "entry 'Distributed' = 'true': a parameter study spreads its values" distributed_study.prm
 printf 'subsection Output\n set Output directory = ab\000cd\nend\n' > nul.prm
 expect "a NUL byte in the output directory (shown, its position named)" "a path without control characters (character 3 is 0x00" nul.prm
 exit $fail
