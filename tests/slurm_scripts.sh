@@ -53,4 +53,22 @@ PY
 then
   ok "slurm-path.sh stopped (exit $s1) and submitted again: resumed from its checkpoint to the uninterrupted event"
 else bad "slurm-path.sh stop and resume: exits $s1 $s2"; tail -n 5 path-0.txt path-1.txt; fi
+
+# doc/slurm-mesh.sh: the dome on a mesh distributed over the 2 ranks, to its first event.
+sed -e "s|^\( *set Output directory *=\).*|\1 mesh|" -e "s|^\( *set Global refinements *=.*\)|\1\n  set Distributed = true|" \
+    -e "s|^\( *set Event tolerance *=.*\)|\1\n  set Stop at first event = true|" \
+    "$here/../parameter_files/plate_rod/dome.prm" > mesh.prm
+timeout 300 bash "$here/../doc/slurm-mesh.sh" mesh.prm > mesh.txt 2>&1; s=$?
+timeout 60 bash "$here/../doc/slurm-mesh.sh" whole.prm > refused.txt 2>&1; r=$?
+if [ $s -eq 0 ] && [ $r -eq 1 ] && grep -q "Distributed = true" refused.txt && /usr/bin/python3 - <<'PY'
+import json, sys
+a, b = (json.load(open(f"{d}/summary.json")) for d in ("whole", "mesh"))
+ea, eb = a["events"][0], b["events"][0]
+res = max(ea["location"]["resolution"], eb["location"]["resolution"])
+print(f"  event t = {ea['t']:.12g} (one path) and {eb['t']:.12g} (distributed mesh): |difference| {abs(ea['t'] - eb['t']):.1e}, resolution {res:.1e}")
+sys.exit(not (abs(ea["t"] - eb["t"]) <= res and b.get("distributed_mesh_ranks") == 2))
+PY
+then
+  ok "slurm-mesh.sh: the dome on a mesh distributed over 2 ranks, the event of one path; a file without 'Distributed = true' refused"
+else bad "slurm-mesh.sh: exits $s (run) and $r (refused)"; tail -n 5 mesh.txt refused.txt; fi
 exit $fail

@@ -4,9 +4,7 @@
 #include <cosmo/solvers/distributed_direct.h>
 #include <cosmo/solvers/sparse_direct.h>
 
-#ifdef COSMO_WITH_MUMPS
-#  include <dmumps_c.h>
-#endif
+#include "mumps_phases.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -85,10 +83,7 @@ namespace cosmo
       id.par          = 1;
       id.sym          = 2; // symmetric, possibly indefinite: LDL^T
       data->call(-1);
-      id.icntl[0] = -1;
-      id.icntl[1] = -1;
-      id.icntl[2] = -1;
-      id.icntl[3] = 0;
+      mumps_phases::silence(id);
       id.icntl[17] = 3; // distributed assembled input, analysis and factorization
       id.icntl[12] = 1; // no ScaLAPACK on the root front: INFOG(12) is the exact inertia
       id.icntl[13] = 60; // extra workspace (delayed pivots of indefinite matrices)
@@ -159,18 +154,11 @@ namespace cosmo
           d.analysed = true;
         }
       id.a_loc = d.a.data();
-      for (unsigned int attempt = 0;; ++attempt)
-        {
-          id.job = 2;
-          dmumps_c(&id);
-          if ((id.infog[0] == -8 || id.infog[0] == -9) && attempt < 6)
-            {
-              id.icntl[13] = 2 * id.icntl[13] + 100;
-              continue;
-            }
-          d.check(2);
-          break;
-        }
+      mumps_phases::factorize_enlarging_workspace(id, [&](const int job) {
+        id.job = job;
+        dmumps_c(&id);
+      });
+      d.check(2);
       n_negative = id.infog[11];
       FactorizationMemory f;
       f.unknowns       = n;

@@ -5,6 +5,7 @@
 #  include <dmumps_c.h>
 #  include <mpi.h>
 #endif
+#include "mumps_phases.h"
 
 #ifdef COSMO_WITH_METIS
 #  include <metis.h>
@@ -147,14 +148,7 @@ namespace cosmo
         return size;
       }
 
-      void
-      silence(DMUMPS_STRUC_C &id)
-      {
-        id.icntl[0] = -1;
-        id.icntl[1] = -1;
-        id.icntl[2] = -1;
-        id.icntl[3] = 0;
-      }
+      using mumps_phases::silence;
     } // namespace
 #endif
 
@@ -493,22 +487,11 @@ namespace cosmo
           if (mumps->upper[pos])
             mumps->values[k++] = it->value();
       }
-      // Delayed pivots of indefinite (saddle-point, nearly singular)
-      // matrices can exceed the workspace estimated in the analysis
-      // (INFOG(1) = -8, -9: too small a work array): enlarge it and refactorize.
-      for (unsigned int attempt = 0;; ++attempt)
-        {
-          mumps->run(2);
-          const int info = mumps->id.infog[0];
-          if ((info == -8 || info == -9) && attempt < 6)
-            {
-              mumps->id.icntl[13] = 2 * mumps->id.icntl[13] + 100;
-              continue;
-            }
-          if (info < 0)
-            mumps->check(2); // reports the error with its code
-          break;
-        }
+      // (delayed pivots of indefinite, saddle-point or nearly singular
+      // matrices can exceed the analysis' workspace: mumps_phases.h)
+      mumps_phases::factorize_enlarging_workspace(mumps->id, [&](const int job) { mumps->run(job); });
+      if (mumps->id.infog[0] < 0)
+        mumps->check(2); // reports the error with its code
       n_negative = mumps->id.infog[11];
       FactorizationMemory f;
       f.unknowns       = sp.n_rows();
