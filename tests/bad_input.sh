@@ -100,4 +100,11 @@ else echo "  FAIL  --print-parameters json FILE does not print the file's values
 expect "a table axis that is a free strain" "entry 'Second strain' = 'kappa3': a prescribed strain: this one is free" tablefree.prm
 { base; printf 'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = nu3\n set Resultants = 0, 0, 1, 1, 0, 0\nend\n'; } > moment.prm
 expect "a moment target for a prescribed curvature" "m1 = 1 for the prescribed kappa1: a resultant can only be prescribed for a strain in 'Free strains'" moment.prm
+distributed='subsection Finite element\n set Distributed = true\nend\n'
+{ base; printf "$distributed"'subsection Nonlinear solver\n set Linear solver = UMFPACK\nend\n'; } > distributed_umfpack.prm
+expect "a distributed mesh with UMFPACK" "entry 'Linear solver' = 'UMFPACK': a distributed mesh ('Finite element / Distributed = true') is factorized by MUMPS" distributed_umfpack.prm
+{ base; printf "$distributed"'subsection Rod strains\n set Mode = prescribed strains\n set Free strains = nu3\nend\nsubsection Constitutive table\n set Enabled = true\nend\n'; } > distributed_table.prm
+expect "a distributed mesh with a constitutive table" "entry 'Distributed' = 'true': a constitutive table spreads its points over the MPI ranks" distributed_table.prm
+{ base; printf "$distributed"'subsection Parameter sweep\n set Entry = Material 1/Growth factor\n set Values = 1, 1.1\nend\n'; } > distributed_sweep.prm
+expect "a distributed mesh with a parameter study" "entry 'Distributed' = 'true': a parameter study spreads its values over the MPI ranks" distributed_sweep.prm
 exit $fail

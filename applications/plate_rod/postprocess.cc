@@ -276,9 +276,7 @@ namespace cosmo
       w.put(output_index);
       plate_series->save(w);
       rim_series->save(w);
-      // The DoFs of a distributed mesh are numbered by the ranks' parts: its
-      // state means something only on as many ranks (0: a serial mesh).
-      w.put(distributed_mesh ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 0u);
+      io::ranks::put_mesh_ranks(w, distributed_mesh);
 
     }
 
@@ -305,22 +303,7 @@ namespace cosmo
       output_index = r.get_unsigned();
       plate_series->load(r);
       rim_series->load(r);
-      // (checkpoints written before distributed meshes end here: a serial mesh)
-      const unsigned int mesh_ranks = r.at_end() ? 0u : r.get_unsigned();
-      const unsigned int now_ranks =
-        distributed_mesh ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 0u;
-      if (mesh_ranks != now_ranks)
-        throw io::InputError(
-          "Mesh", "Distributed", distributed_mesh ? "true" : "false",
-          "the checkpoint was written " +
-            (mesh_ranks == 0 ? std::string("on a serial mesh") :
-                               "on a mesh distributed over " + std::to_string(mesh_ranks) + " ranks") +
-            ", whose DoF numbering this run's " +
-            (now_ranks == 0 ? std::string("serial mesh") :
-                              "mesh over " + std::to_string(now_ranks) + " ranks") +
-            " does not share: resume it " +
-            (mesh_ranks == 0 ? std::string("with Distributed = false") :
-                               "with mpirun -np " + std::to_string(mesh_ranks)));
+      io::ranks::check_mesh_ranks(r, distributed_mesh, "Mesh", "Distributed");
 
       if (!r.at_end())
         throw std::runtime_error("the checkpoint holds more than this run reads");

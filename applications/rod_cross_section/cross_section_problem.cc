@@ -4,6 +4,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -44,6 +45,10 @@ namespace cosmo
     void
     CrossSectionProblem::setup_system()
     {
+      if (distributed_mesh && !distributed_mesh_of_ranks)
+        distributed_mesh_of_ranks =
+          std::make_unique<parallel::distributed::Triangulation<2>>(MPI_COMM_WORLD);
+      Triangulation<2> &triangulation = this->triangulation();
       {
         // 3 displacement fields of degree p: about 3 p^2 unknowns per cell.
         const boost::signals2::scoped_connection guard(io::guard_refinement(
@@ -77,6 +82,7 @@ namespace cosmo
                             update_values | update_quadrature_points | update_JxW_values);
         std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
         for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
           {
             fev.reinit(cell);
             cell->get_dof_indices(idx);
@@ -103,17 +109,40 @@ namespace cosmo
           }
       }
 
-      DynamicSparsityPattern dsp(n_u());
-      {
-        std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            cell->get_dof_indices(idx);
-            for (const auto i : idx)
-              dsp.add_entries(i, idx.begin(), idx.end());
-          }
-      }
-      setup_bordered_system(dsp, rows, linear_solver_name);
+      if (distributed_mesh)
+        {
+          // Each rank integrated its own cells: the rows summed by their owners.
+          const solvers::ReplicatedVectorLayout owners(MPI_COMM_WORLD, dof_handler.locally_owned_dofs());
+          for (auto &c : rows)
+            owners.sum_parts(c);
+          IndexSet relevant;
+          DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+          setup_distributed_bordered_system(
+            dof_handler.locally_owned_dofs(), relevant,
+            [this](TrilinosWrappers::SparsityPattern &sp) {
+              std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+              for (const auto &cell : dof_handler.active_cell_iterators())
+                if (cell->is_locally_owned())
+                  {
+                    cell->get_dof_indices(idx);
+                    for (const auto i : idx)
+                      sp.add_entries(i, idx.begin(), idx.end());
+                  }
+            },
+            rows, MPI_COMM_WORLD);
+        }
+      else
+        {
+          DynamicSparsityPattern dsp(n_u());
+          std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(idx);
+              for (const auto i : idx)
+                dsp.add_entries(i, idx.begin(), idx.end());
+            }
+          setup_bordered_system(dsp, rows, linear_solver_name);
+        }
       report = [this](const std::string &line) { say(line); };
 
       // Growth is ramped as 1 + t (g - 1), a convex combination: det Fg > 0
@@ -150,8 +179,10 @@ namespace cosmo
       };
       const QGauss<2> quadrature(degree + 1);
       FEValues<2>     fev(*mapping, *fe, quadrature, update_quadrature_points);
-      growth_at_qp.resize(triangulation.n_active_cells() * quadrature.size());
+      growth_at_qp.resize(triangulation().n_active_cells() * quadrature.size());
+      // (on a distributed mesh: this rank's cells; assemble() decides together)
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           fev.reinit(cell);
           const auto &material = materials.material(cell->material_id());
@@ -211,6 +242,7 @@ namespace cosmo
           geometry::BoundarySelection selection;
           selection.parse(layer.boundary_parts, layer.section, "Boundary parts", geometry);
           for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary() && selection.contains(cell->face(f)))
                 {
@@ -219,6 +251,13 @@ namespace cosmo
                   for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                     surface_length[l] += ffv.JxW(q);
                 }
+        }
+      // (a distributed mesh: each rank's faces, their lengths summed)
+      if (distributed_mesh)
+        solvers::sum_on_all_ranks(surface_length, MPI_COMM_WORLD);
+      for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
+        {
+          const auto &layer = surface_layers.layers()[l];
           if (surface_length[l] == 0)
             throw io::InputError(layer.section, "Boundary parts", layer.boundary_parts,
                                  "selects no boundary face of this section");
@@ -493,8 +532,11 @@ namespace cosmo
           resultants[k] += c.resultants[k];
         add_local_contribution(c.idx, c.r, c.K, c.B, &c.E, R, jacobian, E);
       };
-      WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
-                      AssemblyScratch(*mapping, *fe, quadrature), CellContribution(dpc));
+      // This rank's cells (all of them on one process).
+      WorkStream::run(filter_iterators(dof_handler.active_cell_iterators(),
+                                       IteratorFilters::LocallyOwnedCell()),
+                      worker, copier, AssemblyScratch(*mapping, *fe, quadrature),
+                      CellContribution(dpc));
       if (!admissible)
         return false;
       results.energy        = energy;
@@ -684,7 +726,10 @@ namespace cosmo
     bool
     CrossSectionProblem::first_step_guess(const double t, Vector<double> &U)
     {
-      if (coarse_start_levels == 0 || geometry.refinements == 0 || parameters_text.empty())
+      // (not on a distributed mesh: the interpolation between two meshes needs their cells on
+      // the same ranks, which p4est's partitions of two refinements do not give)
+      if (coarse_start_levels == 0 || geometry.refinements == 0 || parameters_text.empty() ||
+          distributed_mesh)
         return false;
       io::PhaseTimer::Scope scope(timer, "coarse-mesh start");
       // A copy of this problem on the section refined once less, from the run's own parameters.
@@ -712,7 +757,7 @@ namespace cosmo
       // (interpolate_to_different_mesh asserts it, to the last bit). A section meshed anew per
       // refinement is not nested; nor is one shifted to its centroid, whose discrete centroid
       // moves with the refinement.
-      const bool nested = GridTools::have_same_coarse_mesh(coarse.triangulation, triangulation);
+      const bool nested = GridTools::have_same_coarse_mesh(coarse.triangulation(), triangulation());
       if (!nested)
         {
           say("  coarse-mesh start: the section refined once less has other coarse cells (a "
@@ -775,7 +820,7 @@ namespace cosmo
       // The small-strain moduli of each region's law, from its tangent at F = I
       // (isotropic: C_1212 = mu, C_1122 = lambda), so that any registered law works.
       std::map<types::material_id, analysis::RegionModuli> moduli;
-      for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &cell : triangulation().active_cell_iterators())
         if (moduli.count(cell->material_id()) == 0)
           {
             materials::EnergyDerivatives d;
@@ -787,7 +832,7 @@ namespace cosmo
             moduli[cell->material_id()] = {mu * (3 * lambda + 2 * mu) / (lambda + mu), mu,
                                            materials.material(cell->material_id()).density};
           }
-      return analysis::linear_section_properties(triangulation, *mapping, degree,
+      return analysis::linear_section_properties(triangulation(), *mapping, degree,
                                                  [&moduli](const types::material_id id) {
                                                    return moduli.at(id);
                                                  });
@@ -808,9 +853,12 @@ namespace cosmo
         setup_system();
       }
       std::ostringstream info;
-      info << "  section: " << geometry.shape << ", " << triangulation.n_active_cells()
+      info << "  section: " << geometry.shape << ", " << triangulation().n_global_active_cells()
            << " cells, Q" << degree << ", " << n_u() << " field DoFs + 6 multipliers + 6 strains; area "
            << section_properties.area;
+      if (distributed_mesh)
+        info << "; the mesh distributed over " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+             << (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ? " rank" : " ranks");
       say(info.str());
       if (!geometry.meshing_summary.empty())
         say("  " + geometry.meshing_summary);
@@ -819,11 +867,18 @@ namespace cosmo
             io::format_significant(geometry.applied_shift[1]) + ") to put its centroid at the origin");
       for (const auto &m : materials.descriptions())
         say("  " + m);
-      {
-        io::PhaseTimer::Scope scope(timer, "section properties");
-        reference_properties = linear_section_properties();
-      }
-      say_reference_properties();
+      if (distributed_mesh)
+        say("  linear section properties (reference): not computed on a distributed mesh "
+            "(their warping problem is solved on one process: run the section with "
+            "Distributed = false, on a coarser mesh if need be)");
+      else
+        {
+          {
+            io::PhaseTimer::Scope scope(timer, "section properties");
+            reference_properties = linear_section_properties();
+          }
+          say_reference_properties();
+        }
       for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
         say("  " + surface_layers.layers()[l].description() + " (arc length " +
             io::format_significant(surface_length[l]) + ")");
@@ -888,12 +943,28 @@ namespace cosmo
     {
       io::ParameterSweep sweep;
       sweep.parse_parameters(prm);
+      prm.enter_subsection("Finite element");
+      const bool distributed = prm.get_bool("Distributed");
+      prm.leave_subsection();
+      if (sweep.enabled() && distributed)
+        throw io::InputError("Finite element", "Distributed", "true",
+                             "a parameter study spreads its values over the MPI ranks, each "
+                             "value on one rank's whole mesh: set Distributed = false, or run "
+                             "the values one by one on a distributed mesh");
       if (!sweep.enabled())
         {
           CrossSectionProblem problem;
           problem.parse_parameters(prm);
-          if (io::ranks::idle(assembly::ConstitutiveTable::enabled_in(prm)))
+          if (problem.mesh_is_distributed() && assembly::ConstitutiveTable::enabled_in(prm))
+            throw io::InputError("Finite element", "Distributed", "true",
+                                 "a constitutive table spreads its points over the MPI ranks, "
+                                 "each on one rank's whole mesh: set Distributed = false");
+          // A distributed mesh: every rank runs the path on its part of the mesh.
+          if (io::ranks::idle(assembly::ConstitutiveTable::enabled_in(prm) ||
+                              problem.mesh_is_distributed()))
             return;
+          if (problem.mesh_is_distributed())
+            io::collective_interrupts(MPI_COMM_WORLD);
           problem.run(options, prm);
           return;
         }

@@ -2,6 +2,7 @@
 #define cosmo_applications_rod_cross_section_problem_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -16,6 +17,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_record.h>
+#include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/materials/material.h>
 #include <cosmo/materials/surface_layer.h>
@@ -86,6 +88,13 @@ namespace cosmo
         return solution;
       }
 
+      /// 'Finite element / Distributed': the mesh divided over the MPI ranks.
+      bool
+      mesh_is_distributed() const
+      {
+        return distributed_mesh;
+      }
+
       const geometry::SectionProperties &
       section() const
       {
@@ -149,8 +158,23 @@ namespace cosmo
       bool                           stiffness_every_step = true;
       assembly::ConstitutiveTable    table;
 
-      // Discretization
-      Triangulation<2>                        triangulation;
+      // Discretization (serial_mesh, or with 'Finite element / Distributed'
+      // distributed_mesh_of_ranks: each rank assembles its own cells, the
+      // bordered system's A is distributed by rows, the drivers' vectors are
+      // whole on every rank; doc/parallel-runs.md)
+      bool                                    distributed_mesh = false;
+      Triangulation<2>                        serial_mesh;
+      std::unique_ptr<parallel::distributed::Triangulation<2>> distributed_mesh_of_ranks;
+      Triangulation<2> &
+      triangulation()
+      {
+        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
+      }
+      const Triangulation<2> &
+      triangulation() const
+      {
+        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
+      }
       std::unique_ptr<FESystem<2>>            fe;
       std::unique_ptr<MappingQ<2>>            mapping;
       DoFHandler<2>                           dof_handler;
@@ -219,11 +243,17 @@ namespace cosmo
 
       void
       write_vtu(unsigned int step, double t);
-      void
-      write_rod_piece(const std::string &file) const;
-      /// surface-NNNN.vtu: the surface layers with their growth and stress.
-      void
-      write_surface_layers(const std::string &file, double t) const;
+      /// The rod piece `name`.vtu (or `name`.pvtu of a distributed mesh's pieces); returns
+      /// the file name written.
+      std::string
+      write_rod_piece(const std::string &name) const;
+      /// surface-NNNN.vtu: the surface layers with their growth and stress (as write_rod_piece).
+      std::string
+      write_surface_layers(const std::string &name, double t) const;
+      /// Write `vtu` as `name`.vtu, or as the pieces of `name`.pvtu on a distributed mesh.
+      template <int dim>
+      std::string
+      write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const;
       void
       write_summary() const;
       /// After the path to t = 1: the constitutive table around that state.

@@ -28,6 +28,17 @@ namespace cosmo
                         "Degree p of the FE_Q(p)^3 displacement of the cross-section "
                         "(and of the isoparametric mapping). p >= 2 for nearly "
                         "incompressible materials.");
+      prm.declare_entry("Distributed", "false", Patterns::Bool(),
+                        "Under mpirun: divide the mesh over the ranks (a "
+                        "parallel::distributed::Triangulation), each rank assembling its own "
+                        "cells and holding its rows of the matrix, factorized by MUMPS with "
+                        "distributed input; VTUs as one .pvtu with a piece per rank. For "
+                        "sections too large for one node. One path only (not a study or a "
+                        "table), MUMPS only, no coarse-mesh start and no reference linear "
+                        "properties (they need the whole mesh); the results agree with one "
+                        "process's to round-off; resume with as many ranks as began the run "
+                        "(doc/parallel-runs.md). false: rank 0 assembles on its node and "
+                        "shares only large factorizations.");
       prm.leave_subsection();
 
       assembly::ReducedRodProblem::declare_strain_parameters(prm);
@@ -84,7 +95,8 @@ namespace cosmo
       surface_layers.parse_parameters(prm);
 
       prm.enter_subsection("Finite element");
-      degree = prm.get_integer("Polynomial degree");
+      degree           = prm.get_integer("Polynomial degree");
+      distributed_mesh = prm.get_bool("Distributed");
       prm.leave_subsection();
 
       parse_strain_parameters(prm);
@@ -92,6 +104,10 @@ namespace cosmo
       newton_settings.parse_parameters(prm);
       prm.enter_subsection("Nonlinear solver");
       linear_solver_name = prm.get("Linear solver");
+      if (distributed_mesh && linear_solver_name != "MUMPS")
+        throw io::InputError("Nonlinear solver", "Linear solver", linear_solver_name,
+                             "a distributed mesh ('Finite element / Distributed = true') is "
+                             "factorized by MUMPS: set MUMPS");
       coarse_start_levels = prm.get_integer("Coarse-mesh start");
       {
         // The whole set, from which first_step_guess() makes the coarser copies.

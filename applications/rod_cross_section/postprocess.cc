@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/section.h>
@@ -120,6 +121,7 @@ namespace cosmo
       w.put(pvd_surface != nullptr);
       if (pvd_surface)
         pvd_surface->save(w);
+      io::ranks::put_mesh_ranks(w, distributed_mesh);
     }
 
     void
@@ -134,6 +136,7 @@ namespace cosmo
         throw std::runtime_error("the checkpoint's output differs from this run's");
       if (pvd_surface)
         pvd_surface->load(r);
+      io::ranks::check_mesh_ranks(r, distributed_mesh, "Finite element", "Distributed");
       if (solution.size() != n_unknowns())
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
       // The state reported last (the summary's, should no step follow).
@@ -204,7 +207,7 @@ namespace cosmo
     void
     CrossSectionProblem::write_vtu(const unsigned int step, const double t)
     {
-      const std::string name = "solution-" + Utilities::int_to_string(step, 4) + ".vtu";
+      const std::string name = "solution-" + Utilities::int_to_string(step, 4);
       {
         Vector<double> u(solution.begin(), solution.begin() + n_u());
         SectionPostprocessor post(materials, strains_of(solution), t);
@@ -255,22 +258,28 @@ namespace cosmo
             vtu.end_patch();
           }
         vtu.set_time(load_parameter);
-        vtu.write(output_directory + "/" + name);
+        pvd->add(t, write_patches(name, vtu));
       }
-      pvd->add(t, name);
-      const std::string rod_name = "rod-" + Utilities::int_to_string(step, 4) + ".vtu";
-      write_rod_piece(output_directory + "/" + rod_name);
-      pvd_rod->add(t, rod_name);
-      if (!surface_faces.empty())
-        {
-          const std::string surface_name = "surface-" + Utilities::int_to_string(step, 4) + ".vtu";
-          write_surface_layers(output_directory + "/" + surface_name, t);
-          pvd_surface->add(t, surface_name);
-        }
+      pvd_rod->add(t, write_rod_piece("rod-" + Utilities::int_to_string(step, 4)));
+      // (a distributed mesh: every rank writes its piece, with or without faces of its own)
+      if (pvd_surface && (!surface_faces.empty() || distributed_mesh))
+        pvd_surface->add(t, write_surface_layers("surface-" + Utilities::int_to_string(step, 4), t));
     }
 
-    void
-    CrossSectionProblem::write_surface_layers(const std::string &file, const double t) const
+    template <int dim>
+    std::string
+    CrossSectionProblem::write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const
+    {
+      // A distributed mesh: every rank's piece and rank 0's .pvtu record in
+      // the run's directory (rank k > 0 runs in a directory of its own).
+      if (distributed_mesh)
+        return vtu.write_pieces(io::ranks::shared_directory() + "/" + name + ".vtu", MPI_COMM_WORLD);
+      vtu.write(output_directory + "/" + name + ".vtu");
+      return name + ".vtu";
+    }
+
+    std::string
+    CrossSectionProblem::write_surface_layers(const std::string &name, const double t) const
     {
       // The layers as polylines on the reference boundary (points (X1, X2, 0),
       // with the displacement to warp by), with their growth and stress.
@@ -316,11 +325,11 @@ namespace cosmo
           vtu.end_patch();
         }
       vtu.set_time(load_parameter);
-      vtu.write(file);
+      return write_patches(name, vtu);
     }
 
-    void
-    CrossSectionProblem::write_rod_piece(const std::string &file) const
+    std::string
+    CrossSectionProblem::write_rod_piece(const std::string &name) const
     {
       // A short piece of the rod in 3D: the deformed section swept along the
       // helix, x(X1, X2, X3) = r(X3) + R(X3) w(X1, X2).
@@ -347,6 +356,7 @@ namespace cosmo
       io::VTUPatches<3>  vtu({{"arc_length", 1}, {"displacement", 3}}, {"region"});
       const unsigned int n_slices = rod_piece_slices;
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           fev.reinit(cell);
           fev.get_function_values(u, u_values);
@@ -376,7 +386,7 @@ namespace cosmo
             }
         }
       vtu.set_time(load_parameter);
-      vtu.write(file);
+      return write_patches(name, vtu);
     }
 
     void
@@ -393,7 +403,9 @@ namespace cosmo
       j["load_parameter"]     = last_state.t;
       JSON &mesh              = j["mesh"];
       mesh["shape"]           = geometry.shape;
-      mesh["cells"]           = triangulation.n_active_cells();
+      mesh["cells"]           = triangulation().n_global_active_cells();
+      if (distributed_mesh)
+        j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       mesh["field_dofs"]      = n_u();
       mesh["degree"]          = degree;
       mesh["area"]            = section_properties.area;
@@ -411,7 +423,8 @@ namespace cosmo
       j["surface_layers"]     = layers;
       add_state_to_summary(j, last_state);
       JSON &props             = j["section_properties"];
-      props["reference_linear"] = reference_properties.to_json();
+      if (!distributed_mesh) // (not computed on a distributed mesh)
+        props["reference_linear"] = reference_properties.to_json();
       props["this_state"]       = analysis::analyse_stiffness(last_state.stiffness).to_json();
       j["min_elastic_J"]              = last_state.min_elastic_J;
       const auto h = kinematics::helix_geometry(kinematics::RodStrains(last_state.strains));

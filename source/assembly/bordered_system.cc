@@ -23,9 +23,48 @@ namespace cosmo
     }
 
     void
+    BorderedSystem::reinit(const TrilinosWrappers::SparsityPattern &sp,
+                           const unsigned int                       n_b,
+                           const solvers::ReplicatedVectorLayout &  layout)
+    {
+      matrix.clear();
+      pattern.reinit(0, 0, 0);
+      distributed_matrix.reinit(sp);
+      inner_layout = layout;
+      if (!distributed_solver)
+        distributed_solver =
+          std::make_unique<solvers::DistributedDirectSolver>(sp.get_mpi_communicator());
+      const unsigned int n = sp.n_rows();
+      border_columns.assign(n_b, Vector<double>(n));
+      sensitivities.assign(n_b, Vector<double>(n));
+      border_block.reinit(n_b, n_b);
+      schur.reinit(n_b, n_b);
+    }
+
+    void
+    BorderedSystem::solve_with_A(Vector<double> &x) const
+    {
+      if (distributed())
+        distributed_solver->solve(x);
+      else
+        direct_solver.solve(x);
+    }
+
+    double
+    BorderedSystem::absolute_quadratic_form(const Vector<double> &v) const
+    {
+      if (distributed())
+        return solvers::absolute_quadratic_form(distributed_matrix, v, inner_layout);
+      return solvers::absolute_quadratic_form(matrix, v);
+    }
+
+    void
     BorderedSystem::clear()
     {
-      matrix = 0;
+      if (distributed())
+        distributed_matrix = 0;
+      else
+        matrix = 0;
       for (auto &b : border_columns)
         b = 0;
       border_block = 0;
@@ -34,9 +73,18 @@ namespace cosmo
     void
     BorderedSystem::factorize()
     {
-      direct_solver.factorize(matrix);
       sensitivities = border_columns;
-      direct_solver.solve(sensitivities);
+      if (distributed())
+        {
+          distributed_solver->factorize(distributed_matrix);
+          for (auto &y : sensitivities)
+            distributed_solver->solve(y);
+        }
+      else
+        {
+          direct_solver.factorize(matrix);
+          direct_solver.solve(sensitivities);
+        }
       const unsigned int nb = n_border();
       // Not symmetrized: S is symmetric in exact arithmetic, and its
       // measured asymmetry is a check of the assembly and the solver.
@@ -52,6 +100,7 @@ namespace cosmo
     {
       const unsigned int ni = n_inner(), nb = n_border();
       AssertDimension(src.size(), ni + nb);
+      AssertThrow(!distributed(), ExcMessage("BorderedSystem::vmult of a distributed A"));
       Vector<double> src_in(ni), dst_in(ni);
       for (unsigned int i = 0; i < ni; ++i)
         src_in[i] = src[i];
@@ -88,7 +137,7 @@ namespace cosmo
       Vector<double> x0(ni);
       for (unsigned int i = 0; i < ni; ++i)
         x0[i] = rhs[i];
-      direct_solver.solve(x0); // A^-1 r_in
+      solve_with_A(x0); // A^-1 r_in
 
       // Prescribed border unknowns move by their right-hand side.
       std::vector<double> d(nb, 0.);
@@ -139,7 +188,8 @@ namespace cosmo
     BorderedSystem::n_negative_eigenvalues(const std::vector<bool> &free,
                                            const unsigned int       n_constraints) const
     {
-      const int neg_A = direct_solver.n_negative_eigenvalues();
+      const int neg_A = distributed() ? distributed_solver->n_negative_eigenvalues() :
+                                        direct_solver.n_negative_eigenvalues();
       if (neg_A < 0)
         return -1;
       std::vector<unsigned int> F;

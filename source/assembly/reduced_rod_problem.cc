@@ -229,6 +229,47 @@ namespace cosmo
       system->reinit(dsp, n_strains);
     }
 
+    void
+    ReducedRodProblem::setup_distributed_bordered_system(
+      const IndexSet &                                                 owned_field,
+      const IndexSet &                                                 relevant_field,
+      const std::function<void(TrilinosWrappers::SparsityPattern &)> &add_field_entries,
+      const std::array<Vector<double>, 6> &                            rows,
+      MPI_Comm                                                         comm)
+    {
+      constraint_rows = rows;
+      n_field         = rows[0].size();
+      const bool last = Utilities::MPI::this_mpi_process(comm) + 1 == Utilities::MPI::n_mpi_processes(comm);
+      IndexSet   owned(n_field + n_gauge), writable(n_field + n_gauge);
+      owned.add_indices(owned_field);
+      writable.add_indices(relevant_field);
+      if (last)
+        {
+          owned.add_range(n_field, n_field + n_gauge);
+          writable.add_range(n_field, n_field + n_gauge);
+        }
+      owned.compress();
+      writable.compress();
+      TrilinosWrappers::SparsityPattern sp;
+      sp.reinit(owned, owned, writable, comm);
+      add_field_entries(sp);
+      // C: its columns on the rows of the DoFs' owners, its rows on the last rank.
+      for (unsigned int k = 0; k < n_gauge; ++k)
+        for (unsigned int i = 0; i < n_field; ++i)
+          if (constraint_rows[k][i] != 0)
+            {
+              if (owned_field.is_element(i))
+                sp.add(i, n_field + k);
+              if (last)
+                sp.add(n_field + k, i);
+            }
+      sp.compress();
+      field_layout = solvers::ReplicatedVectorLayout(comm, owned_field);
+      system       = std::make_unique<BorderedSystem>();
+      system->reinit(sp, n_strains, solvers::ReplicatedVectorLayout(comm, owned));
+      // (the strains' and gauge rows' residuals are computed from whole vectors on every rank)
+    }
+
     int
     ReducedRodProblem::assemble(const Vector<double> &U,
                                 Vector<double> *      R,
@@ -245,11 +286,55 @@ namespace cosmo
           system->clear();
           factorized_at.reinit(0); // the factorization no longer matches the matrix
         }
-      if (assemble_field(U, e, R, jacobian, E, integrals) != 0)
+      int status = assemble_field(U, e, R, jacobian, E, integrals);
+      const unsigned int nf = n_field;
+      if (system && system->distributed())
+        {
+          // Each rank assembled its cells: decide together, then sum the parts.
+          std::vector<double> flag = {double(status)};
+          field_layout.max(flag);
+          status = flag[0] != 0 ? 1 : 0;
+          const bool last = field_layout.is_last_rank();
+          if (jacobian)
+            {
+              // C (A is zeroed: adding sets), on the rows this rank owns.
+              for (unsigned int k = 0; k < n_gauge; ++k)
+                for (unsigned int i = 0; i < nf; ++i)
+                  if (constraint_rows[k][i] != 0)
+                    {
+                      if (field_layout.owns(i))
+                        system->distributed_matrix.add(i, nf + k, constraint_rows[k][i]);
+                      if (last)
+                        system->distributed_matrix.add(nf + k, i, constraint_rows[k][i]);
+                    }
+              system->distributed_matrix.compress(VectorOperation::add);
+            }
+          if (status != 0)
+            return 1;
+          if (R)
+            field_layout.sum_parts(*R);
+          std::vector<double> sums = {integrals.energy};
+          sums.insert(sums.end(), integrals.resultants.begin(), integrals.resultants.end());
+          if (jacobian)
+            {
+              for (auto &b : system->border_columns)
+                field_layout.sum_parts(b);
+              sums.insert(sums.end(), E.begin(), E.end());
+            }
+          field_layout.sum(sums);
+          integrals.energy = sums[0];
+          for (unsigned int k = 0; k < 6; ++k)
+            integrals.resultants[k] = sums[1 + k];
+          if (jacobian)
+            std::copy(sums.begin() + 7, sums.end(), E.begin());
+          std::vector<double> smallest = {-integrals.min_elastic_J};
+          field_layout.max(smallest);
+          integrals.min_elastic_J = -smallest[0];
+        }
+      if (status != 0)
         return 1; // recoverable: Newton's line search or the driver cuts back
 
       // Gauge constraints with their multipliers, and the strain rows.
-      const unsigned int nf = n_field;
       if (R)
         {
           for (unsigned int k = 0; k < n_gauge; ++k)
@@ -274,13 +359,14 @@ namespace cosmo
         }
       if (jacobian)
         {
-          for (unsigned int k = 0; k < n_gauge; ++k)
-            for (unsigned int i = 0; i < nf; ++i)
-              if (constraint_rows[k][i] != 0)
-                {
-                  system->matrix.set(nf + k, i, constraint_rows[k][i]);
-                  system->matrix.set(i, nf + k, constraint_rows[k][i]);
-                }
+          if (!system->distributed())
+            for (unsigned int k = 0; k < n_gauge; ++k)
+              for (unsigned int i = 0; i < nf; ++i)
+                if (constraint_rows[k][i] != 0)
+                  {
+                    system->matrix.set(nf + k, i, constraint_rows[k][i]);
+                    system->matrix.set(i, nf + k, constraint_rows[k][i]);
+                  }
           system->border_block = E;
         }
       if (results)
@@ -303,7 +389,10 @@ namespace cosmo
           (*R)[idx[i]] += r[i];
       if (!jacobian)
         return;
-      system->matrix.add(idx, K);
+      if (system->distributed())
+        system->distributed_matrix.add(idx, K, false);
+      else
+        system->matrix.add(idx, K);
       for (unsigned int i = 0; i < idx.size(); ++i)
         for (unsigned int k = 0; k < n_strains; ++k)
           system->border_columns[k][idx[i]] += B(i, k);
@@ -550,7 +639,7 @@ namespace cosmo
     double
     ReducedRodProblem::jacobian_abs_form(const Vector<double> &v) const
     {
-      return system ? solvers::absolute_quadratic_form(system->matrix, v) : -1.;
+      return system ? system->absolute_quadratic_form(v) : -1.;
     }
 
     void

@@ -8,7 +8,10 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 
+#include <deal.II/distributed/tria_base.h>
+
 #include <cosmo/geometry/cross_section.h>
+#include <cosmo/solvers/replicated_vector.h>
 #include <cosmo/geometry/section_shape.h>
 #include <cosmo/io/parameters.h>
 
@@ -146,7 +149,11 @@ namespace cosmo
       const FE_Nothing<2> fe;
       FEValues<2>        fe_values(mapping, fe, quadrature, update_quadrature_points | update_JxW_values);
       double             mx = 0, my = 0;
+      // A mesh divided over ranks: each rank integrates its own cells, the sums are added on
+      // rank 0 and sent to all (the same bits on every rank: the centroid shifts the mesh).
+      const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<2> *>(&tria);
       for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -161,8 +168,41 @@ namespace cosmo
               p.I12 += x[0] * x[1] * dA;
             }
         }
-      p.centroid = Point<2>(mx / p.area, my / p.area);
-      p.diameter = GridTools::diameter(tria);
+      if (parallel_mesh == nullptr)
+        {
+          p.centroid = Point<2>(mx / p.area, my / p.area);
+          p.diameter = GridTools::diameter(tria);
+          return p;
+        }
+      std::vector<double> sums = {p.area, mx, my, p.I22, p.I11, p.I12};
+      solvers::sum_on_all_ranks(sums, parallel_mesh->get_communicator());
+      p.area     = sums[0];
+      p.I22      = sums[3];
+      p.I11      = sums[4];
+      p.I12      = sums[5];
+      p.centroid = Point<2>(sums[1] / p.area, sums[2] / p.area);
+      // The diameter from the boundary vertices of every rank's cells (the
+      // farthest pair of points of a mesh lies on its boundary).
+      std::vector<double> mine;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                {
+                  mine.push_back(cell->face(f)->vertex(v)[0]);
+                  mine.push_back(cell->face(f)->vertex(v)[1]);
+                }
+      const auto all = Utilities::MPI::all_gather(parallel_mesh->get_communicator(), mine);
+      std::vector<Point<2>> boundary;
+      for (const auto &r : all)
+        for (std::size_t k = 0; k + 1 < r.size(); k += 2)
+          boundary.emplace_back(r[k], r[k + 1]);
+      double d2 = 0;
+      for (std::size_t i = 0; i < boundary.size(); ++i)
+        for (std::size_t j = i + 1; j < boundary.size(); ++j)
+          d2 = std::max(d2, boundary[i].distance_square(boundary[j]));
+      p.diameter = std::sqrt(d2);
       return p;
     }
 

@@ -102,16 +102,25 @@ namespace cosmo
         return NAN;
       std::vector<double>                  sign(dof_handler.n_dofs(), 0.);
       std::vector<types::global_dof_index> idx;
+      const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(
+        &dof_handler.get_triangulation());
+      const IndexSet owned = dof_handler.locally_owned_dofs();
       for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
           idx.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(idx);
           for (unsigned int i = 0; i < idx.size(); ++i)
+            if (owned.is_element(idx[i]))
             {
               const unsigned int c = cell->get_fe().system_to_component_index(i).first;
               sign[idx[i]]         = c < component_signs.size() ? component_signs[c] : 0.;
             }
         }
+      // (a mesh divided over ranks: each DoF's sign from its owner, a sum of one term)
+      if (parallel_mesh != nullptr)
+        MPI_Allreduce(MPI_IN_PLACE, sign.data(), sign.size(), MPI_DOUBLE, MPI_SUM,
+                      parallel_mesh->get_communicator());
       double cross = 0, square = 0;
       for (types::global_dof_index i = 0; i < mirror.size(); ++i)
         if (sign[i] != 0)

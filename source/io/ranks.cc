@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <cosmo/io/parameters.h>
 #include <cosmo/io/ranks.h>
 #include <cosmo/solvers/sparse_direct.h>
 
@@ -205,6 +206,31 @@ namespace cosmo
         MultithreadInfo::set_thread_limit();
         solvers::factorization_ranks::enable();
         return false;
+      }
+
+      void
+      put_mesh_ranks(CheckpointWriter &w, const bool distributed_mesh)
+      {
+        w.put(distributed_mesh ? size() : 0u);
+      }
+
+      void
+      check_mesh_ranks(CheckpointReader &r, const bool distributed_mesh, const std::string &section,
+                       const std::string &entry)
+      {
+        const unsigned int then = r.at_end() ? 0u : r.get_unsigned();
+        const unsigned int now  = distributed_mesh ? size() : 0u;
+        if (then == now)
+          return;
+        auto mesh = [](const unsigned int n) {
+          return n == 0 ? std::string("a serial mesh") :
+                          "a mesh distributed over " + std::to_string(n) + (n == 1 ? " rank" : " ranks");
+        };
+        throw InputError(section, entry, distributed_mesh ? "true" : "false",
+                         "the checkpoint was written on " + mesh(then) + ", whose DoF numbering " +
+                           mesh(now) + " does not share: resume it " +
+                           (then == 0 ? "with " + entry + " = false" :
+                                        "with mpirun -np " + std::to_string(then)));
       }
 
       void

@@ -11,6 +11,7 @@ namespace cosmo
       : comm(c)
     {
       const unsigned int p = Utilities::MPI::n_mpi_processes(comm);
+      rank                 = Utilities::MPI::this_mpi_process(comm);
       if (p == 1)
         return;
       // Each rank's range [first, first + count): contiguous and in rank order, so that an
@@ -45,7 +46,6 @@ namespace cosmo
     {
       if (!distributed())
         return;
-      const int rank = Utilities::MPI::this_mpi_process(comm);
       // Each owner sums its range (MPI_Reduce_scatter), then everyone takes it.
       std::vector<double> mine(counts[rank]);
       MPI_Reduce_scatter(v.data(), mine.data(), counts.data(), MPI_DOUBLE, MPI_SUM, comm);
@@ -72,16 +72,22 @@ namespace cosmo
     }
 
     void
-    ReplicatedVectorLayout::sum(std::vector<double> &x) const
+    sum_on_all_ranks(std::vector<double> &x, MPI_Comm comm)
     {
-      if (!distributed() || x.empty())
+      if (Utilities::MPI::n_mpi_processes(comm) == 1 || x.empty())
         return;
       // Summed on rank 0 and sent from there: the same bits everywhere (an
       // all-reduce need not give every rank the same rounding).
-      const int rank = Utilities::MPI::this_mpi_process(comm);
-      MPI_Reduce(rank == 0 ? MPI_IN_PLACE : x.data(), x.data(), x.size(), MPI_DOUBLE, MPI_SUM, 0,
-                 comm);
+      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+      MPI_Reduce(root ? MPI_IN_PLACE : x.data(), x.data(), x.size(), MPI_DOUBLE, MPI_SUM, 0, comm);
       MPI_Bcast(x.data(), x.size(), MPI_DOUBLE, 0, comm);
+    }
+
+    void
+    ReplicatedVectorLayout::sum(std::vector<double> &x) const
+    {
+      if (distributed())
+        sum_on_all_ranks(x, comm);
     }
 
     void

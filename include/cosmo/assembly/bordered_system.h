@@ -5,9 +5,15 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <cosmo/solvers/distributed_direct.h>
+#include <cosmo/solvers/replicated_vector.h>
 #include <cosmo/solvers/sparse_direct.h>
+
+#include <memory>
 
 #include <vector>
 
@@ -28,6 +34,12 @@
  * prescribed (its row is the identity: the driver changes it, Newton does
  * not), so one factorization serves prescribed strains, natural shapes and
  * mixed problems alike.
+ *
+ * On a mesh distributed over MPI ranks (reinit() with a Trilinos pattern),
+ * A is `distributed_matrix`, each rank holding its rows, and is factorized
+ * by MUMPS with distributed input; B, E, Y and S stay whole on every rank
+ * (the vectors summed by `layout` after assembly), so the border and the
+ * solves below run the same on every rank.
  */
 namespace cosmo
 {
@@ -45,10 +57,27 @@ namespace cosmo
       void
       reinit(const DynamicSparsityPattern &dsp, unsigned int n_border);
 
+      /**
+       * The same for A distributed by rows over the ranks of `layout` (its
+       * rows: `sp`'s, whose row partition `layout` describes); every rank
+       * calls every function of this class.
+       */
+      void
+      reinit(const TrilinosWrappers::SparsityPattern &sp,
+             unsigned int                             n_border,
+             const solvers::ReplicatedVectorLayout &  layout);
+
+      /// A distributed over ranks (the second reinit()).
+      bool
+      distributed() const
+      {
+        return distributed_solver != nullptr;
+      }
+
       unsigned int
       n_inner() const
       {
-        return matrix.m();
+        return distributed() ? distributed_matrix.m() : matrix.m();
       }
       unsigned int
       n_border() const
@@ -66,6 +95,7 @@ namespace cosmo
       clear();
 
       SparseMatrix<double>        matrix;         ///< A
+      TrilinosWrappers::SparseMatrix distributed_matrix; ///< A, distributed by rows
       std::vector<Vector<double>> border_columns; ///< B, one vector per border unknown
       FullMatrix<double>          border_block;   ///< E
 
@@ -80,7 +110,8 @@ namespace cosmo
       /**
        * dst = J src with the assembled blocks (rows of prescribed border
        * unknowns are the identity): the Jacobian as an operator, for
-       * residual checks, predictors and tests of the assembly.
+       * residual checks, predictors and tests of the assembly. (Not of a
+       * distributed A.)
        */
       void
       vmult(Vector<double> &dst, const Vector<double> &src, const std::vector<bool> &free) const;
@@ -102,6 +133,10 @@ namespace cosmo
       int
       n_negative_eigenvalues(const std::vector<bool> &free, unsigned int n_constraints) const;
 
+      /// |v|.|A||v| for the resolution of a located event (v at least of size n_inner()).
+      double
+      absolute_quadratic_form(const Vector<double> &v) const;
+
       const solvers::SparseDirectSolver &
       solver() const
       {
@@ -111,6 +146,10 @@ namespace cosmo
     private:
       SparsityPattern             pattern;
       solvers::SparseDirectSolver direct_solver;
+      std::unique_ptr<solvers::DistributedDirectSolver> distributed_solver;
+      solvers::ReplicatedVectorLayout                  inner_layout;
+      void
+      solve_with_A(Vector<double> &x) const;
       std::vector<Vector<double>> sensitivities;
       FullMatrix<double>          schur;
     };

@@ -12,6 +12,7 @@
 #include <cosmo/solvers/critical_point_study.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 
 /**
@@ -257,6 +258,26 @@ namespace cosmo
       setup_bordered_system(DynamicSparsityPattern &            field_pattern,
                             const std::array<Vector<double>, 6> &rows,
                             const std::string &                  linear_solver);
+
+      /**
+       * The same on a mesh distributed over the ranks of `comm`: this rank
+       * owns the field DoFs `owned_field` (contiguous, in rank order) and
+       * writes rows of `relevant_field`; `add_field_entries` adds E_UU's
+       * entries of the rank's cells. The last rank owns the six gauge rows.
+       * The constraint rows are whole on every rank. Afterwards
+       * assemble_field() adds into system->distributed_matrix and sums
+       * nothing itself: assemble() sums the ranks' parts (field_layout).
+       */
+      void
+      setup_distributed_bordered_system(
+        const IndexSet &                                             owned_field,
+        const IndexSet &                                             relevant_field,
+        const std::function<void(TrilinosWrappers::SparsityPattern &)> &add_field_entries,
+        const std::array<Vector<double>, 6> &                        rows,
+        MPI_Comm                                                     comm);
+
+      /// The field DoFs' owners on a distributed mesh (identity otherwise).
+      solvers::ReplicatedVectorLayout field_layout;
 
       /**
        * Add one cell's (or face's) contributions: the residual r into R (if

@@ -176,6 +176,25 @@ namespace cosmo
                     const std::function<CheckpointReader(const std::string &)> &read);
 
       /**
+       * The end of a checkpoint of a run on a distributed mesh: the number
+       * of ranks its mesh was divided over (0: a serial mesh). The DoFs of a
+       * distributed mesh are numbered by the ranks' parts, so its state means
+       * something only on as many ranks.
+       */
+      void
+      put_mesh_ranks(CheckpointWriter &w, bool distributed_mesh);
+
+      /**
+       * Read put_mesh_ranks()'s number (a checkpoint written before it ends
+       * without: a serial mesh) and throw io::InputError, naming the entry
+       * `section / entry` that makes the mesh distributed, unless this run's
+       * mesh is the same.
+       */
+      void
+      check_mesh_ranks(CheckpointReader &r, bool distributed_mesh, const std::string &section,
+                       const std::string &entry);
+
+      /**
        * One BLAS thread per rank when the ranks share the node's cores
        * (OPENBLAS_NUM_THREADS, if set, is kept): the assembly's threads
        * are divided among the ranks by deal.II already.

@@ -28,6 +28,11 @@ namespace cosmo
   {
     using namespace dealii;
 
+    /// Sums of numbers each rank of `comm` holds a part of, the same on every rank (summed
+    /// on rank 0 and broadcast: an all-reduce need not round alike on every rank).
+    void
+    sum_on_all_ranks(std::vector<double> &x, MPI_Comm comm);
+
     class ReplicatedVectorLayout
     {
     public:
@@ -40,6 +45,21 @@ namespace cosmo
       distributed() const
       {
         return counts.size() > 1;
+      }
+
+      /// This rank owns entry i (every entry, undivided).
+      bool
+      owns(const types::global_dof_index i) const
+      {
+        return !distributed() || (i >= static_cast<types::global_dof_index>(displacements[rank]) &&
+                                  i < static_cast<types::global_dof_index>(displacements[rank] + counts[rank]));
+      }
+
+      /// This rank is the last (or the only) one.
+      bool
+      is_last_rank() const
+      {
+        return !distributed() || rank + 1 == counts.size();
       }
 
       /**
@@ -66,6 +86,7 @@ namespace cosmo
 
     private:
       MPI_Comm         comm = MPI_COMM_SELF;
+      unsigned int     rank = 0;
       std::vector<int> counts, displacements; ///< of each rank's range
     };
   } // namespace solvers

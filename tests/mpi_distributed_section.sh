@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# rod_cross_section on a mesh distributed over the MPI ranks ('Finite
+# element / Distributed', doc/parallel-runs.md "Distributed meshes"): each
+# rank assembles its own cells into its rows of the bordered system's sparse
+# block, MUMPS factorizes it with distributed input, the border (the six
+# strains, the six gauge multipliers: whole on every rank) is condensed on
+# every rank alike. The ranks' partial sums are added in another order than
+# one process's, so the runs agree to round-off, not bitwise. Checked
+# against one process on a serial mesh:
+#  - the natural shape of a growing disc at np = 1 and 2: the strains and the
+#    6x6 stiffness to 1e-10 of their scale (Newton's stopping test, as for one
+#    path on several ranks; measured 5.6e-17 and 3e-16), the same inertia,
+#    the same mesh; the .pvtu records list one piece per rank, all present,
+#    and VTK reads the section and the rod piece with the serial VTUs' cells
+#    and largest |position| and |displacement| (Float32: to 1e-6 of it);
+#  - a section with surface growth whose Hessian has 43 negative
+#    eigenvalues (the exact inertia of MUMPS in parallel) and a gmsh
+#    section (every gmsh cell a coarse cell of the distributed mesh): the
+#    same inertia and stiffness to 1e-10 (measured 7.6e-15, 6.8e-13);
+#  - the twist buckling of a thin strip's section (arclength, stop at the
+#    first event): the same branch point with the same inertia counts, at
+#    the same load to its resolution (5.4e-13; measured 5e-15).
+# usage: mpi_distributed_section.sh <rod_cross_section> <scratch dir>
+set -uo pipefail
+exe=$(realpath "$1") dir=$2
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+examples="$here/../parameter_files/rod_cross_section"
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+fail=0
+bad() { echo "  FAIL  $1"; fail=1; }
+distributed='subsection Finite element\n  set Distributed = true\nend\n'
+
+# name, source, sed script, extra lines (the runs start in the repository: the gmsh files' paths)
+make_prm() { sed -e "s|^\( *set Output directory *=\).*|\1 $dir/$1|" -e "$3" "$2" > $1.prm; printf "$4" >> $1.prm; }
+disc='s|^\( *set Global refinements *=\).*|\1 3|
+s|VTU output = none|VTU output = final|'
+for r in serial np1 np2; do
+  extra=""; [ $r != serial ] && extra="$distributed"
+  make_prm disc_$r "$here/../benchmarks/growing_disc.prm" "$disc" "$extra"
+  make_prm surface_$r "$examples/surface_growth.prm" "" "$extra"
+  make_prm channel_$r "$examples/channel_twist.prm" "" "$extra"
+  python3 - "$examples/studies/critical_twist_vs_axial_growth.prm" twist_$r "$dir" "$extra" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+s = re.sub(r"subsection Parameter sweep.*?\nend\n", "", s, flags=re.S)
+s = re.sub(r"(set Output directory *=).*", r"\1 " + sys.argv[3] + "/" + sys.argv[2], s)
+open(sys.argv[2] + ".prm", "w").write(s + sys.argv[4].replace("\\n", "\n"))
+PY
+done
+run() { # name, ranks (0: one process, no mpirun)
+  if [ $2 -eq 0 ]; then (cd "$here/.." && timeout 300 "$exe" --quiet "$dir/$1.prm") > $1.txt 2>&1
+  else (cd "$here/.." && timeout 300 mpirun -np $2 "$exe" --quiet "$dir/$1.prm") > $1.txt 2>&1; fi ||
+    { bad "$1 failed"; tail -n 5 $1.txt; }
+}
+run disc_serial 0; run disc_np1 1; run disc_np2 2
+for c in surface channel twist; do run ${c}_serial 0; run ${c}_np2 2; done
+
+/usr/bin/python3 - <<'PY' || fail=1
+import json, os, re, sys
+fail = False
+def check(cond, what):
+    global fail
+    print(("  ok    " if cond else "  FAIL  ") + what)
+    fail |= not cond
+def load(d):
+    return json.load(open(f"{d}/summary.json"))
+def same_state(name, a, b, ranks):
+    ka = [x for r in a["stiffness"] for x in r]; kb = [x for r in b["stiffness"] for x in r]
+    dk = max(abs(x - y) for x, y in zip(ka, kb)) / max(abs(x) for x in ka)
+    ds = max(abs(a["strains"][k] - b["strains"][k]) for k in a["strains"])
+    check(b.get("distributed_mesh_ranks") == ranks and a["mesh"]["cells"] == b["mesh"]["cells"] and
+          a["mesh"]["field_dofs"] == b["mesh"]["field_dofs"] and a["status"] == b["status"] == "converged",
+          f"{name}: the mesh over {b.get('distributed_mesh_ranks')} rank(s), {b['mesh']['cells']} cells, {b['mesh']['field_dofs']} field DoFs, converged")
+    check(dk <= 1e-10 and ds <= 1e-10 and a["stability"] == b["stability"],
+          f"{name}: stiffness the same to {dk:.1e} of its scale, strains to {ds:.1e} (<= 1e-10), inertia {b['stability']['n_negative_eigenvalues']} on both")
+serial = load("disc_serial")
+same_state("growing disc, 1 rank", serial, load("disc_np1"), 1)
+same_state("growing disc, 2 ranks", serial, load("disc_np2"), 2)
+same_state("surface growth, 2 ranks", load("surface_serial"), load("surface_np2"), 2)
+same_state("gmsh channel, 2 ranks", load("channel_serial"), load("channel_np2"), 2)
+a, b = load("twist_serial"), load("twist_np2")
+check(len(a["events"]) == len(b["events"]) == 1, f"twist: {len(a['events'])} and {len(b['events'])} events")
+for x, y in zip(a["events"], b["events"]):
+    res = max(x["location"]["resolution"], y["location"]["resolution"])
+    check((x["kind"], x["n_negative_before"], x["n_negative_after"]) == (y["kind"], y["n_negative_before"], y["n_negative_after"]) and abs(x["t"] - y["t"]) <= res,
+          f"twist: {x['kind']} at t = {x['t']:.13g} and {y['t']:.13g}, |difference| {abs(x['t'] - y['t']):.1e} <= resolution {res:.1e}, inertia {x['n_negative_before']} -> {x['n_negative_after']} on both")
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+import numpy as np
+def read(path, field):
+    r = vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(path); r.Update()
+    g = r.GetOutput()
+    return g.GetNumberOfCells(), np.abs(vtk_to_numpy(g.GetPointData().GetArray(field))).max()
+# (the section's displacement of a natural shape is zero to round-off: its deformed position)
+for stem, field in (("solution-0001", "position"), ("rod-0001", "displacement")):
+    text = open(f"disc_np2/{stem}.pvtu").read()
+    pieces = re.findall(r'Source="([^"]+)"', text)
+    check(sorted(pieces) == [f"{stem}.0000.vtu", f"{stem}.0001.vtu"] and all(os.path.isfile(f"disc_np2/{p}") for p in pieces),
+          f"{stem}.pvtu: the pieces of both ranks, present")
+    c1, u1 = read(f"disc_serial/{stem}.vtu", field); c2, u2 = read(f"disc_np2/{stem}.pvtu", field)
+    check(c1 == c2 and abs(u1 - u2) <= 1e-6 * u1, f"{stem}.pvtu: {c2} cells as the serial VTU's {c1}, largest |{field}| {u2:.7g} against {u1:.7g}")
+check("solution-0001.pvtu" in open("disc_np2/solution.pvd").read(), "solution.pvd names the .pvtu record")
+sys.exit(fail)
+PY
+exit $fail
