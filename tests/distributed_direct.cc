@@ -82,6 +82,26 @@ main(int argc, char **argv)
         std::cout << (ok ? "  ok    " : "  FAIL  ") << size << " rank(s), sigma = " << sigma
                   << ": negative eigenvalues " << solver.n_negative_eigenvalues() << " (closed form "
                   << expected << "), backward error " << backward << " (tolerance 1e-13)\n";
+      // Several right-hand sides in one solve (the bordered system's border):
+      // b and 2 b, whose solutions are x* and 2 x*, each to the same backward error.
+      std::vector<Vector<double>> xs(2, b);
+      xs[1] *= 2.;
+      solver.solve(xs);
+      double worst = 0;
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          Vector<double> rk(n), bk = b;
+          bk *= double(k + 1);
+          apply(xs[k], rk);
+          rk -= bk;
+          worst = std::max(worst, rk.linfty_norm() / ((std::abs(2 - sigma) + 2) * xs[k].linfty_norm()));
+        }
+      const bool several = worst <= 1e-13;
+      fail |= !several;
+      if (rank == 0)
+        std::cout << (several ? "  ok    " : "  FAIL  ") << size << " rank(s), sigma = " << sigma
+                  << ": two right-hand sides in one solve, backward error " << worst
+                  << " (tolerance 1e-13)\n";
     }
   {
     parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);

@@ -77,8 +77,7 @@ namespace cosmo
       if (distributed())
         {
           distributed_solver->factorize(distributed_matrix);
-          for (auto &y : sensitivities)
-            distributed_solver->solve(y);
+          distributed_solver->solve(sensitivities);
         }
       else
         {

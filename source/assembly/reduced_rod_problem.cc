@@ -297,16 +297,38 @@ namespace cosmo
           const bool last = field_layout.is_last_rank();
           if (jacobian)
             {
-              // C (A is zeroed: adding sets), on the rows this rank owns.
-              for (unsigned int k = 0; k < n_gauge; ++k)
-                for (unsigned int i = 0; i < nf; ++i)
-                  if (constraint_rows[k][i] != 0)
-                    {
-                      if (field_layout.owns(i))
-                        system->distributed_matrix.add(i, nf + k, constraint_rows[k][i]);
-                      if (last)
-                        system->distributed_matrix.add(nf + k, i, constraint_rows[k][i]);
-                    }
+              // C (A is zeroed: adding sets), on the rows this rank owns, a row
+              // per call (entry by entry took a second per assembly of 250 000
+              // unknowns).
+              std::vector<types::global_dof_index> columns;
+              std::vector<double>                  values;
+              for (types::global_dof_index i = 0; i < nf; ++i)
+                if (field_layout.owns(i))
+                  {
+                    columns.clear();
+                    values.clear();
+                    for (unsigned int k = 0; k < n_gauge; ++k)
+                      if (constraint_rows[k][i] != 0)
+                        {
+                          columns.push_back(nf + k);
+                          values.push_back(constraint_rows[k][i]);
+                        }
+                    if (!columns.empty())
+                      system->distributed_matrix.add(i, columns.size(), columns.data(), values.data());
+                  }
+              if (last)
+                for (unsigned int k = 0; k < n_gauge; ++k)
+                  {
+                    columns.clear();
+                    values.clear();
+                    for (types::global_dof_index i = 0; i < nf; ++i)
+                      if (constraint_rows[k][i] != 0)
+                        {
+                          columns.push_back(i);
+                          values.push_back(constraint_rows[k][i]);
+                        }
+                    system->distributed_matrix.add(nf + k, columns.size(), columns.data(), values.data());
+                  }
               system->distributed_matrix.compress(VectorOperation::add);
             }
           if (status != 0)

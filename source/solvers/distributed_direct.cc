@@ -218,6 +218,38 @@ namespace cosmo
 #endif
     }
 
+    void
+    DistributedDirectSolver::solve(std::vector<Vector<double>> &xs) const
+    {
+#ifdef COSMO_WITH_MUMPS
+      if (xs.empty())
+        return;
+      auto &d  = *data;
+      auto &id = d.id;
+      for (const auto &x : xs)
+        if (x.size() != d.n)
+          throw std::invalid_argument("DistributedDirectSolver::solve: a vector of size " +
+                                      std::to_string(x.size()) + " for a matrix of order " +
+                                      std::to_string(d.n));
+      // The right-hand sides side by side (column-major), centralized on the
+      // host, then every solution to every rank.
+      std::vector<double> all(std::size_t(d.n) * xs.size());
+      for (std::size_t k = 0; k < xs.size(); ++k)
+        std::copy(xs[k].begin(), xs[k].end(), all.begin() + k * d.n);
+      int rank = 0;
+      MPI_Comm_rank(d.comm, &rank);
+      id.nrhs = xs.size();
+      id.lrhs = d.n;
+      id.rhs  = rank == 0 ? all.data() : nullptr;
+      d.call(3);
+      MPI_Bcast(all.data(), all.size(), MPI_DOUBLE, 0, d.comm);
+      for (std::size_t k = 0; k < xs.size(); ++k)
+        std::copy(all.begin() + k * d.n, all.begin() + (k + 1) * d.n, xs[k].begin());
+#else
+      (void)xs;
+#endif
+    }
+
     double
     absolute_quadratic_form(const TrilinosWrappers::SparseMatrix &A,
                             const Vector<double> &                v,

@@ -57,6 +57,10 @@ namespace cosmo
       void
       solve(Vector<double> &rhs_and_solution) const;
 
+      /// The same for several right-hand sides at once (one solve phase of MUMPS).
+      void
+      solve(std::vector<Vector<double>> &rhs_and_solutions) const;
+
       /// Negative eigenvalues of the last matrix factorized (the same on every rank).
       int
       n_negative_eigenvalues() const
