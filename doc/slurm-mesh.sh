@@ -1,7 +1,8 @@
 #!/bin/bash
-# One plate too large for one node, on a mesh distributed over the ranks
-# (doc/parallel-runs.md, "Distributed meshes"; the parameter file sets
-# 'Mesh / Distributed = true'): one rank per core, each assembling its own
+# One plate or section too large for one node, on a mesh distributed over
+# the ranks (doc/parallel-runs.md, "Distributed meshes"; the parameter file
+# sets 'Distributed = true', in 'Mesh' of plate_rod or 'Finite element' of
+# rod_cross_section): one rank per core, each assembling its own
 # cells and holding its rows and its share of MUMPS's factors. Memory per
 # rank: its share of the factors plus the whole vectors of the drivers
 # (doc/parallel-runs.md, the cost of distributed meshes; summary.json
@@ -12,7 +13,7 @@
 # (Written for SLURM with Open MPI; not run on a cluster here: tests/slurm_scripts.sh
 # runs it under a stand-in srun.)
 #
-# usage: sbatch doc/slurm-mesh.sh FILE.prm
+# usage: sbatch doc/slurm-mesh.sh FILE.prm [application = plate_rod]
 #SBATCH --job-name=cosmo-mesh
 #SBATCH --nodes=4
 #SBATCH --ntasks-per-node=32
@@ -22,13 +23,13 @@
 #SBATCH --signal=TERM@120
 #SBATCH --output=cosmo-%j.out
 set -euo pipefail
-prm=$1
-exe=${COSMO_BUILD:-build}/plate_rod
+prm=$1 app=${2:-plate_rod}
+exe=${COSMO_BUILD:-build}/$app
 # One core per rank: one assembly thread and one BLAS thread each.
 export DEAL_II_NUM_THREADS=$SLURM_CPUS_PER_TASK OPENBLAS_NUM_THREADS=$SLURM_CPUS_PER_TASK
 values=$("$exe" --print-parameters prm "$prm")
 if ! echo "$values" | grep -Eq '^ *set Distributed *= *true'; then
-  echo "$prm: set 'Mesh / Distributed = true' for a distributed mesh (or use doc/slurm-path.sh)" >&2
+  echo "$prm: set 'Distributed = true' ('Mesh' of plate_rod, 'Finite element' of rod_cross_section) for a distributed mesh (or use doc/slurm-path.sh)" >&2
   exit 1
 fi
 out=$(echo "$values" | sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p' | head -1)

@@ -60,7 +60,7 @@ run dome_serial 0; run dome_np1 1; run dome_np2 2; run lobes_serial 0; run lobes
 
 # Stopped after its first checkpoint (the ranks stopped, sent SIGTERM, continued: each takes
 # it whenever it is, and they stop together), then resumed.
-mpirun -np 2 "$plate" --quiet stopped.prm > stopped-0.txt 2>&1 & pid=$!
+timeout 300 mpirun -np 2 "$plate" --quiet stopped.prm > stopped-0.txt 2>&1 & pid=$!
 for _ in $(seq 1 30000); do [ -f stopped/checkpoint.cosmo ] && break; sleep 0.01; done
 launcher=$(pgrep -f "^mpirun -np 2 $plate --quiet stopped.prm" | head -1)
 pkill -STOP -P "$launcher"; pkill -TERM -P "$launcher"; pkill -CONT -P "$launcher"

@@ -3,8 +3,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/base/work_stream.h>
-#include <deal.II/distributed/grid_refinement.h>
-#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -943,6 +941,12 @@ namespace cosmo
     {
       write_output = true;
       record.open(output_directory, prm, options);
+      if (distributed_mesh)
+        {
+          // Every rank takes every step: a failure of one rank alone ends all.
+          record.set_lockstep(&solvers::is_driver_failure);
+          io::ranks::check_checkpoints_agree(record.has_checkpoint() ? 1 : 0, "whether there is one");
+        }
       plate_series = std::make_unique<io::PathCollections>(output_directory, "plate");
       rim_series   = std::make_unique<io::PathCollections>(output_directory, "rim");
       setup_system();

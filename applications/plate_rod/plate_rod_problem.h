@@ -426,10 +426,6 @@ namespace cosmo
       /// The same for the rim rod.
       std::string
       write_rim(const std::string &name, const Vector<double> &U) const;
-      /// Write `vtu` as write_plate() says (an io::VTUPatches of the plate or the rim).
-      template <int dim>
-      std::string
-      write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const;
     };
 
     void

@@ -304,6 +304,8 @@ namespace cosmo
       plate_series->load(r);
       rim_series->load(r);
       io::ranks::check_mesh_ranks(r, distributed_mesh, "Mesh", "Distributed");
+      if (distributed_mesh)
+        io::ranks::check_checkpoints_agree(states.size(), "their last step");
 
       if (!r.at_end())
         throw std::runtime_error("the checkpoint holds more than this run reads");
@@ -347,18 +349,6 @@ namespace cosmo
             V.add(0.1 * radius / m, *mode);
           write_plate("event-" + tag + "-mode", V);
         }
-    }
-
-    template <int dim>
-    std::string
-    PlateRodProblem::write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const
-    {
-      // A distributed mesh: every rank's piece and rank 0's .pvtu record in
-      // the run's directory (rank k > 0 runs in a directory of its own).
-      if (distributed_mesh)
-        return vtu.write_pieces(io::ranks::shared_directory() + "/" + name + ".vtu", MPI_COMM_WORLD);
-      vtu.write(output_directory + "/" + name + ".vtu");
-      return name + ".vtu";
     }
 
     std::string
@@ -445,7 +435,7 @@ namespace cosmo
               });
         }
       vtu.set_time(load_parameter);
-      return write_patches(name, vtu);
+      return vtu.write_output(output_directory, name, distributed_mesh);
     }
 
     std::string
@@ -544,7 +534,7 @@ namespace cosmo
                   });
             }
       vtu.set_time(load_parameter);
-      return write_patches(name, vtu);
+      return vtu.write_output(output_directory, name, distributed_mesh);
     }
 
     io::JSON

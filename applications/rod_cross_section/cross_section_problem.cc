@@ -844,6 +844,12 @@ namespace cosmo
     {
       write_output   = true;
       record.open(output_directory, prm, options);
+      if (distributed_mesh)
+        {
+          // Every rank takes every step: a failure of one rank alone ends all.
+          record.set_lockstep(&solvers::is_driver_failure);
+          io::ranks::check_checkpoints_agree(record.has_checkpoint() ? 1 : 0, "whether there is one");
+        }
       pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
       pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
       if (!surface_faces.empty() || !surface_layers.layers().empty())

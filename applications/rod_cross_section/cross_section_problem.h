@@ -250,10 +250,6 @@ namespace cosmo
       /// surface-NNNN.vtu: the surface layers with their growth and stress (as write_rod_piece).
       std::string
       write_surface_layers(const std::string &name, double t) const;
-      /// Write `vtu` as `name`.vtu, or as the pieces of `name`.pvtu on a distributed mesh.
-      template <int dim>
-      std::string
-      write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const;
       void
       write_summary() const;
       /// After the path to t = 1: the constitutive table around that state.

@@ -137,6 +137,8 @@ namespace cosmo
       if (pvd_surface)
         pvd_surface->load(r);
       io::ranks::check_mesh_ranks(r, distributed_mesh, "Finite element", "Distributed");
+      if (distributed_mesh)
+        io::ranks::check_checkpoints_agree(visited.size(), "their last step");
       if (solution.size() != n_unknowns())
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
       // The state reported last (the summary's, should no step follow).
@@ -258,24 +260,12 @@ namespace cosmo
             vtu.end_patch();
           }
         vtu.set_time(load_parameter);
-        pvd->add(t, write_patches(name, vtu));
+        pvd->add(t, vtu.write_output(output_directory, name, distributed_mesh));
       }
       pvd_rod->add(t, write_rod_piece("rod-" + Utilities::int_to_string(step, 4)));
       // (a distributed mesh: every rank writes its piece, with or without faces of its own)
       if (pvd_surface && (!surface_faces.empty() || distributed_mesh))
         pvd_surface->add(t, write_surface_layers("surface-" + Utilities::int_to_string(step, 4), t));
-    }
-
-    template <int dim>
-    std::string
-    CrossSectionProblem::write_patches(const std::string &name, const io::VTUPatches<dim> &vtu) const
-    {
-      // A distributed mesh: every rank's piece and rank 0's .pvtu record in
-      // the run's directory (rank k > 0 runs in a directory of its own).
-      if (distributed_mesh)
-        return vtu.write_pieces(io::ranks::shared_directory() + "/" + name + ".vtu", MPI_COMM_WORLD);
-      vtu.write(output_directory + "/" + name + ".vtu");
-      return name + ".vtu";
     }
 
     std::string
@@ -325,7 +315,7 @@ namespace cosmo
           vtu.end_patch();
         }
       vtu.set_time(load_parameter);
-      return write_patches(name, vtu);
+      return vtu.write_output(output_directory, name, distributed_mesh);
     }
 
     std::string
@@ -386,7 +376,7 @@ namespace cosmo
             }
         }
       vtu.set_time(load_parameter);
-      return write_patches(name, vtu);
+      return vtu.write_output(output_directory, name, distributed_mesh);
     }
 
     void

@@ -215,6 +215,19 @@ namespace cosmo
       }
 
       void
+      check_checkpoints_agree(const std::uint64_t value, const std::string &what)
+      {
+        unsigned long long v[2] = {value, ~static_cast<unsigned long long>(value)};
+        MPI_Allreduce(MPI_IN_PLACE, v, 2, MPI_UNSIGNED_LONG_LONG, MPI_MAX, MPI_COMM_WORLD);
+        if (v[0] != ~v[1])
+          throw InputError("Output", "Output directory", shared_directory(),
+                           "the ranks' checkpoints differ in " + what +
+                             " (a run killed while its ranks wrote them, or resumed on more "
+                             "ranks than it began on): resume with as many ranks, or start the "
+                             "run again without --resume");
+      }
+
+      void
       check_mesh_ranks(CheckpointReader &r, const bool distributed_mesh, const std::string &section,
                        const std::string &entry)
       {

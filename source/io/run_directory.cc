@@ -125,15 +125,18 @@ namespace cosmo
       sigaction(SIGTERM, &a, nullptr);
     }
 
-    int
-    pending_signal()
-    {
-      return received;
-    }
-
     namespace
     {
       MPI_Comm interrupt_comm = MPI_COMM_NULL;
+    }
+
+    int
+    pending_signal()
+    {
+      // (with collective interrupts only check_interrupt() acts on a signal,
+      // on all ranks together: a rank that stopped a solve alone would leave
+      // the others in its residual's collective calls)
+      return interrupt_comm != MPI_COMM_NULL ? 0 : received;
     }
 
     void

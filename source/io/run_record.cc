@@ -124,6 +124,8 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
+          if (lockstep_failure && !lockstep_failure(e))
+            throw;
           // Not bad input: the run could not reach its target. Still leave a
           // summary of what was done.
           fail(e.what());

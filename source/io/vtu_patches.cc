@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <cosmo/io/output.h>
+#include <cosmo/io/ranks.h>
 #include <cosmo/io/vtu_patches.h>
 
 #include <cmath>
@@ -175,6 +176,18 @@ namespace cosmo
           write_file_atomically(path + ".pvtu", [&](std::ostream &out) { out << text; });
         }
       return stem + ".pvtu";
+    }
+
+    template <int dim>
+    std::string
+    VTUPatches<dim>::write_output(const std::string &directory,
+                                  const std::string &name,
+                                  const bool         distributed_mesh) const
+    {
+      if (distributed_mesh)
+        return write_pieces(ranks::shared_directory() + "/" + name + ".vtu", MPI_COMM_WORLD);
+      write(directory + "/" + name + ".vtu");
+      return name + ".vtu";
     }
 
     template class VTUPatches<1>;

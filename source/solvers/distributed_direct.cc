@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <exception>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -93,7 +94,8 @@ namespace cosmo
       id.icntl[27] = 1;
       id.icntl[6]  = 6;
       if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
-        id.icntl[6] = std::atoi(o);
+        if (std::atoi(o) >= 0 && std::atoi(o) <= 7) // (100, the border-last ordering: serial only)
+          id.icntl[6] = std::atoi(o);
 #else
       (void)comm;
       throw std::runtime_error("DistributedDirectSolver needs MUMPS");
@@ -103,7 +105,10 @@ namespace cosmo
     DistributedDirectSolver::~DistributedDirectSolver()
     {
 #ifdef COSMO_WITH_MUMPS
-      if (data && data->comm != MPI_COMM_NULL)
+      // (not while an exception of this rank alone unwinds: MUMPS's end and
+      // MPI_Comm_free are collective, and the others are elsewhere; the error
+      // ends every rank through MPI_Abort)
+      if (data && data->comm != MPI_COMM_NULL && std::uncaught_exceptions() == 0)
         {
           data->id.job = -2;
           dmumps_c(&data->id);
@@ -134,17 +139,77 @@ namespace cosmo
       if (below)
         throw std::invalid_argument("DistributedDirectSolver::factorize: an entry below the "
                                     "diagonal (give the upper triangle, each pair once)");
-      // A new analysis where the positions changed on any rank.
-      int changed = !d.analysed || n != d.n || irn != d.irn || jcn != d.jcn;
-      MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, d.comm);
+      const bool changed = !d.analysed || n != d.n || irn != d.irn || jcn != d.jcn;
+      if (changed)
+        {
+          d.irn = std::move(irn);
+          d.jcn = std::move(jcn);
+        }
       d.a = values;
+      run_factorization(n, changed);
+#else
+      (void)n, (void)rows, (void)columns, (void)values;
+#endif
+    }
+
+    void
+    DistributedDirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
+    {
+#ifdef COSMO_WITH_MUMPS
+      // The upper triangle of this rank's rows straight into MUMPS's arrays:
+      // the positions are compared with the analysed ones in place and
+      // copied only when they changed (no copy of the matrix beside them).
+      auto &      d       = *data;
+      std::size_t count   = 0;
+      bool        same    = d.analysed && d.n == A.m();
+      for_each_owned_entry(A, [&](const unsigned int row, const unsigned int column, const double) {
+        if (column >= row)
+          {
+            same = same && count < d.irn.size() && d.irn[count] == int(row + 1) &&
+                   d.jcn[count] == int(column + 1);
+            ++count;
+          }
+      });
+      same = same && count == d.irn.size();
+      if (!same)
+        {
+          d.irn.clear();
+          d.jcn.clear();
+          d.irn.reserve(count);
+          d.jcn.reserve(count);
+        }
+      d.a.clear();
+      d.a.reserve(count);
+      for_each_owned_entry(A, [&](const unsigned int row, const unsigned int column, const double v) {
+        if (column >= row) // the upper triangle
+          {
+            if (!same)
+              {
+                d.irn.push_back(row + 1);
+                d.jcn.push_back(column + 1);
+              }
+            d.a.push_back(v);
+          }
+      });
+      run_factorization(A.m(), !same);
+#else
+      (void)A;
+#endif
+    }
+
+    void
+    DistributedDirectSolver::run_factorization(const unsigned int n, const bool positions_changed)
+    {
+#ifdef COSMO_WITH_MUMPS
+      auto &d = *data;
+      // A new analysis where the positions changed on any rank.
+      int changed = positions_changed ? 1 : 0;
+      MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, d.comm);
       auto &id = d.id;
       if (changed)
         {
-          d.irn    = std::move(irn);
-          d.jcn    = std::move(jcn);
-          d.n      = n;
-          id.n     = n;
+          d.n        = n;
+          id.n       = n;
           id.nnz_loc = d.irn.size();
           id.irn_loc = d.irn.data();
           id.jcn_loc = d.jcn.data();
@@ -170,28 +235,8 @@ namespace cosmo
       f.ranks = ranks;
       note_factorization(f);
 #else
-      (void)n, (void)rows, (void)columns, (void)values;
+      (void)n, (void)positions_changed;
 #endif
-    }
-
-    void
-    DistributedDirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
-    {
-      std::vector<unsigned int> rows, columns;
-      std::vector<double>       values;
-      const int                 entries = A.trilinos_matrix().NumMyNonzeros();
-      rows.reserve(entries / 2 + A.local_size());
-      columns.reserve(rows.capacity());
-      values.reserve(rows.capacity());
-      for_each_owned_entry(A, [&](const unsigned int row, const unsigned int column, const double v) {
-        if (column >= row) // the upper triangle
-          {
-            rows.push_back(row);
-            columns.push_back(column);
-            values.push_back(v);
-          }
-      });
-      factorize(A.m(), rows, columns, values);
     }
 
     void

@@ -1,5 +1,6 @@
 #include <deal.II/sundials/kinsol.h>
 
+#include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/newton.h>
 
@@ -13,6 +14,13 @@ namespace cosmo
 {
   namespace solvers
   {
+    bool
+    is_driver_failure(const std::exception &e)
+    {
+      return dynamic_cast<const NewtonFailure *>(&e) != nullptr ||
+             dynamic_cast<const io::RunFailure *>(&e) != nullptr;
+    }
+
     void
     NewtonSettings::declare_parameters(ParameterHandler &prm)
     {

@@ -6,6 +6,7 @@
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/io/output.h>
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -183,6 +184,16 @@ namespace cosmo
        */
       void
       put_mesh_ranks(CheckpointWriter &w, bool distributed_mesh);
+
+      /**
+       * On a distributed mesh every rank resumes from its own checkpoint,
+       * which must be of the same step as every other's (a run killed while
+       * the ranks wrote them may leave some a step behind, or without one):
+       * throw io::InputError on all ranks unless `value` (whether there is a
+       * checkpoint, the number of converged steps) is the same on all.
+       */
+      void
+      check_checkpoints_agree(std::uint64_t value, const std::string &what);
 
       /**
        * Read put_mesh_ranks()'s number (a checkpoint written before it ends

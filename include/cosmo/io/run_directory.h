@@ -45,7 +45,8 @@ namespace cosmo
     void
     install_signal_handlers();
 
-    /// The signal received and not yet acted on, 0 if none.
+    /// The signal received and not yet acted on, 0 if none (always 0 once
+    /// collective_interrupts() is set: check_interrupt() decides then).
     int
     pending_signal();
 

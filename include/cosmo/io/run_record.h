@@ -82,6 +82,20 @@ namespace cosmo
       void
       attempt(const std::function<void()> &work);
 
+      /**
+       * The ranks of a run on a distributed mesh take every step together:
+       * a failure that `raised_on_all_ranks` does not recognise (one rank's
+       * write error, say) is not recorded by attempt() but passed on, and so
+       * ends every rank (MPI_Abort), instead of leaving the others waiting
+       * in a collective call. The failures of the drivers, which every rank
+       * meets at the same point, are still recorded (exit 2).
+       */
+      void
+      set_lockstep(const std::function<bool(const std::exception &)> &raised_on_all_ranks)
+      {
+        lockstep_failure = raised_on_all_ranks;
+      }
+
       /// Record a failure found by the caller.
       void
       fail(const std::string &message);
@@ -152,6 +166,7 @@ namespace cosmo
       bool                    resumed = false, has_resume_data = false;
       CheckpointReader        resume_data;
       std::chrono::steady_clock::time_point opened_at = std::chrono::steady_clock::now();
+      std::function<bool(const std::exception &)> lockstep_failure;
     };
   } // namespace io
 } // namespace cosmo

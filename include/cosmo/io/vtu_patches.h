@@ -91,6 +91,16 @@ namespace cosmo
       std::string
       write_pieces(const std::string &file, MPI_Comm comm) const;
 
+      /**
+       * An application's output file `name`: `directory`/`name`.vtu, or on a
+       * mesh distributed over MPI_COMM_WORLD (`distributed_mesh`) the pieces
+       * and record `name`.pvtu in the run's shared directory (rank k > 0 runs
+       * in a directory of its own, io/ranks.h). Returns the file name
+       * written, without its directory (for a .pvd).
+       */
+      std::string
+      write_output(const std::string &directory, const std::string &name, bool distributed_mesh) const;
+
     private:
       std::vector<std::string> names;
       std::vector<std::tuple<unsigned int, unsigned int, std::string,

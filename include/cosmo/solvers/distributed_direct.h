@@ -69,6 +69,9 @@ namespace cosmo
       }
 
     private:
+      /// Analyse (if the positions changed on any rank) and factorize what Data holds.
+      void
+      run_factorization(unsigned int n, bool positions_changed);
       struct Data;
       std::unique_ptr<Data> data;
       int                   n_negative = -1;

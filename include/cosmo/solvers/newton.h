@@ -73,6 +73,11 @@ namespace cosmo
       using std::runtime_error::runtime_error;
     };
 
+    /// A failure of the drivers (NewtonFailure, io::RunFailure): on a distributed mesh
+    /// every rank meets it at the same point (io::RunRecord::set_lockstep).
+    bool
+    is_driver_failure(const std::exception &e);
+
     struct NewtonSettings
     {
       double       relative_tolerance = 1e-10;
