@@ -88,9 +88,10 @@ namespace cosmo
       id.icntl[17] = 3; // distributed assembled input, analysis and factorization
       id.icntl[12] = 1; // no ScaLAPACK on the root front: INFOG(12) is the exact inertia
       id.icntl[13] = 60; // extra workspace (delayed pivots of indefinite matrices)
-      // Sequential ordering on the host, QAMD as SparseDirectSolver's (its
-      // default here, chosen by MUMPS, took 2.4x the factorization time of
-      // the plate's: benchmarks/README.md, "Distributed meshes").
+      // Sequential ordering on the host, QAMD as SparseDirectSolver's: on
+      // one rank the same factorization as one process's (the dome's located
+      // threshold the same to the last bit, benchmarks/README.md
+      // "Distributed meshes").
       id.icntl[27] = 1;
       id.icntl[6]  = 6;
       if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
