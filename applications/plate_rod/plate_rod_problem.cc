@@ -133,11 +133,9 @@ namespace cosmo
     void
     PlateRodProblem::make_mesh()
     {
-      if (distributed_mesh && !distributed_mesh_of_ranks)
-        distributed_mesh_of_ranks =
-          std::make_unique<parallel::distributed::Triangulation<2>>(MPI_COMM_WORLD);
+      this->triangulation.set_distributed(distributed_mesh);
       // The same coarse mesh and refinements on one process and on a distributed mesh.
-      Triangulation<2> &triangulation = this->triangulation();
+      Triangulation<2> &triangulation = this->triangulation.get();
       triangulation.clear();
       const bool sector = domain == "sector";
       if (sector && sector_n == 1)
@@ -328,7 +326,7 @@ namespace cosmo
       solver.set_nonzero_diagonal(true);
       make_mesh();
       fe = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 6);
-      dof_handler.reinit(triangulation());
+      dof_handler.reinit(triangulation.get());
       dof_handler.distribute_dofs(*fe);
       make_constraints();
       if (distributed_mesh)
@@ -954,7 +952,7 @@ namespace cosmo
       info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness
            << " (h/R = " << thickness / radius << "), "
            << (domain == "sector" ? "sector pi/" + std::to_string(sector_n) : std::string("full disc"))
-           << ", " << triangulation().n_global_active_cells() << " cells, Q" << degree << ", "
+           << ", " << triangulation.get().n_global_active_cells() << " cells, Q" << degree << ", "
            << dof_handler.n_dofs() << " DoFs ("
            << std::count(dof_constrained.begin(), dof_constrained.end(), 1) << " constrained)";
       if (distributed_mesh)
@@ -1053,7 +1051,7 @@ namespace cosmo
       j["radius"]    = radius;
       j["thickness"] = thickness;
       j["dofs"]      = dof_handler.n_dofs();
-      j["cells"]     = triangulation().n_global_active_cells();
+      j["cells"]     = triangulation.get().n_global_active_cells();
       if (distributed_mesh)
         j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       j["closed_form"] = closed;
@@ -1108,14 +1106,7 @@ namespace cosmo
     {
       io::ParameterSweep sweep;
       sweep.parse_parameters(prm);
-      prm.enter_subsection("Mesh");
-      const bool distributed = prm.get_bool("Distributed");
-      prm.leave_subsection();
-      if (sweep.enabled() && distributed)
-        throw io::InputError("Mesh", "Distributed", "true",
-                             "a parameter study spreads its values over the MPI ranks, each "
-                             "value on one rank's whole mesh: set Distributed = false, or run "
-                             "the values one by one on a distributed mesh");
+      sweep.refuse_distributed_mesh(prm, "Mesh");
       if (sweep.enabled())
         {
           solvers::CriticalPointStudy study;

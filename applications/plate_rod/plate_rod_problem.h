@@ -3,7 +3,6 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -15,6 +14,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cosmo/analysis/plate_rod_thresholds.h>
+#include <cosmo/geometry/mesh_of_ranks.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_record.h>
@@ -330,22 +330,11 @@ namespace cosmo
       bool                           write_output = false;
       double                         load_parameter = 0;
 
-      // Discretization (the mesh is serial_mesh, or distributed_mesh_of_ranks with
-      // 'Mesh / Distributed': then each rank assembles its own cells into
-      // distributed_matrix, factorized by distributed_solver, and the drivers'
-      // vectors are whole on every rank, kept equal by `layout`)
-      Triangulation<2>             serial_mesh;
-      std::unique_ptr<parallel::distributed::Triangulation<2>> distributed_mesh_of_ranks;
-      Triangulation<2> &
-      triangulation()
-      {
-        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
-      }
-      const Triangulation<2> &
-      triangulation() const
-      {
-        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
-      }
+      // Discretization (with 'Mesh / Distributed' the mesh is divided over the
+      // ranks: each assembles its own cells into distributed_matrix,
+      // factorized by distributed_solver, and the drivers' vectors are whole on
+      // every rank, kept equal by `layout`)
+      geometry::MeshOfRanks<2>     triangulation;
       std::unique_ptr<MappingQ<2>> mapping;
       std::unique_ptr<FESystem<2>> fe;
       DoFHandler<2>                dof_handler;

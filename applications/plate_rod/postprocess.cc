@@ -145,7 +145,7 @@ namespace cosmo
       // Mode numbers up to what the rim resolves: one per rim face over the full circle
       // (beyond, the Fourier amplitudes of the sampled rim alias).
       std::vector<double> faces(1, 0.);
-      for (const auto &cell : triangulation().active_cell_iterators())
+      for (const auto &cell : triangulation.get().active_cell_iterators())
         if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)

@@ -45,10 +45,8 @@ namespace cosmo
     void
     CrossSectionProblem::setup_system()
     {
-      if (distributed_mesh && !distributed_mesh_of_ranks)
-        distributed_mesh_of_ranks =
-          std::make_unique<parallel::distributed::Triangulation<2>>(MPI_COMM_WORLD);
-      Triangulation<2> &triangulation = this->triangulation();
+      this->triangulation.set_distributed(distributed_mesh);
+      Triangulation<2> &triangulation = this->triangulation.get();
       {
         // 3 displacement fields of degree p: about 3 p^2 unknowns per cell.
         const boost::signals2::scoped_connection guard(io::guard_refinement(
@@ -179,7 +177,7 @@ namespace cosmo
       };
       const QGauss<2> quadrature(degree + 1);
       FEValues<2>     fev(*mapping, *fe, quadrature, update_quadrature_points);
-      growth_at_qp.resize(triangulation().n_active_cells() * quadrature.size());
+      growth_at_qp.resize(triangulation.get().n_active_cells() * quadrature.size());
       // (on a distributed mesh: this rank's cells; assemble() decides together)
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -757,7 +755,7 @@ namespace cosmo
       // (interpolate_to_different_mesh asserts it, to the last bit). A section meshed anew per
       // refinement is not nested; nor is one shifted to its centroid, whose discrete centroid
       // moves with the refinement.
-      const bool nested = GridTools::have_same_coarse_mesh(coarse.triangulation(), triangulation());
+      const bool nested = GridTools::have_same_coarse_mesh(coarse.triangulation.get(), triangulation.get());
       if (!nested)
         {
           say("  coarse-mesh start: the section refined once less has other coarse cells (a "
@@ -820,7 +818,7 @@ namespace cosmo
       // The small-strain moduli of each region's law, from its tangent at F = I
       // (isotropic: C_1212 = mu, C_1122 = lambda), so that any registered law works.
       std::map<types::material_id, analysis::RegionModuli> moduli;
-      for (const auto &cell : triangulation().active_cell_iterators())
+      for (const auto &cell : triangulation.get().active_cell_iterators())
         if (moduli.count(cell->material_id()) == 0)
           {
             materials::EnergyDerivatives d;
@@ -832,7 +830,7 @@ namespace cosmo
             moduli[cell->material_id()] = {mu * (3 * lambda + 2 * mu) / (lambda + mu), mu,
                                            materials.material(cell->material_id()).density};
           }
-      return analysis::linear_section_properties(triangulation(), *mapping, degree,
+      return analysis::linear_section_properties(triangulation.get(), *mapping, degree,
                                                  [&moduli](const types::material_id id) {
                                                    return moduli.at(id);
                                                  });
@@ -859,7 +857,7 @@ namespace cosmo
         setup_system();
       }
       std::ostringstream info;
-      info << "  section: " << geometry.shape << ", " << triangulation().n_global_active_cells()
+      info << "  section: " << geometry.shape << ", " << triangulation.get().n_global_active_cells()
            << " cells, Q" << degree << ", " << n_u() << " field DoFs + 6 multipliers + 6 strains; area "
            << section_properties.area;
       if (distributed_mesh)
@@ -949,14 +947,7 @@ namespace cosmo
     {
       io::ParameterSweep sweep;
       sweep.parse_parameters(prm);
-      prm.enter_subsection("Finite element");
-      const bool distributed = prm.get_bool("Distributed");
-      prm.leave_subsection();
-      if (sweep.enabled() && distributed)
-        throw io::InputError("Finite element", "Distributed", "true",
-                             "a parameter study spreads its values over the MPI ranks, each "
-                             "value on one rank's whole mesh: set Distributed = false, or run "
-                             "the values one by one on a distributed mesh");
+      sweep.refuse_distributed_mesh(prm, "Finite element");
       if (!sweep.enabled())
         {
           CrossSectionProblem problem;

@@ -2,7 +2,6 @@
 #define cosmo_applications_rod_cross_section_problem_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -14,6 +13,7 @@
 #include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/geometry/cross_section.h>
+#include <cosmo/geometry/mesh_of_ranks.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_record.h>
@@ -158,23 +158,12 @@ namespace cosmo
       bool                           stiffness_every_step = true;
       assembly::ConstitutiveTable    table;
 
-      // Discretization (serial_mesh, or with 'Finite element / Distributed'
-      // distributed_mesh_of_ranks: each rank assembles its own cells, the
-      // bordered system's A is distributed by rows, the drivers' vectors are
-      // whole on every rank; doc/parallel-runs.md)
+      // Discretization (with 'Finite element / Distributed' the mesh is divided
+      // over the ranks: each assembles its own cells, the bordered system's A
+      // is distributed by rows, the drivers' vectors are whole on every rank;
+      // doc/parallel-runs.md)
       bool                                    distributed_mesh = false;
-      Triangulation<2>                        serial_mesh;
-      std::unique_ptr<parallel::distributed::Triangulation<2>> distributed_mesh_of_ranks;
-      Triangulation<2> &
-      triangulation()
-      {
-        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
-      }
-      const Triangulation<2> &
-      triangulation() const
-      {
-        return distributed_mesh ? *distributed_mesh_of_ranks : serial_mesh;
-      }
+      geometry::MeshOfRanks<2>                triangulation;
       std::unique_ptr<FESystem<2>>            fe;
       std::unique_ptr<MappingQ<2>>            mapping;
       DoFHandler<2>                           dof_handler;

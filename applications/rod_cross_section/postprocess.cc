@@ -393,7 +393,7 @@ namespace cosmo
       j["load_parameter"]     = last_state.t;
       JSON &mesh              = j["mesh"];
       mesh["shape"]           = geometry.shape;
-      mesh["cells"]           = triangulation().n_global_active_cells();
+      mesh["cells"]           = triangulation.get().n_global_active_cells();
       if (distributed_mesh)
         j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       mesh["field_dofs"]      = n_u();

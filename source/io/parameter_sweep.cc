@@ -186,5 +186,17 @@ namespace cosmo
     {
       return directory + "/point-" + Utilities::int_to_string(k, 2);
     }
+    void
+    ParameterSweep::refuse_distributed_mesh(ParameterHandler &prm, const std::string &section) const
+    {
+      prm.enter_subsection(section);
+      const bool distributed = prm.get_bool("Distributed");
+      prm.leave_subsection();
+      if (enabled() && distributed)
+        throw InputError(section, "Distributed", "true",
+                         "a parameter study spreads its values over the MPI ranks, each value "
+                         "on one rank's whole mesh: set Distributed = false, or run the values "
+                         "one by one on a distributed mesh");
+    }
   } // namespace io
 } // namespace cosmo

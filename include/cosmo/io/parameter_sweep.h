@@ -40,6 +40,14 @@ namespace cosmo
       {
         return !entry_path.empty();
       }
+
+      /**
+       * io::InputError if this sweep is enabled and `section / Distributed`
+       * is true: a study spreads its values over the MPI ranks, each value
+       * on one rank's whole mesh, which a mesh divided over the ranks is not.
+       */
+      void
+      refuse_distributed_mesh(ParameterHandler &prm, const std::string &section) const;
       unsigned int
       size() const
       {
