@@ -809,6 +809,10 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
+          // (on a distributed mesh only MUMPS's own failure is every rank's:
+          // anything else ends this rank, and so all)
+          if (distributed_mesh && dynamic_cast<const solvers::FactorizationFailure *>(&e) == nullptr)
+            throw;
           factorized_at.reinit(0);
           say(std::string("  factorization failed: ") + e.what());
           return 1;
@@ -1129,7 +1133,7 @@ namespace cosmo
       // A distributed mesh: every rank runs the path on its part of the mesh.
       if (io::ranks::idle(problem.mesh_is_distributed()))
         return;
-      if (problem.mesh_is_distributed())
+      if (problem.mesh_is_distributed() && io::ranks::size() > 1)
         io::collective_interrupts(MPI_COMM_WORLD);
       problem.run(options, prm);
     }

@@ -960,7 +960,7 @@ namespace cosmo
           if (io::ranks::idle(assembly::ConstitutiveTable::enabled_in(prm) ||
                               problem.mesh_is_distributed()))
             return;
-          if (problem.mesh_is_distributed())
+          if (problem.mesh_is_distributed() && io::ranks::size() > 1)
             io::collective_interrupts(MPI_COMM_WORLD);
           problem.run(options, prm);
           return;

@@ -631,6 +631,11 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
+          // (on a distributed mesh only MUMPS's own failure is every rank's:
+          // anything else ends this rank, and so all)
+          if (system->distributed() &&
+              dynamic_cast<const solvers::FactorizationFailure *>(&e) == nullptr)
+            throw;
           factorized_at.reinit(0);
           if (report)
             report(std::string("  factorization failed: ") + e.what());

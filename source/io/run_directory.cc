@@ -146,6 +146,12 @@ namespace cosmo
         MPI_Comm_dup(comm, &interrupt_comm);
     }
 
+    bool
+    interrupts_are_collective()
+    {
+      return interrupt_comm != MPI_COMM_NULL;
+    }
+
     void
     check_interrupt()
     {

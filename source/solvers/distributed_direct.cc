@@ -64,7 +64,7 @@ namespace cosmo
       check(const int job) const
       {
         if (id.infog[0] < 0)
-          throw std::runtime_error("MUMPS (distributed input) failed in phase " + std::to_string(job) +
+          throw FactorizationFailure("MUMPS (distributed input) failed in phase " + std::to_string(job) +
                                    ": INFOG(1) = " + std::to_string(id.infog[0]) +
                                    ", INFOG(2) = " + std::to_string(id.infog[1]));
       }

@@ -2,6 +2,7 @@
 
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
+#include <cosmo/solvers/distributed_direct.h>
 #include <cosmo/solvers/newton.h>
 
 #include <algorithm>
@@ -18,7 +19,8 @@ namespace cosmo
     is_driver_failure(const std::exception &e)
     {
       return dynamic_cast<const NewtonFailure *>(&e) != nullptr ||
-             dynamic_cast<const io::RunFailure *>(&e) != nullptr;
+             dynamic_cast<const io::RunFailure *>(&e) != nullptr ||
+             dynamic_cast<const FactorizationFailure *>(&e) != nullptr;
     }
 
     void
@@ -245,6 +247,13 @@ namespace cosmo
       catch (std::exception &e)
         {
           U = U0;
+          // Ranks in lockstep (a distributed mesh): an error not every rank
+          // raised (one rank's memory, say) ends this rank, and so all of them
+          // (MPI_Abort), rather than wait in the check below for the others,
+          // which wait in the residual's collective calls.
+          if (io::interrupts_are_collective() && !is_driver_failure(e) &&
+              dynamic_cast<const SUNDIALS::KINSOL<Vector<double>>::ExcKINSOLError *>(&e) == nullptr)
+            throw;
           io::check_interrupt();
           throw NewtonFailure(std::string("KINSOL stopped: ") + e.what());
         }

@@ -64,6 +64,10 @@ namespace cosmo
     void
     collective_interrupts(MPI_Comm comm);
 
+    /// collective_interrupts() was set: the ranks take every step together.
+    bool
+    interrupts_are_collective();
+
     /**
      * Take `directory` (created already) for this process: lock it, move the
      * files of the run that wrote there before into previous/, and start

@@ -8,6 +8,7 @@
 #include <cosmo/solvers/replicated_vector.h>
 
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 /**
@@ -24,6 +25,13 @@ namespace cosmo
   namespace solvers
   {
     using namespace dealii;
+
+    /// A failure MUMPS reports in INFOG(1), the same on every rank (every rank throws it).
+    class FactorizationFailure : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
 
     class DistributedDirectSolver
     {

@@ -73,8 +73,9 @@ namespace cosmo
       using std::runtime_error::runtime_error;
     };
 
-    /// A failure of the drivers (NewtonFailure, io::RunFailure): on a distributed mesh
-    /// every rank meets it at the same point (io::RunRecord::set_lockstep).
+    /// A failure of the drivers (NewtonFailure, io::RunFailure) or of MUMPS
+    /// (FactorizationFailure): on a distributed mesh every rank meets it at
+    /// the same point (io::RunRecord::set_lockstep).
     bool
     is_driver_failure(const std::exception &e);
 
