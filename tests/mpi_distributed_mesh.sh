@@ -103,23 +103,11 @@ if [ $s1 -ne 0 ] && [ -f one_rank/checkpoint.cosmo ]; then
     { bad "resumed after SIGTERM to one rank: exit $?"; tail -n 5 one_rank-1.txt; }
 fi
 
-/usr/bin/python3 - <<'PY' || fail=1
-import csv, json, os, sys, re
-fail = False
-def check(cond, what):
-    global fail
-    print(("  ok    " if cond else "  FAIL  ") + what)
-    fail |= not cond
-def load(d):
-    return json.load(open(f"{d}/summary.json"))
-def same_events(name, a, b):
-    e1, e2 = a["events"], b["events"]
-    check(len(e1) == len(e2) and len(e1) >= 1, f"{name}: {len(e1)} and {len(e2)} events")
-    for x, y in zip(e1, e2):
-        res = max(x["location"]["resolution"], y["location"]["resolution"])
-        same = (x["kind"], x["n_negative_before"], x["n_negative_after"]) == (y["kind"], y["n_negative_before"], y["n_negative_after"])
-        check(same and abs(x["t"] - y["t"]) <= res,
-              f"{name}: {x['kind']} at t = {x['t']:.12g} and {y['t']:.12g}, |difference| {abs(x['t'] - y['t']):.1e} <= resolution {res:.1e}, inertia {x['n_negative_before']} -> {x['n_negative_after']} on both")
+/usr/bin/python3 - "$here" <<'PY' || fail=1
+import csv, os, re, sys
+sys.path.insert(0, sys.argv[1])
+from mpi_checks import check, load, same_events, pieces_present, same_as_serial_vtu
+import mpi_checks
 serial = load("dome_serial")
 for run, ranks in (("dome_np1", 1), ("dome_np2", 2)):
     s = load(run)
@@ -138,29 +126,13 @@ same_events("stopped and resumed on 2 ranks", load("dome_np2"), load("stopped"))
 same_events("SIGTERM to one rank, resumed on 2 ranks", load("dome_np2"), load("one_rank"))
 
 # The .pvtu records and their pieces.
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
-import numpy as np
-def read(path):
-    r = vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(path); r.Update()
-    g = r.GetOutput()
-    u = vtk_to_numpy(g.GetPointData().GetArray("displacement"))
-    return g.GetNumberOfCells(), np.abs(u).max()
-records = sorted(f for f in os.listdir("dome_np2") if re.fullmatch(r"plate-\d{4}\.pvtu", f))
-pieces_ok = all(
-    sorted(re.findall(r'Source="([^"]+)"', open(f"dome_np2/{f}").read())) == [f[:-5] + ".0000.vtu", f[:-5] + ".0001.vtu"] and
-    all(os.path.isfile(f"dome_np2/{p}") for p in re.findall(r'Source="([^"]+)"', open(f"dome_np2/{f}").read()))
-    for f in records)
-check(len(records) == len(list(csv.DictReader(open("dome_np2/steps.csv")))) and pieces_ok,
+records = sorted(f[:-5] for f in os.listdir("dome_np2") if re.fullmatch(r"plate-\d{4}\.pvtu", f))
+check(len(records) == len(list(csv.DictReader(open("dome_np2/steps.csv")))) and
+      all(pieces_present("dome_np2", r, 2) for r in records),
       f"{len(records)} plate-K.pvtu records, one per step, each with its 2 pieces present")
 pvd = open("dome_np2/plate.pvd").read()
-check(all(f in pvd for f in records), "plate.pvd names the .pvtu records")
-last = records[-1][:-5]
-c1, u1 = read(f"dome_serial/{last}.vtu")
-c2, u2 = read(f"dome_np2/{last}.pvtu")
-check(c1 == c2 and abs(u1 - u2) <= 1e-6 * u1,
-      f"{last}.pvtu: {c2} cells as the serial VTU's {c1}, largest |displacement| {u2:.7g} against {u1:.7g}")
-sys.exit(fail)
+check(all(r + ".pvtu" in pvd for r in records), "plate.pvd names the .pvtu records")
+same_as_serial_vtu("dome_serial", "dome_np2", records[-1], "displacement")
+sys.exit(mpi_checks.failures > 0)
 PY
 exit $fail

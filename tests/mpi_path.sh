@@ -42,36 +42,24 @@ for app in "$plate dome" "$section disc"; do
   timeout 300 "$exe" --quiet ${name}_one.prm > ${name}_one.txt 2>&1 || { bad "$name: one process failed"; cat ${name}_one.txt; }
   timeout 300 mpirun -np 2 "$exe" --quiet ${name}_two.prm > ${name}_two.txt 2>&1 || { bad "$name: mpirun -np 2 failed"; cat ${name}_two.txt; }
 done
-/usr/bin/python3 - <<'PY' || fail=1
-import csv, json, sys
-fail = False
-def check(cond, what):
-    global fail
-    print(("  ok    " if cond else "  FAIL  ") + what)
-    fail |= not cond
-one, two = (json.load(open(f"dome_{r}/summary.json")) for r in ("one", "two"))
+/usr/bin/python3 - "$here" <<'PY' || fail=1
+import csv, sys
+sys.path.insert(0, sys.argv[1])
+from mpi_checks import check, load, same_events, same_section_state
+import mpi_checks
+one, two = load("dome_one"), load("dome_two")
 check(two.get("mpi_ranks") == 2 and two.get("mumps_phases_on_all_ranks", 0) > 0,
       f"dome: {two.get('mumps_phases_on_all_ranks')} MUMPS phases on both ranks")
-e1, e2 = one["events"], two["events"]
-check(len(e1) == len(e2) and len(e1) >= 1, f"dome: {len(e1)} and {len(e2)} events")
-for a, b in zip(e1, e2):
-    res = max(a["location"]["resolution"], b["location"]["resolution"])
-    same = (a["kind"], a["n_negative_before"], a["n_negative_after"]) == (b["kind"], b["n_negative_before"], b["n_negative_after"])
-    check(same and abs(a["t"] - b["t"]) <= res,
-          f"dome: {a['kind']} at t = {a['t']:.12g} and {b['t']:.12g}, |difference| {abs(a['t'] - b['t']):.1e} <= resolution {res:.1e}, inertia {a['n_negative_before']} -> {a['n_negative_after']} on both")
+same_events("dome", one, two)
 s1, s2 = (list(csv.DictReader(open(f"dome_{r}/steps.csv"))) for r in ("one", "two"))
 check(len(s1) == len(s2) and all(a["n_negative_eigenvalues"] == b["n_negative_eigenvalues"] and a["branch"] == b["branch"] for a, b in zip(s1, s2)),
       f"dome: {len(s1)} and {len(s2)} steps, the same branches and stability counts")
 scale = max(abs(float(a["dome_height"])) for a in s1)
 d = max(abs(float(a["dome_height"]) - float(b["dome_height"])) for a, b in zip(s1, s2)) / scale
 check(scale > 1e-3 and d <= 1e-6, f"dome: dome height (largest {scale:.3g}, on the bifurcated branch) the same to {d:.1e} <= 1e-6")
-one, two = (json.load(open(f"disc_{r}/summary.json")) for r in ("one", "two"))
+one, two = load("disc_one"), load("disc_two")
 check(two.get("mumps_phases_on_all_ranks", 0) > 0, f"disc: {two.get('mumps_phases_on_all_ranks')} MUMPS phases on both ranks")
-k1 = [x for row in one["stiffness"] for x in row]; k2 = [x for row in two["stiffness"] for x in row]
-dk = max(abs(a - b) for a, b in zip(k1, k2)) / max(abs(a) for a in k1)
-ds = max(abs(one["strains"][k] - two["strains"][k]) for k in one["strains"])
-check(dk <= 1e-10 and ds <= 1e-10 and one["stability"] == two["stability"],
-      f"disc: stiffness the same to {dk:.1e} of its scale, strains to {ds:.1e} (<= 1e-10), inertia {one['stability']}")
-sys.exit(fail)
+same_section_state("disc", one, two)
+sys.exit(mpi_checks.failures > 0)
 PY
 exit $fail

@@ -12,34 +12,43 @@ namespace cosmo
 {
   namespace geometry
   {
-    template <int dim>
-    std::vector<types::global_dof_index>
-    mirror_dofs(const Mapping<dim> &    mapping,
-                const DoFHandler<dim> &dof_handler,
-                const unsigned int     axis,
-                const double           length_scale)
+    namespace
     {
-      const types::global_dof_index n = dof_handler.n_dofs();
-      std::vector<Point<dim>>       points(n);
-      std::vector<unsigned int>            component(n);
-      std::vector<types::global_dof_index> idx;
-      const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(
-        &dof_handler.get_triangulation());
-      if (parallel_mesh == nullptr)
-        DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
-      else
-        {
-          // A mesh divided over ranks: each rank places its own DoFs, and
-          // every rank gets all of them (a sum in which each entry has one
-          // nonzero term, so exact and the same on every rank).
-          std::map<types::global_dof_index, Point<dim>> mine;
-          DoFTools::map_dofs_to_support_points(mapping, dof_handler, mine);
-          const IndexSet      owned = dof_handler.locally_owned_dofs();
-          std::vector<double> all((dim + 1) * n, 0.);
-          for (const auto &[i, p] : mine)
-            if (owned.is_element(i))
-              for (unsigned int d = 0; d < dim; ++d)
-                all[(dim + 1) * i + d] = p[d];
+      /// The communicator of a mesh divided over ranks; MPI_COMM_NULL for a serial one.
+      template <int dim>
+      MPI_Comm
+      ranks_of(const DoFHandler<dim> &dof_handler)
+      {
+        const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(
+          &dof_handler.get_triangulation());
+        return parallel_mesh ? parallel_mesh->get_communicator() : MPI_COMM_NULL;
+      }
+
+      /**
+       * `width` numbers per DoF, whole on every rank: `fill(i, x)` writes
+       * DoF i's into x for the DoFs this rank owns (every DoF on one
+       * process), and the ranks' parts are summed. Each entry has one
+       * nonzero term, so the sum is exact and the same on every rank.
+       */
+      template <int dim, typename Fill>
+      std::vector<double>
+      per_dof(const DoFHandler<dim> &dof_handler, const unsigned int width, const Fill &fill)
+      {
+        std::vector<double> all(std::size_t(width) * dof_handler.n_dofs(), 0.);
+        fill(all);
+        if (const MPI_Comm comm = ranks_of(dof_handler); comm != MPI_COMM_NULL)
+          MPI_Allreduce(MPI_IN_PLACE, all.data(), all.size(), MPI_DOUBLE, MPI_SUM, comm);
+        return all;
+      }
+
+      /// The field component of every DoF, from its owner's cells.
+      template <int dim>
+      std::vector<double>
+      dof_components(const DoFHandler<dim> &dof_handler)
+      {
+        return per_dof(dof_handler, 1, [&](std::vector<double> &c) {
+          const IndexSet                       owned = dof_handler.locally_owned_dofs();
+          std::vector<types::global_dof_index> idx;
           for (const auto &cell : dof_handler.active_cell_iterators())
             if (cell->is_locally_owned())
               {
@@ -47,32 +56,51 @@ namespace cosmo
                 cell->get_dof_indices(idx);
                 for (unsigned int i = 0; i < idx.size(); ++i)
                   if (owned.is_element(idx[i]))
-                    all[(dim + 1) * idx[i] + dim] = cell->get_fe().system_to_component_index(i).first;
+                    c[idx[i]] = cell->get_fe().system_to_component_index(i).first;
               }
-          MPI_Allreduce(MPI_IN_PLACE, all.data(), all.size(), MPI_DOUBLE, MPI_SUM,
-                        parallel_mesh->get_communicator());
-          for (types::global_dof_index i = 0; i < n; ++i)
-            {
+        });
+      }
+
+      /// The support point of every DoF (the map variant of deal.II's, which gives a rank
+      /// its own and its neighbours' DoFs).
+      template <int dim>
+      std::vector<Point<dim>>
+      dof_support_points(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler)
+      {
+        const std::vector<double> all = per_dof(dof_handler, dim, [&](std::vector<double> &x) {
+          std::map<types::global_dof_index, Point<dim>> mine;
+          DoFTools::map_dofs_to_support_points(mapping, dof_handler, mine);
+          const IndexSet owned = dof_handler.locally_owned_dofs();
+          for (const auto &[i, p] : mine)
+            if (owned.is_element(i))
               for (unsigned int d = 0; d < dim; ++d)
-                points[i][d] = all[(dim + 1) * i + d];
-              component[i] = static_cast<unsigned int>(all[(dim + 1) * i + dim]);
-            }
-        }
-      if (parallel_mesh == nullptr)
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          idx.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(idx);
-          for (unsigned int i = 0; i < idx.size(); ++i)
-            component[idx[i]] = cell->get_fe().system_to_component_index(i).first;
-        }
+                x[dim * i + d] = p[d];
+        });
+        std::vector<Point<dim>> points(dof_handler.n_dofs());
+        for (types::global_dof_index i = 0; i < points.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            points[i][d] = all[dim * i + d];
+        return points;
+      }
+    } // namespace
+
+    template <int dim>
+    std::vector<types::global_dof_index>
+    mirror_dofs(const Mapping<dim> &    mapping,
+                const DoFHandler<dim> &dof_handler,
+                const unsigned int     axis,
+                const double           length_scale)
+    {
+      const types::global_dof_index n         = dof_handler.n_dofs();
+      const std::vector<Point<dim>> points    = dof_support_points(mapping, dof_handler);
+      const std::vector<double>     component = dof_components(dof_handler);
       const double scale = 1e-7 * length_scale;
       using Key          = std::pair<std::array<long long, dim>, unsigned int>;
-      auto key           = [&](const Point<dim> &p, const unsigned int c) {
+      auto key           = [&](const Point<dim> &p, const double c) {
         Key k;
         for (unsigned int d = 0; d < dim; ++d)
           k.first[d] = std::llround(p[d] / scale);
-        k.second = c;
+        k.second = static_cast<unsigned int>(c);
         return k;
       };
       std::map<Key, types::global_dof_index> at;
@@ -100,34 +128,18 @@ namespace cosmo
     {
       if (mirror.empty() || mirror.size() != dof_handler.n_dofs() || mode.size() < mirror.size())
         return NAN;
-      std::vector<double>                  sign(dof_handler.n_dofs(), 0.);
-      std::vector<types::global_dof_index> idx;
-      const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(
-        &dof_handler.get_triangulation());
-      const IndexSet owned = dof_handler.locally_owned_dofs();
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
+      const std::vector<double> component = dof_components(dof_handler);
+      double                    cross = 0, square = 0;
+      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
         {
-          idx.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(idx);
-          for (unsigned int i = 0; i < idx.size(); ++i)
-            if (owned.is_element(idx[i]))
+          const unsigned int c    = static_cast<unsigned int>(component[i]);
+          const double       sign = c < component_signs.size() ? component_signs[c] : 0.;
+          if (sign != 0)
             {
-              const unsigned int c = cell->get_fe().system_to_component_index(i).first;
-              sign[idx[i]]         = c < component_signs.size() ? component_signs[c] : 0.;
+              cross += sign * mode[i] * mode[mirror[i]];
+              square += mode[i] * mode[i];
             }
         }
-      // (a mesh divided over ranks: each DoF's sign from its owner, a sum of one term)
-      if (parallel_mesh != nullptr)
-        MPI_Allreduce(MPI_IN_PLACE, sign.data(), sign.size(), MPI_DOUBLE, MPI_SUM,
-                      parallel_mesh->get_communicator());
-      double cross = 0, square = 0;
-      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
-        if (sign[i] != 0)
-          {
-            cross += sign[i] * mode[i] * mode[mirror[i]];
-            square += mode[i] * mode[i];
-          }
       return square > 0 ? cross / square : NAN;
     }
 
