@@ -376,8 +376,6 @@ namespace cosmo
       sector_as_full_disc = prm.get_bool("Sector as full disc");
       prm.leave_subsection();
 
-      // Growth must stay positive along the path.
-      plate_growth.check_positive(radius);
     }
   } // namespace plate_rod
 } // namespace cosmo

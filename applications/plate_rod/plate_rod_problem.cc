@@ -24,6 +24,8 @@
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
 
+#include <cosmo/materials/growth_admissibility.h>
+
 #include "plate_rod_problem.h"
 
 #include <chrono>
@@ -445,6 +447,24 @@ namespace cosmo
             }
         }
       plate_growth.check_natural_curvature(points);
+
+      // The plate's and the rim's growth: one check, at every vertex and
+      // quadrature point of the mesh (materials/growth_admissibility.h).
+      const MPI_Comm comm = distributed_mesh ? MPI_COMM_WORLD : MPI_COMM_SELF;
+      plate_growth.check_admissible(
+        materials::growth_points(*mapping, triangulation.get(), quadrature,
+                                 [](const auto &) { return true; }),
+        comm);
+      materials::check_growth_admissible(
+        materials::boundary_growth_points(*mapping, triangulation.get(), QGauss<1>(degree + 1),
+                                          [](const auto &face) {
+                                            return face->boundary_id() == rim_id;
+                                          }),
+        [this](const Point<2> &, const double t) {
+          return std::vector<double>{rod_growth_at(t)};
+        },
+        {"Rim rod", "Growth factor", io::format_number(rod_growth), "the rim's growth factor"},
+        comm);
     }
 
     materials::QuadraticRodLaw
@@ -863,6 +883,29 @@ namespace cosmo
     }
 
     void
+    PlateRodProblem::complete_mode(Vector<double> &v) const
+    {
+      // Every constraint here is homogeneous (mirror planes, in-plane only,
+      // gauges): distribute() sets the slaves from their masters and adds nothing.
+      constraints.distribute(v);
+      layout.take_from_owners(v);
+    }
+
+    double
+    PlateRodProblem::constraint_violation(const Vector<double> &U) const
+    {
+      double v = 0;
+      for (const auto &line : constraints.get_lines())
+        {
+          double r = U[line.index] - line.inhomogeneity;
+          for (const auto &entry : line.entries)
+            r -= entry.second * U[entry.first];
+          v = std::max(v, std::abs(r));
+        }
+      return distributed_mesh ? Utilities::MPI::max(v, MPI_COMM_WORLD) : v;
+    }
+
+    void
     PlateRodProblem::residual_weights(Vector<double> &w) const
     {
       // Nodal forces against E h R, nodal moments against E h R^2.
@@ -958,7 +1001,9 @@ namespace cosmo
            << (domain == "sector" ? "sector pi/" + std::to_string(sector_n) : std::string("full disc"))
            << ", " << triangulation.get().n_global_active_cells() << " cells, Q" << degree << ", "
            << dof_handler.n_dofs() << " DoFs ("
-           << std::count(dof_constrained.begin(), dof_constrained.end(), 1) << " constrained)";
+           << std::count(dof_constrained.begin(), dof_constrained.end(), 1)
+           << " constrained), estimated peak memory "
+           << io::format_bytes(io::estimated_memory(dof_handler.n_dofs(), degree));
       if (distributed_mesh)
         info << ", the mesh distributed over " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
              << (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ? " rank" : " ranks");

@@ -69,6 +69,7 @@ namespace cosmo
       int                 n_negative = -1;
       double              smallest_eigenvalue = 0;
       unsigned int        branch = 0; ///< of the continuation (0 the first)
+      double              constraint_violation = 0; ///< PlateRodProblem::constraint_violation
     };
 
     class PlateRodProblem : public solvers::BifurcationProblem
@@ -118,6 +119,12 @@ namespace cosmo
       /// 0 on the DoFs the constraints determine (mirror edges, alpha off the rim).
       void
       mode_mask(Vector<double> &mask) const override;
+      /// The mirror edges' and in-plane constraints distributed onto a mode.
+      void
+      complete_mode(Vector<double> &v) const override;
+      /// max |u_s - sum_m w_m u_m| over the constraints (0 to round-off on every state).
+      double
+      constraint_violation(const Vector<double> &U) const;
       void
       set_load_parameter(double t) override
       {

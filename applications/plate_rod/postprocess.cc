@@ -198,6 +198,7 @@ namespace cosmo
       PlateRodState s = analyse(U);
       s.n_negative    = report.n_negative;
       s.branch        = report.branch;
+      s.constraint_violation = constraint_violation(U);
       auto same_state = [&](const Vector<double> &V, const double load) {
         return load == load_parameter && solvers::same_point(U, V);
       };

@@ -19,6 +19,8 @@
 #include <cosmo/io/ranks.h>
 #include <cosmo/kinematics/section.h>
 
+#include <cosmo/materials/growth_admissibility.h>
+
 #include "cross_section_problem.h"
 
 #include <cmath>
@@ -143,15 +145,9 @@ namespace cosmo
         }
       report = [this](const std::string &line) { say(line); };
 
-      // Growth is ramped as 1 + t (g - 1), a convex combination: det Fg > 0
-      // along the whole path iff it holds at t = 1. Check it now, as bad
-      // input, rather than as a nonlinear failure somewhere on the path.
-      const double t_saved = load_parameter;
-      load_parameter       = 1.;
-      growth_cached_for    = std::numeric_limits<double>::quiet_NaN();
-      update_growth_cache(true);
-      load_parameter    = t_saved;
-      growth_cached_for = std::numeric_limits<double>::quiet_NaN();
+      // Bad input, refused now rather than met as a nonlinear failure on the
+      // path, or missed (materials/growth_admissibility.h).
+      check_growth();
 
       solution.reinit(n_unknowns());
       const auto ref = kinematics::RodStrains::reference().as_array();
@@ -160,19 +156,59 @@ namespace cosmo
       growth_cached_for = std::numeric_limits<double>::quiet_NaN();
     }
 
+    void
+    CrossSectionProblem::check_growth() const
+    {
+      const MPI_Comm  comm = distributed_mesh ? MPI_COMM_WORLD : MPI_COMM_SELF;
+      const QGauss<2> quadrature(degree + 1);
+      std::vector<types::material_id> ids;
+      for (const auto &cell : triangulation.get().active_cell_iterators())
+        if (std::find(ids.begin(), ids.end(), cell->material_id()) == ids.end())
+          ids.push_back(cell->material_id());
+      // (every rank checks every material: the check is collective)
+      if (distributed_mesh)
+        ids = Utilities::MPI::compute_set_union(ids, comm);
+      for (const auto id : ids)
+        {
+          const auto &material = materials.material(id);
+          materials::check_growth_admissible(
+            materials::growth_points(*mapping, triangulation.get(), quadrature,
+                                     [id](const auto &cell) { return cell->material_id() == id; }),
+            [&material](const Point<2> &X, const double t) {
+              return std::vector<double>{determinant(material.growth.value(X, t))};
+            },
+            {material.section, "Growth factor", material.growth.factor_expression()},
+            comm);
+        }
+      const QGauss<1> face_quadrature(degree + 1);
+      for (const auto &layer : surface_layers.layers())
+        {
+          geometry::BoundarySelection selection;
+          selection.parse(layer.boundary_parts, layer.section, "Boundary parts", geometry);
+          materials::check_growth_admissible(
+            materials::boundary_growth_points(*mapping, triangulation.get(), face_quadrature,
+                                              [&selection](const auto &face) {
+                                                return selection.contains(face);
+                                              }),
+            [&layer](const Point<2> &X, const double t) {
+              const auto g = layer.growth(X, t);
+              return std::vector<double>{g[0], g[1]};
+            },
+            {layer.section, "Growth factor", layer.growth_text, "each surface factor (gT, g3)"},
+            comm);
+        }
+    }
+
     bool
-    CrossSectionProblem::update_growth_cache(const bool throw_if_inadmissible)
+    CrossSectionProblem::update_growth_cache()
     {
       if (growth_cached_for == load_parameter)
         return true;
       // Outside [0, 1] (a trial load of Newton on an augmented system) the
-      // ramp may leave det Fg > 0: an inadmissible state there, bad input
-      // only if it happens at t = 1 (checked at setup).
-      const auto refuse = [&](const std::string &section, const std::string &entry,
-                              const std::string &value, const std::string &why) {
+      // ramp may leave det Fg > 0: an inadmissible state there (on [0, 1]
+      // check_growth() has refused it at setup).
+      const auto refuse = [&]() {
         growth_cached_for = std::numeric_limits<double>::quiet_NaN();
-        if (throw_if_inadmissible)
-          throw io::InputError(section, entry, value, why);
         return false;
       };
       const QGauss<2> quadrature(degree + 1);
@@ -190,13 +226,7 @@ namespace cosmo
                 material.growth.value(fev.quadrature_point(q), load_parameter);
               const double J = determinant(Fg);
               if (!(J > 0) || !std::isfinite(J))
-                return refuse(
-                  material.section, "Growth factor", material.growth.factor_expression(),
-                  "det Fg = " + std::to_string(J) + " at (" +
-                    std::to_string(fev.quadrature_point(q)[0]) + ", " +
-                    std::to_string(fev.quadrature_point(q)[1]) +
-                    ") of the section (a quadrature point): growth must be finite and keep "
-                    "det Fg > 0 on the whole section");
+                return refuse();
               growth_at_qp[cell->active_cell_index() * quadrature.size() + q] = Fg;
             }
         }
@@ -215,11 +245,7 @@ namespace cosmo
               const Point<2> &X = ffv.quadrature_point(q);
               const auto      g = layer.growth(X, load_parameter);
               if (!(g[0] > 0 && g[1] > 0) || !std::isfinite(g[0]) || !std::isfinite(g[1]))
-                return refuse(
-                  layer.section, "Growth factor", layer.growth_text,
-                  "surface growth (gT, g3) = (" + std::to_string(g[0]) + ", " +
-                    std::to_string(g[1]) + ") at boundary point (" + std::to_string(X[0]) +
-                    ", " + std::to_string(X[1]) + "): both factors must stay positive and finite");
+                return refuse();
               surface_growth_at_qp[f * nqf + q] = g;
             }
         }
@@ -859,7 +885,8 @@ namespace cosmo
       std::ostringstream info;
       info << "  section: " << geometry.shape << ", " << triangulation.get().n_global_active_cells()
            << " cells, Q" << degree << ", " << n_u() << " field DoFs + 6 multipliers + 6 strains; area "
-           << section_properties.area;
+           << section_properties.area << "; estimated peak memory "
+           << io::format_bytes(io::estimated_memory(n_unknowns(), degree));
       if (distributed_mesh)
         info << "; the mesh distributed over " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
              << (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ? " rank" : " ranks");

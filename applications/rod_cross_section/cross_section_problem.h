@@ -196,10 +196,14 @@ namespace cosmo
       {
         return dof_handler.n_dofs();
       }
-      /// Growth at the quadrature points at the current load; false (or, if
-      /// asked, io::InputError) where det Fg or a surface factor is not positive.
+      /// Growth at the quadrature points at the current load; false where det Fg
+      /// or a surface factor is not positive.
       bool
-      update_growth_cache(bool throw_if_inadmissible = false);
+      update_growth_cache();
+      /// io::InputError unless every bulk and surface law is admissible on every
+      /// level of the mesh along the ramp (materials/growth_admissibility.h).
+      void
+      check_growth() const;
       /// The faces of every surface layer (after the mesh and DoFs exist).
       void
       setup_surface_faces();

@@ -1,6 +1,5 @@
 // What part 2 reports: the steps table, the mode's width-wise symmetry, the
 // strip swept along its helix and the cross-section VTU files.
-#include <deal.II/numerics/vector_tools.h>
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -10,6 +9,7 @@
 #include <cosmo/config.h>
 #include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/strip.h>
+#include <cosmo/geometry/field_on_line.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/rotation.h>
@@ -100,7 +100,7 @@ namespace cosmo
         Vector<double>       value(fe->n_components());
         for (const double eta : {-0.5 * strip_width, 0., 0.5 * strip_width})
           {
-            VectorTools::point_value(dof_handler, field, Point<1>(eta), value);
+            geometry::value_on_line(dof_handler, field, eta, value);
             row.push_back(value[1]);
           }
       }

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cosmo/assembly/constitutive_table.h>
+#include <cosmo/io/resources.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/ranks.h>
@@ -309,18 +310,18 @@ namespace cosmo
       };
       first  = index(prm.get("First strain"));
       second = index(prm.get("Second strain"));
-      auto range = [&](const std::string &entry, double &a, double &b, unsigned int &n) {
-        const auto r = io::get_double_list(prm, entry, 3, "Constitutive table");
-        const int  m = static_cast<int>(std::lround(r[2]));
-        if (m < 1 || std::abs(r[2] - m) > 1e-12)
-          throw io::InputError("Constitutive table", entry, prm.get(entry),
-                               "From, To, Number of values with a whole number >= 1");
-        a = r[0];
-        b = r[1];
-        n = m;
-      };
-      range("First range", from1, to1, n1);
-      range("Second range", from2, to2, n2);
+      const auto r1 = io::get_range(prm, "First range", "Constitutive table");
+      const auto r2 = io::get_range(prm, "Second range", "Constitutive table");
+      from1 = r1.from, to1 = r1.to, n1 = r1.n;
+      from2 = r2.from, to2 = r2.to, n2 = r2.n;
+      // Refused before anything is allocated (1e5 x 1e5 points ended in
+      // std::bad_alloc); the estimate is printed when the table starts.
+      if (is_enabled)
+        io::check_points_memory(double(n1) * n2, bytes_per_point, io::estimated_memory(0, 1),
+                                "Constitutive table", n1 >= n2 ? "First range" : "Second range",
+                                prm.get(n1 >= n2 ? "First range" : "Second range") +
+                                  "' (with '" + (n1 >= n2 ? "Second range" : "First range") +
+                                  "' = '" + prm.get(n1 >= n2 ? "Second range" : "First range"));
       if (is_enabled && first == second)
         throw io::InputError("Constitutive table", "Second strain", prm.get("Second strain"),
                              "a strain other than the first one (a path asks for each strain once)");
@@ -341,7 +342,9 @@ namespace cosmo
       auto value = [](double a, double b, unsigned int n, unsigned int i) {
         return n == 1 ? a : a + (b - a) * i / (n - 1);
       };
-      const unsigned int  N = n1 * n2;
+      const unsigned int  N = n1 * n2; // < 2^32: check_points_memory refused more
+      progress("constitutive table: " + std::to_string(N) + " points, their results estimated at " +
+               io::format_bytes(N * bytes_per_point) + " beside the problem's memory");
       std::vector<double> energy(N, NAN), resultants(6 * N, NAN), stiffness(36 * N, NAN),
         converged(N, 0);
       io::CSVTable table;

@@ -103,7 +103,10 @@ namespace cosmo
                        const std::map<std::string, types::boundary_id> &          boundary_parts,
                        const std::function<types::boundary_id(const Point<2> &)> &boundary_of)
     {
-      for (const auto &cell : tria.active_cell_iterators())
+      // Every level, not only the active cells: a coarser level is the mesh
+      // of the coarse-mesh start, labelled as that mesh would be (the growth
+      // check, materials/growth_admissibility.h, visits every level).
+      for (const auto &cell : tria.cell_iterators())
         {
           cell->set_material_id(region_of ? region_of(cell->center()) : types::material_id(1));
           for (const unsigned int f : cell->face_indices())

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/resources.h>
 #include <cosmo/io/parameters.h>
 
 #include <algorithm>
@@ -93,13 +94,12 @@ namespace cosmo
                            "finite numbers separated by ',' (not nan or inf)");
       if (values.empty())
         {
-          const auto r = get_double_list(prm, "Range", 3, "Parameter sweep");
-          const int  n = static_cast<int>(std::lround(r[2]));
-          if (n < 1 || std::abs(r[2] - n) > 1e-12)
-            throw InputError("Parameter sweep", "Range", prm.get("Range"),
-                             "From, To, Number of values with a whole number >= 1");
-          for (int k = 0; k < n; ++k)
-            values.push_back(n == 1 ? r[0] : r[0] + (r[1] - r[0]) * k / (n - 1));
+          const auto range = get_range(prm, "Range", "Parameter sweep");
+          // A value, its row of sweep.csv (~40 numbers) and its summary in memory.
+          check_points_memory(range.n, 8 + 2 * (40 * 8 + 24), estimated_memory(0, 1),
+                              "Parameter sweep", "Range", prm.get("Range"));
+          for (unsigned int k = 0; k < range.n; ++k)
+            values.push_back(range.value(k));
         }
       prm.leave_subsection();
       if (!enabled())

@@ -182,6 +182,20 @@ namespace cosmo
       return v;
     }
 
+    Range
+    get_range(const ParameterHandler &prm, const std::string &entry, const std::string &section)
+    {
+      const auto r = get_double_list(prm, entry, 3, section);
+      if (!(r[2] >= 1 && r[2] <= 1e9 && r[2] == std::floor(r[2])))
+        throw InputError(section, entry, prm.get(entry),
+                         "From, To, Number of values with a whole number of values from 1 to 1e9");
+      Range range;
+      range.from = r[0];
+      range.to   = r[1];
+      range.n    = static_cast<unsigned int>(r[2]);
+      return range;
+    }
+
     namespace
     {
       void

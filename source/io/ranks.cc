@@ -158,6 +158,39 @@ namespace cosmo
 
       namespace
       {
+        MPI_Comm failure_comm = MPI_COMM_NULL;
+      }
+
+      void
+      prepare_failure_agreement()
+      {
+        if (size() > 1 && failure_comm == MPI_COMM_NULL)
+          AssertThrowMPI(MPI_Comm_dup(MPI_COMM_WORLD, &failure_comm));
+      }
+
+      bool
+      all_ranks_failed_within(const double seconds)
+      {
+        if (size() == 1)
+          return true;
+        if (failure_comm == MPI_COMM_NULL)
+          return false;
+        MPI_Request request;
+        AssertThrowMPI(MPI_Ibarrier(failure_comm, &request));
+        const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        for (int done = 0;;)
+          {
+            AssertThrowMPI(MPI_Test(&request, &done, MPI_STATUS_IGNORE));
+            if (done)
+              return true;
+            if (std::chrono::steady_clock::now() > until)
+              return false; // (the request is left: this rank ends the run now)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+          }
+      }
+
+      namespace
+      {
         /**
          * mpirun binds each rank to a core of its own (Open MPI's default
          * for two ranks or fewer): rank 0 of a one-path run, whose threads

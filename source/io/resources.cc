@@ -43,5 +43,40 @@ namespace cosmo
           throw InputError(section, entry, value, m.str());
         }
     }
+
+    std::string
+    format_bytes(const double bytes)
+    {
+      std::ostringstream m;
+      m.precision(3);
+      if (bytes >= 1e9)
+        m << bytes / 1e9 << " GB";
+      else
+        m << bytes / 1e6 << " MB";
+      return m.str();
+    }
+
+    double
+    check_points_memory(const double       n_points,
+                        const double       bytes_per_point,
+                        const double       problem_bytes,
+                        const std::string &section,
+                        const std::string &entry,
+                        const std::string &value)
+    {
+      const double need = n_points * bytes_per_point + problem_bytes, have = physical_memory();
+      if (have > 0 && need > have)
+        {
+          std::ostringstream m;
+          m.precision(3);
+          m << "a table or study that fits in this machine's memory: " << n_points
+            << " points of " << bytes_per_point << " bytes each (their results in memory, in the "
+            << "CSV and HDF5 tables and the checkpoint) and the problem's "
+            << format_bytes(problem_bytes) << " are estimated to need " << format_bytes(need)
+            << ", more than the " << format_bytes(have) << " here; use fewer values";
+          throw InputError(section, entry, value, m.str());
+        }
+      return need;
+    }
   } // namespace io
 } // namespace cosmo

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -103,6 +104,18 @@ namespace cosmo
       return [this](const std::string &line) { say(line); };
     }
 
+    namespace
+    {
+      /// How long a failing rank waits for the others to report the same
+      /// failure: ranks in lockstep meet it within a step of each other.
+      double
+      agreement_seconds()
+      {
+        const char *s = std::getenv("COSMO_FAILURE_AGREEMENT_SECONDS");
+        return s ? std::atof(s) : 30.;
+      }
+    } // namespace
+
     void
     RunRecord::attempt(const std::function<void()> &work)
     {
@@ -124,12 +137,26 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
-          if (lockstep_failure && !lockstep_failure(e))
-            throw;
           // Not bad input: the run could not reach its target. Still leave a
           // summary of what was done.
           fail(e.what());
+          if (lockstep_failure && !lockstep_failure(e) && !ranks::all_ranks_failed_within(agreement_seconds()))
+            {
+              // This rank's alone: the others cannot take part in finish().
+              message += " (on MPI rank " + std::to_string(ranks::rank()) +
+                         " alone: every rank ended)";
+              write_file_atomically(ranks::shared_directory() + "/summary.json",
+                                    [&](std::ostream &o) { o << summary().str() << "\n"; });
+              throw RunFailure(message);
+            }
         }
+    }
+
+    void
+    RunRecord::set_lockstep(const std::function<bool(const std::exception &)> &raised_on_all_ranks)
+    {
+      lockstep_failure = raised_on_all_ranks;
+      ranks::prepare_failure_agreement();
     }
 
     void

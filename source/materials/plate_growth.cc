@@ -1,5 +1,6 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/growth.h>
+#include <cosmo/materials/growth_admissibility.h>
 #include <cosmo/materials/plate_growth.h>
 
 #include <deal.II/lac/vector.h>
@@ -128,19 +129,18 @@ namespace cosmo
     }
 
     void
-    PlateGrowth::check_positive(const double radius) const
+    PlateGrowth::check_admissible(const std::vector<Point<2>> &points, const MPI_Comm comm) const
     {
-      for (const double t : {0., 1.})
-        for (unsigned int i = 0; i <= 20; ++i)
-          {
-            const auto g = factors(radius * i / 20., t);
-            if (!(g[0] > 0) || !(g[1] > 0))
-              throw io::InputError("Plate growth",
-                                   g[0] > 0 ? "Circumferential growth factor" : "Radial growth factor",
-                                   g[0] > 0 ? circumferential_text : radial_text,
-                                   "growth factors must be positive for 0 <= r <= R (not at r = " +
-                                     std::to_string(radius * i / 20.) + ")");
-          }
+      for (const unsigned int k : {0u, 1u})
+        check_growth_admissible(
+          points,
+          [this, k](const Point<2> &X, const double t) {
+            return std::vector<double>{factors(X.norm(), t)[k]};
+          },
+          {"Plate growth", k == 0 ? "Radial growth factor" : "Circumferential growth factor",
+           k == 0 ? radial_text : circumferential_text,
+           k == 0 ? "the radial growth factor" : "the circumferential growth factor"},
+          comm);
     }
 
     std::array<double, 2>

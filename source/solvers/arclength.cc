@@ -1,5 +1,6 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
+#include <cosmo/io/fault_injection.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point.h>
 
@@ -1004,7 +1005,10 @@ namespace cosmo
           e.factorizations = factorizations - factorizations_at_detection;
           Vector<double> U_event(record.state.begin(), record.state.end());
           if (phi.size())
-            modes_of_this_step.push_back(phi);
+            {
+              problem.complete_mode(phi);
+              modes_of_this_step.push_back(phi);
+            }
           if (e.kind == Kind::branch_point && phi.size())
             {
               phi /= std::sqrt(norm2(phi)); // unit in the arclength norm
@@ -1165,6 +1169,7 @@ namespace cosmo
                           s.lambda > settings.lambda_max);
           problem.set_load_parameter(s.lambda);
           problem.converged_step(s.U, report);
+          io::inject_fault("step " + std::to_string(step)); // (robustness tests only)
           cutbacks = 0;
           if (r.iterations <= settings.easy_iterations)
             ds = std::min(settings.maximum_step, ds * settings.growth_factor);
@@ -1213,6 +1218,7 @@ namespace cosmo
         }
       take_location(cp, record);
       Vector<double> phi = cp.mode;
+      problem.complete_mode(phi);
       phi /= std::sqrt(norm2(phi));
       record.mode.assign(phi.begin(), phi.end());
       std::ostringstream m;

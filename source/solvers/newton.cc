@@ -1,5 +1,7 @@
 #include <deal.II/sundials/kinsol.h>
 
+#include <cosmo/io/stderr_capture.h>
+
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/distributed_direct.h>
@@ -240,12 +242,20 @@ namespace cosmo
       };
 
       Vector<double> U0 = U;
+      // KINSOL's own messages (a failed line search, ...) go with this
+      // solve's outcome into the log, not to the terminal's stderr.
+      io::StderrCapture kinsol_messages;
+      auto              said = [&kinsol_messages]() {
+        const std::string text = kinsol_messages.release();
+        return text.empty() ? text : " (KINSOL said: " + text + ")";
+      };
       try
         {
           result.iterations = kinsol.solve(U);
         }
       catch (std::exception &e)
         {
+          const std::string messages = said();
           U = U0;
           // Ranks in lockstep (a distributed mesh): an error not every rank
           // raised (one rank's memory, say) ends this rank, and so all of them
@@ -255,8 +265,9 @@ namespace cosmo
               dynamic_cast<const SUNDIALS::KINSOL<Vector<double>>::ExcKINSOLError *>(&e) == nullptr)
             throw;
           io::check_interrupt();
-          throw NewtonFailure(std::string("KINSOL stopped: ") + e.what());
+          throw NewtonFailure(std::string("KINSOL stopped: ") + e.what() + messages);
         }
+      const std::string messages = said();
 
       // A signal ends the solve with an error KINSOL does not report in
       // Release: whatever U is now, it is an interruption, not a failure
@@ -272,7 +283,7 @@ namespace cosmo
           std::ostringstream s;
           s << "Newton did not converge in " << settings.max_iterations
             << " iterations: scaled residual " << result.residual_norm << " > tolerance "
-            << settings.relative_tolerance;
+            << settings.relative_tolerance << messages;
           U = U0;
           throw NewtonFailure(s.str());
         }

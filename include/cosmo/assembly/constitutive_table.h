@@ -127,6 +127,9 @@ namespace cosmo
       unsigned int first = 3, second = 5; ///< strain indices
       double       from1 = 0, to1 = 1, from2 = 0, to2 = 1;
       unsigned int n1 = 5, n2 = 5;
+      /// Per point: energy, 6 resultants, 36 stiffnesses and the flag in memory,
+      /// a CSV row of 30 numbers with its vector, the HDF5 and checkpoint copies.
+      static constexpr double bytes_per_point = 44 * 8 + (30 * 8 + 24) + 2 * 44 * 8;
 
     private:
       bool is_enabled = false;

@@ -90,6 +90,24 @@ namespace cosmo
                     const std::string &     entry,
                     unsigned int            n,
                     const std::string &     section);
+
+    /// 'From, To, Number of values' (a table's axis, a study's range).
+    struct Range
+    {
+      double       from = 0, to = 0;
+      unsigned int n    = 1;
+      /// The i-th of n equally spaced values (from if n = 1).
+      double
+      value(const unsigned int i) const
+      {
+        return n == 1 ? from : from + (to - from) * i / (n - 1);
+      }
+    };
+
+    /// The entry as a Range: two finite numbers and a whole number of values
+    /// in [1, 1e9] (a clear InputError otherwise, not an overflow).
+    Range
+    get_range(const ParameterHandler &prm, const std::string &entry, const std::string &section);
   } // namespace io
 } // namespace cosmo
 

@@ -125,6 +125,24 @@ namespace cosmo
       wait_for_all();
 
       /**
+       * For a run whose ranks take every step together (a distributed mesh):
+       * make the communicator on which failing ranks ask whether the others
+       * failed too (all ranks, at the same point, before the run).
+       */
+      void
+      prepare_failure_agreement();
+
+      /**
+       * Called by a rank that met a failure: true if every rank calls it
+       * within `seconds` (the same failure met at the same point of a
+       * lockstep run), false if not (this rank's alone: the others wait in a
+       * collective call of the run and never come). On a communicator of its
+       * own, so that it cannot be matched with the run's collective calls.
+       */
+      bool
+      all_ranks_failed_within(double seconds);
+
+      /**
        * A run with nothing to spread over the ranks (`distributed` false:
        * a single path) is rank 0's alone, on all its threads: true on the
        * ranks k > 0, which then do nothing; rank 0 says so on the terminal.

@@ -42,6 +42,26 @@ namespace cosmo
                  const std::string &value);
 
     /**
+     * The memory of a table or a study of n_points points, bytes_per_point
+     * each (its results in memory, in the CSV table and in the HDF5 or
+     * checkpoint copies), beside the problem's own (problem_bytes): throw
+     * InputError(section, entry, value, ...) naming the estimate and the
+     * memory available if it exceeds the physical memory; otherwise return
+     * the estimate [bytes], for the log.
+     */
+    double
+    check_points_memory(double             n_points,
+                        double             bytes_per_point,
+                        double             problem_bytes,
+                        const std::string &section,
+                        const std::string &entry,
+                        const std::string &value);
+
+    /// "12.3 MB", "4.56 GB": a size for the log.
+    std::string
+    format_bytes(double bytes);
+
+    /**
      * Before each refinement of `tria`: check_memory() of the mesh it would
      * make (2^dim children per cell), with unknowns_per_cell unknowns per
      * cell. Connected to the triangulation's pre_refinement signal, so it

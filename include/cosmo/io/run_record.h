@@ -83,18 +83,19 @@ namespace cosmo
       attempt(const std::function<void()> &work);
 
       /**
-       * The ranks of a run on a distributed mesh take every step together:
-       * a failure that `raised_on_all_ranks` does not recognise (one rank's
-       * write error, say) is not recorded by attempt() but passed on, and so
-       * ends every rank (MPI_Abort), instead of leaving the others waiting
-       * in a collective call. The failures of the drivers, which every rank
-       * meets at the same point, are still recorded (exit 2).
+       * The ranks of a run on a distributed mesh take every step together.
+       * A failure that `raised_on_all_ranks` recognises (the drivers', which
+       * every rank meets at the same point) is recorded as on one process.
+       * Any other is asked about among the ranks for a bounded time
+       * (ranks::all_ranks_failed_within): met by every rank, it is recorded
+       * as on one process (summary.json "failed", exit 2); met by this rank
+       * alone (one rank's write error, say), this rank writes the run's
+       * summary.json ("failed", with the message) and ends every rank
+       * (io::RunFailure, then MPI_Abort with exit 2) instead of leaving the
+       * others waiting in a collective call. Call on every rank.
        */
       void
-      set_lockstep(const std::function<bool(const std::exception &)> &raised_on_all_ranks)
-      {
-        lockstep_failure = raised_on_all_ranks;
-      }
+      set_lockstep(const std::function<bool(const std::exception &)> &raised_on_all_ranks);
 
       /// Record a failure found by the caller.
       void

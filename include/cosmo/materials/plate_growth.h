@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
 #include <cosmo/base/plugins.h>
@@ -81,11 +82,12 @@ namespace cosmo
 
       /**
        * io::InputError naming the factor's entry unless both factors are
-       * positive at 21 radii in [0, R], at t = 0 and t = 1 (the ramp is
-       * linear in t, so positive at both ends means positive between).
+       * finite and positive at the given points (every vertex and quadrature
+       * point of the plate's mesh) for 0 <= t <= 1
+       * (materials::check_growth_admissible).
        */
       void
-      check_positive(double radius) const;
+      check_admissible(const std::vector<Point<2>> &points, MPI_Comm comm) const;
 
       /**
        * The natural (target) curvature of the grown plate at X for load

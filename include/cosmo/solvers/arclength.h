@@ -80,6 +80,21 @@ namespace cosmo
       mode_mask(Vector<double> &mask) const;
 
       /**
+       * Complete a mode whose constrained unknowns the mask zeroed: set each
+       * unknown that homogeneous constraints determine (u_s = sum_m w_m u_m)
+       * from its masters. The driver calls it on every null vector it keeps
+       * (a branch point's mode, written out and used as a new branch's
+       * direction), so that U* + a phi satisfies the constraints as U* does.
+       * A mode left with zero slaves is a symmetry-breaking imperfection: on
+       * a sector's oblique mirror edge (u_y = tan(pi/n) u_x) the switched
+       * branch slipped along the edge by O(a) and started below its branch
+       * point. Default: nothing (no constraints of that kind).
+       */
+      virtual void
+      complete_mode(Vector<double> & /*v*/) const
+      {}
+
+      /**
        * A size of the mode unknowns at which the problem is noticeably
        * nonlinear (a length for displacements; rotations are O(1)): the
        * difference steps of the critical-point location's second derivatives

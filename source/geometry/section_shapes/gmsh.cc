@@ -1,4 +1,5 @@
 // A section from gmsh: an ASCII .msh, or a .geo meshed here by running the gmsh program.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
@@ -402,20 +403,45 @@ namespace cosmo
         std::string                         msh = mesh_file;
         if (is_geo_file(mesh_file))
           {
-            const std::string program = find_program(gmsh_program);
-            if (program.empty())
-              fail("a .geo needs the gmsh program, but 'Gmsh program' = '" + gmsh_program +
-                   "' is not found (install gmsh, or give its path)");
-            try
+            // On a distributed mesh every rank reads the same coarse mesh:
+            // the first rank meshes the .geo and sends the .msh (or gmsh's
+            // complaint) to the others, which need no gmsh run of their own.
+            const MPI_Comm     comm  = tria.get_communicator();
+            const bool         first = Utilities::MPI::this_mpi_process(comm) == 0;
+            std::string        error, text;
+            scratch = std::make_unique<TemporaryDirectory>();
+            if (first)
+              try
+                {
+                  const std::string program = find_program(gmsh_program);
+                  if (program.empty())
+                    throw std::runtime_error("a .geo needs the gmsh program, but 'Gmsh program' = '" +
+                                             gmsh_program +
+                                             "' is not found (install gmsh, or give its path)");
+                  msh = run_gmsh(program, mesh_file, mesh_size, scratch->path,
+                                 result.meshing_summary);
+                  std::ifstream     in(msh);
+                  std::stringstream all;
+                  all << in.rdbuf();
+                  text = all.str();
+                }
+              catch (std::exception &e)
+                {
+                  error = e.what();
+                }
+            if (Utilities::MPI::n_mpi_processes(comm) > 1)
               {
-                scratch = std::make_unique<TemporaryDirectory>();
-                msh     = run_gmsh(program, mesh_file, mesh_size, scratch->path,
-                               result.meshing_summary);
+                error                  = Utilities::MPI::broadcast(comm, error, 0);
+                text                   = Utilities::MPI::broadcast(comm, text, 0);
+                result.meshing_summary = Utilities::MPI::broadcast(comm, result.meshing_summary, 0);
+                if (!first && error.empty())
+                  {
+                    msh = (std::filesystem::path(scratch->path) / "section.msh").string();
+                    std::ofstream(msh) << text;
+                  }
               }
-            catch (std::exception &e)
-              {
-                fail(e.what());
-              }
+            if (!error.empty())
+              fail(error);
           }
         MshContents contents;
         try
