@@ -67,7 +67,7 @@ expect "surface growth expression that does not parse" "'Surface layer 1', entry
 { base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = tangential and axial\n set Growth factor = 1.1\nend\n'; } > stwo.prm
 expect "surface growth with one factor for two" "expected 2 expression(s)" stwo.prm
 { base; printf 'subsection Surface layer 1\n set Boundary parts = all\n set Growth kind = isotropic\n set Growth factor = x\nend\n'; } > sneg.prm
-expect "surface growth factor <= 0 somewhere" "both factors must stay positive" sneg.prm
+expect "surface growth factor <= 0 somewhere (names the point)" "each surface factor (gT, g3) = -0.707107 at (-0.707107, -0.707107)" sneg.prm
 { base; printf 'subsection Material 1\n set Growth kind = isotropic\n set Growth factor = 1 + 1e300*1e300*x*x\nend\n'; } > ginf.prm
 expect "a growth factor that is infinite on part of the section" "growth must be finite and keep det Fg > 0" ginf.prm
 { base; printf 'subsection Cross-section\n set Global refinements = 10\nend\nsubsection Finite element\n set Polynomial degree = 4\nend\n'; } > huge.prm

@@ -19,7 +19,7 @@ expect "three stiffnesses instead of six" "Stiffnesses" three.prm
 { base; printf 'subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1.001\nend\nsubsection Rim rod\n set Stiffnesses = 1, 1, 1, 1e-5, 1e-5, 1e-5\nend\nsubsection Growth path\n set Start = 0.8\nend\n'; } > start.prm
 expect "a path that starts past the threshold" "already unstable" start.prm
 { base; printf 'subsection Plate growth\n set Kind = isotropic\n set Radial growth factor = 1 - 2*r\nend\n'; } > negative.prm
-expect "a growth factor that is negative somewhere" "growth factors must be positive" negative.prm
+expect "a growth factor that is negative somewhere (names the point and the load)" "entry .Radial growth factor. = .1 - 2\*r.: the radial growth factor = .* at load t = " negative.prm
 { base; printf 'subsection Plate\n set Thickness = 2\nend\n'; } > thick.prm
 expect "a plate thicker than its radius" "smaller than the radius" thick.prm
 { base; printf 'subsection Model\n set Model = reissner\nend\n'; } > model.prm

@@ -15,6 +15,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 using namespace dealii;
 using namespace cosmo;
@@ -803,11 +804,16 @@ namespace
   {
     double t_branch = NAN, t_first = NAN, violation = 0, scale = 0;
     std::vector<double> secondary; ///< the events on the lobed branch
+    /// Every event: branch, t, resolution, mode number, out of plane.
+    std::vector<std::tuple<unsigned int, double, double, unsigned int, bool>> events;
+    /// (t, max |w|) of the first states of the branch of depth 2 switched to from the lobed
+    /// branch's first secondary point.
+    std::vector<std::pair<double, double>> depth2;
   };
 
   LobedRun
   lobed_branch(const double sector_angle, const double amplitude, const unsigned int depth,
-               const double t_max, const unsigned int refinements)
+               const double t_max, const unsigned int refinements, const std::string &mesh = "stretched")
   {
     Setup s;
     s.model = "cosserat";
@@ -823,7 +829,8 @@ namespace
     std::ostringstream extra;
     extra << std::setprecision(17) << "subsection Arclength continuation\n set Switch amplitude = "
           << amplitude << "\n set Both directions = false\n set Maximum branch depth = " << depth
-          << "\n set Event tolerance = 1e-7\nend\n";
+          << "\n set Event tolerance = 1e-7\n set Maximum number of steps = 60\nend\n"
+          << "subsection Mesh\n set Sector mesh = " << mesh << "\nend\n";
     s.extra = extra.str();
     auto p  = make(s);
     p->solve_flat_state(0.);
@@ -835,7 +842,15 @@ namespace
           run.t_branch = e.event.lambda;
         if (e.event.branch == 1)
           run.secondary.push_back(e.event.lambda);
+        const auto c = e.mode.empty() ? std::pair<unsigned int, bool>{0, false} :
+                                        p->classify_mode(Vector<double>(e.mode.begin(), e.mode.end()));
+        run.events.emplace_back(e.event.branch, e.event.lambda, e.event.resolution, c.first, c.second);
       }
+    // The first branch of depth 2 is the one switched to from the lobed branch (branch 1),
+    // followed right after it (depth first): the branch after 1.
+    for (const auto &state : p->path())
+      if (state.branch == 2 && !run.secondary.empty())
+        run.depth2.emplace_back(state.t, state.max_abs_w);
     for (const auto &state : p->path())
       {
         if (state.branch == 1 && std::isnan(run.t_first))
@@ -867,6 +882,83 @@ namespace
     check("the lobed branch starts at its branch point: t - t* = O(a^2) (halving a divides it by " +
             std::to_string(ratio) + ", 3 or more asked)",
           std::isfinite(ratio) && ratio >= 3 && ratio <= 5.5);
+  }
+
+  // The lobed branch's secondary instability by two symmetry reductions: the
+  // sector pi/16 and the sector pi/8 meshed as two mirror images of the
+  // pi/16 mesh ('Sector mesh = mirrored'), so that the pi/8 problem holds the
+  // pi/16 one exactly (its states symmetric about theta = pi/16) and admits
+  // more modes (n = 8, 24, ...). Refinement 2 (1302 and 2502 DoFs), the
+  // planar_lobes rim, to t = 0.4, depth 2. Every event of pi/16 (the n = 16
+  // branch point, the lobed branch's out-of-plane secondary point at
+  // t = 0.377, ...) is found on pi/8 at the same load to the sum of the two
+  // locations' round-off resolutions (summary.json's, 1e-13 to 5e-11 here),
+  // with the same mode class; the secondary point is followed onto its
+  // branch (depth 2) from the same first state (to 1e-9, Newton's stopping
+  // test); pi/8's other events have mode numbers pi/16 cannot hold; every
+  // state of both runs is on its constraints. With the switched branch off
+  // its mirror condition (before the fix) the pi/16 secondary point moved by
+  // 4.5e-3 on 3 refinements.
+  void
+  lobed_secondary_sector_reductions()
+  {
+    const auto a = lobed_branch(180. / 16, 1e-3, 2, 0.4, 2);
+    const auto b = lobed_branch(180. / 8, 1e-3, 2, 0.4, 2, "mirrored");
+    for (const auto *r : {&a, &b})
+      check("every state on its constraints (" + std::to_string(r->violation) + ")",
+            r->scale > 0 && r->violation <= 1e-12 * r->scale);
+    check("the lobed branch has a secondary branch point (pi/16: " +
+            std::to_string(a.secondary.size()) + ")",
+          !a.secondary.empty());
+    for (const auto &[branch, t, resolution, n, out_of_plane] : a.events)
+      {
+        bool found = false;
+        for (const auto &[branch_b, t_b, resolution_b, n_b, out_of_plane_b] : b.events)
+          if (branch_b == branch && n_b == n && out_of_plane_b == out_of_plane &&
+              std::abs(t_b - t) <= resolution + resolution_b)
+            found = true;
+        std::ostringstream m;
+        m << std::setprecision(12) << "pi/16 event on branch " << branch << " at t = " << t
+          << " (n = " << n << (out_of_plane ? ", out of plane" : ", planar")
+          << ") found on pi/8 to the sum of the resolutions";
+        check(m.str(), found);
+      }
+    for (const auto &[branch, t, resolution, n, out_of_plane] : b.events)
+      {
+        bool found = false;
+        for (const auto &e : a.events)
+          found = found || std::abs(std::get<1>(e) - t) <= resolution + std::get<2>(e);
+        if (!found)
+          check("pi/8 event at t = " + std::to_string(t) + " not on pi/16: its mode n = " +
+                  std::to_string(n) + " is not a multiple of 16",
+                n % 16 != 0);
+      }
+    // The secondary point's branch (depth 2) is the same curve on both: an
+    // out-of-plane pitchfork (w -> -w), t - t_s = c A^2 (1 + k A^2 + ...)
+    // with A = max |w|. Its first states are at slightly different A (the
+    // switch amplitude is a unit of the arclength norm, whose weights differ
+    // by the bisector's DoFs, counted once on pi/8): c from the first states
+    // agrees to k |A_8^2 - A_16^2|, k estimated from the next state of the
+    // pi/16 branch; asked: 10 times that, plus 1e-6 for the states' Newton
+    // tolerance (1e-10 of the unknowns' scale, against t - t_s ~ 1e-5).
+    check("both follow the secondary point's branch (depth 2)",
+          a.depth2.size() >= 2 && !b.depth2.empty() && !a.secondary.empty() && !b.secondary.empty());
+    if (a.depth2.size() >= 2 && !b.depth2.empty() && !a.secondary.empty() && !b.secondary.empty())
+      {
+        auto c = [](const std::pair<double, double> &state, const double t_s) {
+          return (state.first - t_s) / (state.second * state.second);
+        };
+        const double ca = c(a.depth2[0], a.secondary[0]), cb = c(b.depth2[0], b.secondary[0]);
+        const double k  = (c(a.depth2[1], a.secondary[0]) - ca) /
+                         (ca * (std::pow(a.depth2[1].second, 2) - std::pow(a.depth2[0].second, 2)));
+        const double tolerance =
+          10 * std::abs(k) * std::abs(std::pow(b.depth2[0].second, 2) - std::pow(a.depth2[0].second, 2)) +
+          1e-6;
+        check_close("  ... t - t_s = c A^2 at its first states: c on pi/8 against pi/16 (A = " +
+                      std::to_string(b.depth2[0].second) + ", " + std::to_string(a.depth2[0].second) +
+                      ")",
+                    cb, ca, tolerance, 0);
+      }
   }
 
   // 'Model / Deformation = in-plane only' (u3 = theta = 0): planar lobing by
@@ -1246,6 +1338,7 @@ main(int argc, char **argv)
                              {"out_of_plane_lobes", out_of_plane_lobes},
                              {"planar_lobes", planar_lobes},
                              {"oblique_sector_branch", oblique_sector_branch},
+                             {"lobed_secondary_sector_reductions", lobed_secondary_sector_reductions},
                              {"in_plane_only", in_plane_only},
                              {"stiffness_file", stiffness_file},
                              {"thick_plate", thick_plate},

@@ -101,6 +101,13 @@ namespace cosmo
                         "conditions on both radial edges (keeps the modes cos(k n theta)).");
       prm.declare_entry("Sector angle", "90", Patterns::Double(0, 360),
                         "Sector angle in degrees: 180/n for an integer n >= 1.");
+      prm.declare_entry("Sector mesh", "stretched", Patterns::Selection("stretched|mirrored"),
+                        "stretched: the quarter disc's mesh (3 cells) refined and stretched in "
+                        "angle onto the sector. mirrored: two mirror images of the stretched "
+                        "mesh of the half sector (Sector angle/2), joined along its edge, twice "
+                        "as many cells: the states of the sector symmetric about its bisector "
+                        "are then exactly those of the half sector on its own mesh, so that the "
+                        "two symmetry reductions can be compared to round-off.");
       prm.declare_entry("Global refinements", "3", Patterns::Integer(0, 8),
                         "Refinements of the coarse disc (5 cells) or sector (3 cells).");
       prm.declare_entry("Polynomial degree", "2", Patterns::Integer(2, 4),
@@ -351,6 +358,10 @@ namespace cosmo
                                "(180, 90, 60, 45, 36, 30, ...)");
         sector_n = static_cast<unsigned int>(std::round(n));
       }
+      sector_mesh = prm.get("Sector mesh");
+      if (sector_mesh == "mirrored" && domain != "sector")
+        throw io::InputError("Mesh", "Sector mesh", sector_mesh,
+                             "stretched with Domain = full disc (mirrored makes a sector)");
       refinements = prm.get_integer("Global refinements");
       if (domain == "full disc" && refinements == 0)
         throw io::InputError("Mesh", "Global refinements", "0",

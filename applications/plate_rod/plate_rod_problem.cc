@@ -132,6 +132,76 @@ namespace cosmo
       dof_handler.clear();
     }
 
+    namespace
+    {
+      /// The sector 0 <= theta <= pi/n of radius R: the quarter disc (3 cells; the half
+      /// disc for n = 1) refined, then stretched in angle onto [0, pi/n] (circles stay circles).
+      void
+      stretched_sector(Triangulation<2> &tria, const unsigned int n, const double R,
+                       const std::function<void()> &refine)
+      {
+        if (n == 1)
+          {
+            // The half disc y >= 0 (half_hyper_ball is x >= 0): no degenerate apex cell.
+            GridGenerator::half_hyper_ball(tria, Point<2>(), R);
+            GridTools::rotate(M_PI / 2, tria);
+          }
+        else
+          GridGenerator::quarter_hyper_ball(tria, Point<2>(), R);
+        refine();
+        if (n > 2)
+          {
+            const double s = 2. / n;
+            GridTools::transform(
+              [s](const Point<2> &p) {
+                const double r = p.norm(), a = std::atan2(p[1], p[0]);
+                return Point<2>(r * std::cos(s * a), r * std::sin(s * a));
+              },
+              tria);
+          }
+      }
+
+      /**
+       * The sector pi/n as two mirror images of the (refined) mesh of the
+       * sector pi/(2n), joined along theta = pi/(2n): the same discretization
+       * on both halves, so that the states of the sector pi/n symmetric about
+       * that line are exactly those of the sector pi/(2n) (a comparison of the
+       * two symmetry reductions to round-off, not to the discretization error).
+       */
+      void
+      mirrored_sector(Triangulation<2> &tria, const unsigned int n, const double R,
+                      const std::function<void(Triangulation<2> &)> &refine)
+      {
+        Triangulation<2> half, flat;
+        stretched_sector(half, 2 * n, R, [&]() { refine(half); });
+        GridGenerator::flatten_triangulation(half, flat);
+        const double          phi = M_PI / (2 * n);
+        const Tensor<1, 2>    e({std::cos(phi), std::sin(phi)});
+        std::vector<Point<2>> vertices = flat.get_vertices();
+        const unsigned int    nv       = vertices.size();
+        for (unsigned int v = 0; v < nv; ++v)
+          vertices.push_back(Point<2>(2 * (vertices[v] * e) * e - vertices[v]));
+        std::vector<CellData<2>> cells;
+        for (const auto &cell : flat.active_cell_iterators())
+          {
+            CellData<2> c(4), m(4);
+            for (unsigned int v = 0; v < 4; ++v)
+              c.vertices[v] = cell->vertex_index(v);
+            // The image of a cell has the opposite orientation: swap 0 <-> 1, 2 <-> 3.
+            const unsigned int order[4] = {1, 0, 3, 2};
+            for (unsigned int v = 0; v < 4; ++v)
+              m.vertices[v] = c.vertices[order[v]] + nv;
+            cells.push_back(c);
+            cells.push_back(m);
+          }
+        SubCellData                subcells;
+        std::vector<unsigned int>  unused;
+        GridTools::delete_duplicated_vertices(vertices, cells, subcells, unused, 1e-10 * R);
+        GridTools::consistently_order_cells(cells);
+        tria.create_triangulation(vertices, cells, subcells);
+      }
+    } // namespace
+
     void
     PlateRodProblem::make_mesh()
     {
@@ -139,34 +209,22 @@ namespace cosmo
       // The same coarse mesh and refinements on one process and on a distributed mesh.
       Triangulation<2> &triangulation = this->triangulation.get();
       triangulation.clear();
-      const bool sector = domain == "sector";
-      if (sector && sector_n == 1)
-        {
-          // The half disc y >= 0 (half_hyper_ball is x >= 0): no degenerate apex cell.
-          GridGenerator::half_hyper_ball(triangulation, Point<2>(), radius);
-          GridTools::rotate(M_PI / 2, triangulation);
-        }
-      else if (sector)
-        GridGenerator::quarter_hyper_ball(triangulation, Point<2>(), radius);
-      else
-        GridGenerator::hyper_ball(triangulation, Point<2>(), radius);
-      {
-        // 6 fields of degree p: about 6 p^2 unknowns per cell.
+      // 6 fields of degree p: about 6 p^2 unknowns per cell; refused before refining what
+      // cannot fit (io/resources.h).
+      auto refine = [this](Triangulation<2> &tria) {
         const boost::signals2::scoped_connection guard(
-          io::guard_refinement(triangulation, 6. * degree * degree, degree, "Mesh",
-                               "Global refinements", std::to_string(refinements)));
-        triangulation.refine_global(refinements);
-      }
-      if (sector && sector_n > 2)
+          io::guard_refinement(tria, 6. * degree * degree, degree, "Mesh", "Global refinements",
+                               std::to_string(refinements)));
+        tria.refine_global(refinements);
+      };
+      if (domain == "sector" && sector_mesh == "mirrored")
+        mirrored_sector(triangulation, sector_n, radius, refine);
+      else if (domain == "sector")
+        stretched_sector(triangulation, sector_n, radius, [&]() { refine(triangulation); });
+      else
         {
-          // Stretch the quarter disc in angle onto [0, pi/n]: circles stay circles.
-          const double s = 2. / sector_n;
-          GridTools::transform(
-            [s](const Point<2> &p) {
-              const double r = p.norm(), a = std::atan2(p[1], p[0]);
-              return Point<2>(r * std::cos(s * a), r * std::sin(s * a));
-            },
-            triangulation);
+          GridGenerator::hyper_ball(triangulation, Point<2>(), radius);
+          refine(triangulation);
         }
       // Straight cells inside, the rim on the exact circle (MappingQ(p) bends
       // the cells next to it).

@@ -275,6 +275,7 @@ namespace cosmo
       std::string                        thickness_profile_text = "1";
       std::string                    domain = "full disc";
       unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
+      std::string                    sector_mesh = "stretched"; ///< 'Mesh / Sector mesh'
       bool                           sector_as_full_disc = false; ///< plate VTUs: the sector's 2 n images
       unsigned int                   refinements = 3, degree = 2;
       /// 'Mesh / Distributed': the mesh divided over the MPI ranks (doc/parallel-runs.md).
