@@ -309,6 +309,9 @@ namespace cosmo
     analyse_stiffness(const FullMatrix<double> &K)
     {
       StiffnessAnalysis s;
+      // (no converged state: no stiffness to analyse)
+      if (K.m() != 6 || K.n() != 6)
+        return s;
       for (unsigned int a = 0; a < 6; ++a)
         for (unsigned int b = 0; b < 6; ++b)
           if (a != b && K(a, a) > 0 && K(b, b) > 0)

@@ -2,6 +2,8 @@
 
 #include <cosmo/assembly/bordered_system.h>
 
+#include <cmath>
+
 namespace cosmo
 {
   namespace assembly
@@ -201,7 +203,13 @@ namespace cosmo
           LAPACKFullMatrix<double> S(F.size(), F.size());
           for (unsigned int a = 0; a < F.size(); ++a)
             for (unsigned int b = 0; b < F.size(); ++b)
-              S(a, b) = schur(F[a], F[b]);
+              {
+                S(a, b) = schur(F[a], F[b]);
+                // LAPACK's dgeev does not return on a matrix that is not
+                // finite (moduli of 1e300): unknown, not an endless balance.
+                if (!std::isfinite(S(a, b)))
+                  return -1;
+              }
           S.compute_eigenvalues();
           for (unsigned int a = 0; a < F.size(); ++a)
             if (S.eigenvalue(a).real() < 0)

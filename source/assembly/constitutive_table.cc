@@ -18,6 +18,7 @@
 #include <chrono>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 namespace cosmo
 {
@@ -314,6 +315,15 @@ namespace cosmo
       const auto r2 = io::get_range(prm, "Second range", "Constitutive table");
       from1 = r1.from, to1 = r1.to, n1 = r1.n;
       from2 = r2.from, to2 = r2.to, n2 = r2.n;
+      // The sizes a rod's strains can have, as for 'Rod strains / Strains'
+      // (reduced_rod_problem.cc): |nu| <= 100, |kappa| <= 200 pi.
+      for (const auto &[entry, k, range] :
+           {std::tuple{"First range", first, r1}, std::tuple{"Second range", second, r2}})
+        if (!(std::max(std::abs(range.from), std::abs(range.to)) <= (k < 3 ? 100. : 200. * M_PI)))
+          throw io::InputError("Constitutive table", entry, prm.get(entry),
+                               std::string("strains of a rod: |nu| <= 100 and |kappa| <= 200 pi "
+                                           "per unit length (this axis is ") +
+                                 kinematics::strain_names[k] + ")");
       // Refused before anything is allocated (1e5 x 1e5 points ended in
       // std::bad_alloc); the estimate is printed when the table starts.
       if (is_enabled)

@@ -65,11 +65,37 @@ namespace cosmo
     }
 
     void
+    check_section_length(const double       length,
+                         const std::string &entry,
+                         const std::string &text)
+    {
+      if (!(length >= 1e-6 && length <= 1e6))
+        throw io::InputError("Cross-section", entry, text,
+                             "a length from 1e-6 to 1e6 (in the length unit of the moduli)");
+    }
+
+    void
+    check_aspect_ratio(const double a, const double b, const std::string &entry, const std::string &text)
+    {
+      if (!(std::max(a, b) <= 1e3 * std::min(a, b)))
+        throw io::InputError("Cross-section", entry, text,
+                             "extents within a ratio of 1e3 of each other (a thinner section "
+                             "is a strip: the strip application)");
+    }
+
+    void
     CrossSectionGeometry::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Cross-section");
       shape       = prm.get("Shape");
       refinements = prm.get_integer("Global refinements");
+      // Lengths a mesh of double-precision vertices can carry: the section's
+      // moments grow as L^4 (L^6 for warping) and the mapping's inversion works
+      // to ~1e-12 of a cell; 1e300 ended in a NaN area or a crash.
+      for (const std::string entry : {"Radius", "Width", "Height"})
+        check_section_length(prm.get_double(entry), entry, prm.get(entry));
+      check_aspect_ratio(prm.get_double("Width"), prm.get_double("Height"), "Height",
+                         prm.get("Height") + "' with 'Width' = '" + prm.get("Width"));
       shape_model = plugins::Registry<SectionShape>::create(shape);
       shape_model->parse_parameters(prm);
       prm.leave_subsection();

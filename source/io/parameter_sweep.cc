@@ -165,9 +165,27 @@ namespace cosmo
       return t;
     }
 
+    namespace
+    {
+      /**
+       * Back to the top level of the handler: a point whose parse_parameters
+       * threw (bad input at that value) left it inside a subsection, and the
+       * next point's entries were then looked up there ("You can't ask for
+       * entry <Growth factor> you have not yet declared"). 'Output' is a
+       * top-level subsection of every application and of no subsection.
+       */
+      void
+      leave_all_subsections(ParameterHandler &prm)
+      {
+        for (unsigned int depth = 0; depth < 16 && !prm.subsection_path_exists({"Output"}); ++depth)
+          prm.leave_subsection();
+      }
+    } // namespace
+
     void
     ParameterSweep::apply(ParameterHandler &prm, const unsigned int k) const
     {
+      leave_all_subsections(prm);
       set_entry(prm, entry_path, text(k), "Parameter sweep", "Entry");
     }
 

@@ -395,13 +395,18 @@ namespace cosmo
                     << "\nEverything written so far is kept.\n";
           return ended(2);
         }
+      // Errors outside a run's attempt() (its set-up, say): a directory the
+      // run wrote no result in is left as it was, as after bad input, so
+      // that no summary.json says "running" of a run that is over.
       catch (std::runtime_error &e)
         {
+          roll_back_unused_run_directories();
           std::cerr << "\n" << info.name << ": " << e.what() << "\n";
           return ended(1);
         }
       catch (ExceptionBase &e)
         {
+          roll_back_unused_run_directories();
           std::ostringstream s;
           e.print_info(s);
           std::cerr << "\n" << info.name << ": error: " << s.str() << "\n";
@@ -409,6 +414,7 @@ namespace cosmo
         }
       catch (std::exception &e)
         {
+          roll_back_unused_run_directories();
           std::cerr << "\n" << info.name << ": error: " << e.what() << "\n";
           return ended(1);
         }

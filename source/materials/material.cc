@@ -154,9 +154,11 @@ namespace cosmo
               m.name    = prm.get("Name");
               m.section = section;
               const double E = prm.get_double("Young's modulus");
-              if (!(E > 0))
+              if (!(E > 0 && E <= 1e100))
                 throw io::InputError(section, "Young's modulus", prm.get("Young's modulus"),
-                                     "must be positive");
+                                     "must be positive and at most 1e100 (its products with "
+                                     "itself and the lengths must stay finite in double "
+                                     "precision)");
               m.law = HyperelasticLaw::create(prm.get("Hyperelastic law"), E,
                                               prm.get_double("Poisson's ratio"));
               m.growth.parse_parameters(prm, section);

@@ -25,9 +25,10 @@ namespace cosmo
       young        = prm.get_double("Young's modulus");
       poisson      = prm.get_double("Poisson's ratio");
       shear_factor = prm.get_double("Shear correction factor");
-      if (!(young > 0))
+      if (!(young > 0 && young <= 1e100))
         throw io::InputError("Plate material", "Young's modulus", prm.get("Young's modulus"),
-                             "must be positive");
+                             "must be positive and at most 1e100 (its products with itself "
+                             "and the lengths must stay finite in double precision)");
       if (!(shear_factor > 0))
         throw io::InputError("Plate material", "Shear correction factor",
                              prm.get("Shear correction factor"), "must be positive");

@@ -6,6 +6,8 @@
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/surface_layer.h>
 
+#include <cmath>
+
 #include <cosmo/materials/energy_derivatives.h>
 
 #include <sstream>
@@ -164,6 +166,12 @@ namespace cosmo
               l.tension  = prm.get_double("Surface tension");
               l.lambda_s = prm.get_double("Surface Lame modulus");
               l.mu_s     = prm.get_double("Surface shear modulus");
+              for (const std::string entry :
+                   {"Surface tension", "Surface Lame modulus", "Surface shear modulus"})
+                if (!(std::abs(prm.get_double(entry)) <= 1e100))
+                  throw io::InputError(section, entry, prm.get(entry),
+                                       "a number of magnitude at most 1e100 (its products "
+                                       "with itself and the lengths must stay finite)");
               // Ws is convex near Es = 0 iff mu_s >= 0 and lambda_s + mu_s >= 0
               // (the 2D bulk modulus); a negative one would be an unstable layer.
               if (l.lambda_s + l.mu_s < 0)

@@ -88,6 +88,14 @@ namespace cosmo
     /// A positive number read from `entry` of `Cross-section` (entered), else io::InputError.
     double
     get_positive_length(ParameterHandler &prm, const std::string &entry);
+
+    /// io::InputError naming 'Cross-section/entry' unless 1e-6 <= length <= 1e6.
+    void
+    check_section_length(double length, const std::string &entry, const std::string &text);
+
+    /// io::InputError naming 'Cross-section/entry' unless max(a, b) <= 1e3 min(a, b).
+    void
+    check_aspect_ratio(double a, double b, const std::string &entry, const std::string &text);
   } // namespace geometry
 
   namespace plugins

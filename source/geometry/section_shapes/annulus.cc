@@ -25,6 +25,7 @@ namespace cosmo
         if (!(inner_radius > 0 && inner_radius < radius))
           throw io::InputError("Cross-section", "Inner radius", prm.get("Inner radius"),
                                "must lie between 0 and Radius = " + prm.get("Radius"));
+        check_section_length(inner_radius, "Inner radius", prm.get("Inner radius"));
       }
 
       SectionMesh

@@ -70,6 +70,9 @@ namespace cosmo
         if (!(a > 0 && b > 0))
           throw io::InputError("Cross-section", "Semi-axes", prm.get("Semi-axes"),
                                "two positive numbers");
+        check_section_length(a, "Semi-axes", prm.get("Semi-axes"));
+        check_section_length(b, "Semi-axes", prm.get("Semi-axes"));
+        check_aspect_ratio(a, b, "Semi-axes", prm.get("Semi-axes"));
       }
 
       SectionMesh
