@@ -236,10 +236,21 @@ namespace cosmo
         for (const auto &e : fs::directory_iterator(dir, ec))
           if (is_legacy_output(e))
             earlier.push_back(e.path().filename().string());
-      for (const auto &e : fs::directory_iterator(dir, ec))
-        if (e.is_regular_file() && e.path().filename().string().find(".tmp") != std::string::npos &&
-            std::find(earlier.begin(), earlier.end(), e.path().filename().string()) == earlier.end())
-          earlier.push_back(e.path().filename().string());
+      // A temporary file is a write a killed run never completed (each file
+      // is written under a temporary name and renamed): removed, not kept
+      // in previous/ as if it were a result.
+      {
+        std::vector<fs::path> unfinished;
+        for (const auto &e : fs::directory_iterator(dir, ec))
+          if (e.is_regular_file() && e.path().filename().string().find(".tmp") != std::string::npos)
+            unfinished.push_back(e.path());
+        for (const auto &f : unfinished)
+          {
+            fs::remove(f, ec);
+            earlier.erase(std::remove(earlier.begin(), earlier.end(), f.filename().string()),
+                          earlier.end());
+          }
+      }
       // Stashes of older previous/ directories left by runs that ended
       // without a result are obsolete.
       for (const auto &e : fs::directory_iterator(dir, ec))
