@@ -112,10 +112,24 @@ namespace cosmo
 
     namespace
     {
-      bool
-      distributed(const Triangulation<2> &tria)
+      /**
+       * `visit` every cell of every mesh the run uses: on a serial mesh the
+       * cells of every level (the coarse-mesh start's meshes are its coarser
+       * levels), on a distributed one this rank's active cells.
+       */
+      void
+      for_each_cell_of_the_run(const Triangulation<2> &                                      tria,
+                               const std::function<void(const Triangulation<2>::cell_iterator &)> &visit)
       {
-        return dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(&tria) != nullptr;
+        if (dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(&tria) != nullptr)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned())
+                visit(cell);
+          }
+        else
+          for (const auto &cell : tria.cell_iterators())
+            visit(cell);
       }
     } // namespace
 
@@ -128,8 +142,7 @@ namespace cosmo
       const FE_Nothing<2>   nothing;
       FEValues<2>           fev(mapping, nothing, quadrature, update_quadrature_points);
       std::vector<Point<2>> points;
-      const bool            only_active_owned = distributed(tria);
-      auto add = [&](const Triangulation<2>::cell_iterator &cell) {
+      for_each_cell_of_the_run(tria, [&](const Triangulation<2>::cell_iterator &cell) {
         if (!selected(cell))
           return;
         for (const unsigned int v : cell->vertex_indices())
@@ -137,16 +150,7 @@ namespace cosmo
         fev.reinit(cell);
         const auto &qp = fev.get_quadrature_points();
         points.insert(points.end(), qp.begin(), qp.end());
-      };
-      if (only_active_owned)
-        {
-          for (const auto &cell : tria.active_cell_iterators())
-            if (cell->is_locally_owned())
-              add(cell);
-        }
-      else
-        for (const auto &cell : tria.cell_iterators())
-          add(cell);
+      });
       return points;
     }
 
@@ -160,8 +164,7 @@ namespace cosmo
       const FE_Nothing<2>   nothing;
       FEFaceValues<2>       fev(mapping, nothing, quadrature, update_quadrature_points);
       std::vector<Point<2>> points;
-      const bool            only_active_owned = distributed(tria);
-      auto add = [&](const Triangulation<2>::cell_iterator &cell) {
+      for_each_cell_of_the_run(tria, [&](const Triangulation<2>::cell_iterator &cell) {
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && selected(cell->face(f)))
             {
@@ -171,16 +174,7 @@ namespace cosmo
               const auto &qp = fev.get_quadrature_points();
               points.insert(points.end(), qp.begin(), qp.end());
             }
-      };
-      if (only_active_owned)
-        {
-          for (const auto &cell : tria.active_cell_iterators())
-            if (cell->is_locally_owned())
-              add(cell);
-        }
-      else
-        for (const auto &cell : tria.cell_iterators())
-          add(cell);
+      });
       return points;
     }
   } // namespace materials
