@@ -175,8 +175,11 @@ def generate(exe):
     lines = []
     for paths in sections(tree, order):
         first, last = " / ".join(paths[0]), " / ".join(paths[-1])
-        lines.append("### `%s`" % first if len(paths) == 1 else
-                     "### `%s` … `%s`" % (first, last))
+        if not first:
+            lines.append("### Top level (every application)")
+        else:
+            lines.append("### `%s`" % first if len(paths) == 1 else
+                         "### `%s` … `%s`" % (first, last))
         lines.append("")
         if len(paths) > 1:
             lines.append("These %d sections declare the same entries; only some "

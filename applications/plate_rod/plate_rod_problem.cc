@@ -2,8 +2,6 @@
 // local variables): the heavy translation unit of part 3.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/base/work_stream.h>
-#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -13,6 +11,8 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <cosmo/solvers/run_start.h>
+#include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/assembly/assumed_shear.h>
 #include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
@@ -68,63 +68,100 @@ namespace cosmo
         return {2, {10, 11, 0}, {N, dS, 0}};
       }
 
-      struct Scratch
-      {
-        Scratch(const Mapping<2> &     mapping,
-                const FiniteElement<2> &fe,
-                const Quadrature<2> &   full,
-                const Quadrature<2> &   reduced,
-                const Quadrature<1> &   face,
-                const Quadrature<2> &   tying)
-          : fev_full(mapping, fe, full,
-                     update_values | update_gradients | update_quadrature_points |
-                       update_JxW_values | update_inverse_jacobians)
-          , fev_reduced(mapping, fe, reduced,
-                        update_values | update_gradients | update_quadrature_points |
-                          update_JxW_values)
-          , fev_face(mapping, fe, face,
-                     update_values | update_gradients | update_quadrature_points |
-                       update_JxW_values | update_normal_vectors)
-          , fev_tying(mapping, fe, tying, update_values | update_gradients | update_jacobians)
-          , U_local(fe.n_dofs_per_cell())
-        {}
-        Scratch(const Scratch &o)
-          : Scratch(o.fev_full.get_mapping(), o.fev_full.get_fe(), o.fev_full.get_quadrature(),
-                    o.fev_reduced.get_quadrature(), o.fev_face.get_quadrature(),
-                    o.fev_tying.get_quadrature())
-        {}
-        FEValues<2>         fev_full, fev_reduced;
-        FEFaceValues<2>     fev_face;
-        FEValues<2>         fev_tying;
-        std::vector<double> U_local;
-        std::vector<Drive>  drives;
-        /// Assumed shear: per tying point its drives, the covariant strain and its derivatives
-        /// in the local variables; V(i, k) = d e_k / d U_i; the energy's derivatives in the e_k.
-        std::vector<std::vector<Drive>>                                    tying_drives; ///< per location
-        std::vector<std::array<double, kinematics::plate_local_variables>> tying_z; ///< per location
-        std::vector<double>                                                tying_strain;
-        std::vector<std::array<double, kinematics::plate_local_variables>> tying_gradient;
-        std::vector<std::array<double, kinematics::plate_local_variables *
-                                         kinematics::plate_local_variables>>
-                           tying_hessian;
-        FullMatrix<double> V, M, VM;
-        std::vector<double> mu;
-      };
 
-      struct Copy
-      {
-        explicit Copy(const unsigned int dpc)
-          : idx(dpc)
-          , r(dpc)
-          , K(dpc, dpc)
-        {}
-        std::vector<types::global_dof_index> idx;
-        Vector<double>                       r;
-        FullMatrix<double>                   K;
-        double                               plate_energy = 0, rod_energy = 0;
-      };
 
     } // namespace
+
+    namespace
+    {
+      // COSMO_PLATE_NESTED_AD=1: nested AD of the plate energy even where the
+      // model has a chain rule (to measure against, benchmarks/README.md).
+      const bool nested_ad_only = std::getenv("COSMO_PLATE_NESTED_AD") != nullptr;
+    } // namespace
+
+    /// Per-thread work space of the cell loop (WorkStream scratch).
+    struct PlateRodProblem::Scratch
+    {
+      Scratch(const Mapping<2> &     mapping,
+              const FiniteElement<2> &fe,
+              const Quadrature<2> &   full,
+              const Quadrature<2> &   reduced,
+              const Quadrature<1> &   face,
+              const Quadrature<2> &   tying)
+        : fev_full(mapping, fe, full,
+                   update_values | update_gradients | update_quadrature_points |
+                     update_JxW_values | update_inverse_jacobians)
+        , fev_reduced(mapping, fe, reduced,
+                      update_values | update_gradients | update_quadrature_points |
+                        update_JxW_values)
+        , fev_face(mapping, fe, face,
+                   update_values | update_gradients | update_quadrature_points |
+                     update_JxW_values | update_normal_vectors)
+        , fev_tying(mapping, fe, tying, update_values | update_gradients | update_jacobians)
+        , U_local(fe.n_dofs_per_cell())
+      {}
+      Scratch(const Scratch &o)
+        : Scratch(o.fev_full.get_mapping(), o.fev_full.get_fe(), o.fev_full.get_quadrature(),
+                  o.fev_reduced.get_quadrature(), o.fev_face.get_quadrature(),
+                  o.fev_tying.get_quadrature())
+      {}
+      FEValues<2>         fev_full, fev_reduced;
+      FEFaceValues<2>     fev_face;
+      FEValues<2>         fev_tying;
+      std::vector<double> U_local;
+      std::vector<Drive>  drives;
+      /// Assumed shear: per tying point its drives, the covariant strain and its derivatives
+      /// in the local variables; V(i, k) = d e_k / d U_i; the energy's derivatives in the e_k.
+      std::vector<std::vector<Drive>>                                    tying_drives; ///< per location
+      std::vector<std::array<double, kinematics::plate_local_variables>> tying_z; ///< per location
+      std::vector<double>                                                tying_strain;
+      std::vector<std::array<double, kinematics::plate_local_variables>> tying_gradient;
+      std::vector<std::array<double, kinematics::plate_local_variables *
+                                       kinematics::plate_local_variables>>
+                         tying_hessian;
+      FullMatrix<double> V, M, VM;
+      std::vector<double> mu;
+    };
+
+    /// What every cell of one assembly shares: the load, the laws at it, the
+    /// assumed shear's tying points and weights.
+    struct PlateRodProblem::CellLoopData
+    {
+      CellLoopData(const PlateRodProblem &p, const Quadrature<2> &full, const bool jacobian)
+        : dpc(p.fe->n_dofs_per_cell())
+        , comp(dpc)
+        , assumed_shear(p.degree, p.shear_integration != ShearIntegration::interior_tying)
+        , tying_weights(assumed_shear.interpolation(full))
+        , n_tying(assumed_shear.n_tying_points())
+        , n_locations(assumed_shear.tying_points().size())
+        , strains_at(n_locations)
+        , t(p.load_parameter)
+        , g_rod(p.rod_growth_at(t))
+        , rod(p.rod_law())
+        , rim_natural_curvature({{t * p.rod_natural_curvature[0], t * p.rod_natural_curvature[1],
+                                  t * p.rod_natural_curvature[2]}})
+        , shear_scale(p.model->shear_scale())
+        , jacobian(jacobian)
+      {
+        for (unsigned int i = 0; i < dpc; ++i)
+          comp[i] = p.fe->system_to_component_index(i).first;
+        // The tied strains at each location (e_0 and e_1 share some), once per assembly.
+        for (unsigned int k = 0; k < n_tying; ++k)
+          strains_at[assumed_shear.location_of(k)].push_back(k);
+      }
+      const unsigned int        dpc;
+      std::vector<unsigned int> comp;
+      /// The assumed shear's tying points and their weights at the full quadrature.
+      const assembly::AssumedShear           assumed_shear;
+      const FullMatrix<double>               tying_weights;
+      const unsigned int                     n_tying, n_locations;
+      std::vector<std::vector<unsigned int>> strains_at;
+      const double                           t, g_rod;
+      const materials::QuadraticRodLaw       rod;
+      const std::array<double, 3>            rim_natural_curvature;
+      const double                           shear_scale;
+      const bool                             jacobian;
+    };
 
     PlateRodProblem::PlateRodProblem() = default;
     PlateRodProblem::~PlateRodProblem()
@@ -383,7 +420,7 @@ namespace cosmo
     {
       residuals.clear();
       // A stiffness with its constraints eliminated: every diagonal entry is nonzero.
-      solver.set_nonzero_diagonal(true);
+      system.set_nonzero_diagonal(true);
       make_mesh();
       fe = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 6);
       dof_handler.reinit(triangulation.get());
@@ -401,21 +438,15 @@ namespace cosmo
           DoFTools::make_sparsity_pattern(dof_handler, sp, constraints, false,
                                           Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
           sp.compress();
-          distributed_matrix.reinit(sp);
           layout = solvers::ReplicatedVectorLayout(MPI_COMM_WORLD, owned);
-          if (!distributed_solver)
-            distributed_solver = std::make_unique<solvers::DistributedDirectSolver>(MPI_COMM_WORLD);
-          sparsity.reinit(0, 0, 0);
-          matrix.reinit(sparsity);
+          system.reinit(sp, 0, layout);
         }
       else
         {
           DynamicSparsityPattern dsp(dof_handler.n_dofs());
           DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-          sparsity.copy_from(dsp);
-          matrix.reinit(sparsity);
+          system.reinit(dsp, 0);
           layout = solvers::ReplicatedVectorLayout();
-          distributed_solver.reset();
         }
       solution.reinit(dof_handler.n_dofs());
       // Per DoF, its field and whether it is constrained, taken from its owner's cells.
@@ -540,255 +571,268 @@ namespace cosmo
       return law;
     }
 
+    // The transverse shear of one cell with assumed covariant strains (fev_full reinit on it):
+    // the energy E = sum_q W_q(e(q)) JxW_q, e(q) = sum_k N_qk e_k, depends on the DoFs through
+    // the tying points' strains e_k only, so its gradient is sum_k mu_k de_k/dU and its Hessian
+    // V M V^T + sum_k mu_k d2e_k/dU2, with mu_k = dE/de_k, M_kl = d2E/de_k de_l, V = de/dU.
+    double
+    PlateRodProblem::assumed_shear_of_cell(const CellLoopData &        d,
+                                           Scratch &                   sc,
+                                           assembly::CellContribution &c) const
+    {
+      const unsigned int dpc = d.dpc, n_tying = d.n_tying, n_locations = d.n_locations;
+      const auto &       comp          = d.comp;
+      const auto &       assumed_shear = d.assumed_shear;
+      const auto &       tying_weights = d.tying_weights;
+      const auto &       strains_at    = d.strains_at;
+      const double       t = d.t, shear_scale = d.shear_scale;
+      const bool         jacobian = d.jacobian;
+      sc.fev_tying.reinit(sc.fev_full.get_cell());
+      sc.tying_drives.resize(n_locations);
+      sc.tying_z.resize(n_locations);
+      sc.tying_strain.resize(n_tying);
+      sc.tying_gradient.resize(n_tying);
+      sc.tying_hessian.resize(n_tying);
+      sc.V.reinit(dpc, n_tying);
+      sc.mu.assign(n_tying, 0.);
+      if (jacobian)
+        {
+          sc.M.reinit(n_tying, n_tying);
+          sc.VM.reinit(dpc, n_tying);
+        }
+      // The fields at each location (e_0 and e_1 share some), then each tied strain.
+      for (unsigned int l = 0; l < n_locations; ++l)
+        {
+          auto &drives = sc.tying_drives[l];
+          drives.resize(dpc);
+          for (unsigned int i = 0; i < dpc; ++i)
+            drives[i] = plate_drive(comp[i], sc.fev_tying.shape_value(i, l),
+                                    sc.fev_tying.shape_grad(i, l));
+          sc.tying_z[l].fill(0.);
+          assembly::gather_local_variables<n_plate>(drives, sc.U_local, sc.tying_z[l]);
+        }
+      // Location by location: the strains tied at one location follow each other, so that
+      // the model's shear derivatives can reuse its director there.
+      for (unsigned int location = 0; location < n_locations; ++location)
+        for (const unsigned int k : strains_at[location])
+        {
+          const auto &       drives   = sc.tying_drives[location];
+          const auto &       z        = sc.tying_z[location];
+          const Tensor<2, 2> J        = sc.fev_tying.jacobian(location);
+          const unsigned int comp_k   = assumed_shear.component(k);
+          // The model's own chain rule if it has one; else nested AD: the
+          // shear depends on du/dX and theta, local variables 3 to 10.
+          if (nested_ad_only ||
+              !model->covariant_shear_strain_derivatives(z, J, comp_k, jacobian, sc.tying_strain[k],
+                                                         sc.tying_gradient[k], sc.tying_hessian[k]))
+            {
+              materials::internal::differentiate_subset<8>(
+                z, 3,
+                [&](const auto &x) {
+                  using Number = std::decay_t<decltype(x[0])>;
+                  std::array<Number, n_plate> y;
+                  for (unsigned int m = 0; m < n_plate; ++m)
+                    y[m] = m >= 3 && m < 11 ? x[m - 3] : Number(z[m]);
+                  return kinematics::covariant_shear_strain(y, *model, J, comp_k);
+                },
+                jacobian, sc.tying_strain[k], sc.tying_gradient[k], sc.tying_hessian[k]);
+            }
+          for (unsigned int i = 0; i < dpc; ++i)
+            {
+              double v = 0;
+              for (unsigned int p = 0; p < drives[i].n; ++p)
+                v += drives[i].w[p] * sc.tying_gradient[k][drives[i].var[p]];
+              sc.V(i, k) = v;
+            }
+        }
+      double energy = 0;
+      const FEValues<2> &fev = sc.fev_full;
+      for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
+        {
+          std::array<double, 2> e{{0., 0.}};
+          for (unsigned int k = 0; k < n_tying; ++k)
+            e[assumed_shear.component(k)] += tying_weights(q, k) * sc.tying_strain[k];
+          const auto         gr   = growth_at(fev.quadrature_point(q), t);
+          const Tensor<2, 2> Kinv = fev.inverse_jacobian(q);
+          const auto         law  = plate_law_at(fev.quadrature_point(q));
+          double                W = 0;
+          std::array<double, 2> dW;
+          std::array<double, 4> ddW;
+          materials::internal::differentiate<2>(
+            e,
+            [&](const auto &x) {
+              return kinematics::assumed_shear_energy(x, Kinv, gr, law, shear_scale);
+            },
+            jacobian, W, dW, ddW);
+          energy += W * fev.JxW(q);
+          for (unsigned int k = 0; k < n_tying; ++k)
+            {
+              const double a = fev.JxW(q) * tying_weights(q, k);
+              sc.mu[k] += a * dW[assumed_shear.component(k)];
+              if (jacobian)
+                for (unsigned int l = 0; l < n_tying; ++l)
+                  sc.M(k, l) += a * tying_weights(q, l) *
+                                ddW[2 * assumed_shear.component(k) + assumed_shear.component(l)];
+            }
+        }
+      // sum_k mu_k (de_k/dU, d2e_k/dU2) through the drives, one pass per location (the
+      // strains tied there summed), then V M V^T.
+      std::array<double, n_plate>           g;
+      std::array<double, n_plate * n_plate> H; // (read by add_point only with the Jacobian)
+      for (unsigned int l = 0; l < n_locations; ++l)
+        {
+          g.fill(0.);
+          if (jacobian)
+            H.fill(0.);
+          for (const unsigned int k : strains_at[l])
+            {
+              for (unsigned int m = 0; m < n_plate; ++m)
+                g[m] += sc.mu[k] * sc.tying_gradient[k][m];
+              if (jacobian)
+                for (unsigned int m = 0; m < n_plate * n_plate; ++m)
+                  H[m] += sc.mu[k] * sc.tying_hessian[k][m];
+            }
+          assembly::add_point<n_plate>(sc.tying_drives[l], g, H, 1., jacobian, c.residual, c.hessian);
+        }
+      if (jacobian)
+        {
+          sc.V.mmult(sc.VM, sc.M);
+          sc.VM.mTmult(c.hessian, sc.V, true);
+        }
+      return energy;
+    }
+
+    void
+    PlateRodProblem::plate_of_cell(const CellLoopData &                         d,
+                                   const DoFHandler<2>::active_cell_iterator &cell,
+                                   Scratch &                                    sc,
+                                   assembly::CellContribution &                 c) const
+    {
+      const unsigned int dpc  = d.dpc;
+      const auto &       comp = d.comp;
+      const double       t = d.t, shear_scale = d.shear_scale;
+      const bool         jacobian = d.jacobian;
+      sc.drives.resize(dpc);
+      std::array<double, n_plate>           z, g;
+      std::array<double, n_plate * n_plate> H;
+      const bool stabilized_shear = shear_integration == ShearIntegration::stabilized;
+      for (const bool membrane_bending : {true, false})
+        {
+          if (!membrane_bending && (shear_integration == ShearIntegration::assumed_strain ||
+                                    shear_integration == ShearIntegration::interior_tying))
+            {
+              c.scalars[0] += assumed_shear_of_cell(d, sc, c);
+              continue;
+            }
+          FEValues<2> &fev =
+            membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
+          const double cell_shear_scale =
+            !membrane_bending && stabilized_shear ?
+              kinematics::stabilized_shear_scale(thickness_at(cell->center()), shear_scale,
+                                                 shear_stabilization,
+                                                 cell->diameter()) :
+              shear_scale;
+          fev.reinit(cell);
+          for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
+            {
+              z.fill(0.);
+              for (unsigned int i = 0; i < dpc; ++i)
+                sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
+              assembly::gather_local_variables<n_plate>(sc.drives, sc.U_local, z);
+              const auto gr  = growth_at(fev.quadrature_point(q), t);
+              const auto law = plate_law_at(fev.quadrature_point(q));
+              double     W   = 0;
+              // The plate energy depends on the gradients of u, on theta and (membrane and
+              // bending only) on its gradients: 12 resp. 8 of the 15 local variables are
+              // differentiated (the cost of nested AD grows like the square).
+              auto energy_of = [&](const auto &x) {
+                using Number = std::decay_t<decltype(x[0])>;
+                std::array<Number, n_plate> y;
+                for (unsigned int k = 0; k < n_plate; ++k)
+                  y[k] = k >= 3 && k < 3 + x.size() ? x[k - 3] : Number(z[k]);
+                return kinematics::plate_energy(y, gr, law, *model, membrane_bending,
+                                                cell_shear_scale);
+              };
+              // The model's own chain rule if it has one (the Cosserat kinematics).
+              if (nested_ad_only ||
+                  !model->plate_energy_derivatives(z, gr, law, membrane_bending, cell_shear_scale,
+                                                   jacobian, W, g, H))
+                {
+                  if (membrane_bending)
+                    materials::internal::differentiate_subset<12>(z, 3, energy_of, jacobian, W, g, H);
+                  else
+                    materials::internal::differentiate_subset<8>(z, 3, energy_of, jacobian, W, g, H);
+                }
+              c.scalars[0] += W * fev.JxW(q);
+              assembly::add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c.residual,
+                                           c.hessian);
+            }
+        }
+    }
+
+    void
+    PlateRodProblem::rim_of_cell(const CellLoopData &                         d,
+                                 const DoFHandler<2>::active_cell_iterator &cell,
+                                 Scratch &                                    sc,
+                                 assembly::CellContribution &                 c) const
+    {
+      const unsigned int dpc      = d.dpc;
+      const auto &       comp     = d.comp;
+      const auto &       rod      = d.rod;
+      const double       g_rod    = d.g_rod;
+      const auto &       rim_natural_curvature = d.rim_natural_curvature;
+      const bool         jacobian = d.jacobian;
+      // The rim rod on the cell's rim faces.
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+          {
+            sc.fev_face.reinit(cell, f);
+            std::array<double, n_rim>         zr, gr;
+            std::array<double, n_rim * n_rim> Hr;
+            for (unsigned int q = 0; q < sc.fev_face.n_quadrature_points; ++q)
+              {
+                const Point<2> X     = sc.fev_face.quadrature_point(q);
+                const auto     frame = kinematics::circular_rim_frame(X, sc.fev_face.normal_vector(q));
+                const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
+                zr.fill(0.);
+                for (unsigned int i = 0; i < dpc; ++i)
+                  sc.drives[i] = rim_drive(comp[i], sc.fev_face.shape_value(i, q),
+                                           sc.fev_face.shape_grad(i, q) * t2);
+                assembly::gather_local_variables<n_rim>(sc.drives, sc.U_local, zr);
+                auto law              = rod;
+                law.reference_strains = kinematics::rim_reference_strains(X, frame);
+                double W              = 0;
+                materials::internal::differentiate<n_rim>(
+                  zr,
+                  [&](const auto &x) {
+                    return kinematics::rim_rod_energy(x, frame, law, g_rod, *model,
+                                                      rim_natural_curvature);
+                  },
+                  jacobian, W, gr, Hr);
+                c.scalars[1] += W * sc.fev_face.JxW(q);
+                assembly::add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian,
+                                           c.residual, c.hessian);
+              }
+          }
+    }
+
     int
     PlateRodProblem::assemble(const Vector<double> &U,
                               Vector<double> *      R,
                               const bool            jacobian,
                               double *              energies)
     {
-      const unsigned int        dpc = fe->n_dofs_per_cell();
-      std::vector<unsigned int> comp(dpc);
-      for (unsigned int i = 0; i < dpc; ++i)
-        comp[i] = fe->system_to_component_index(i).first;
-      const QGauss<2> full(degree + 1), reduced(degree);
-      const QGauss<1> face(degree);
-      // The assumed shear's tying points and their weights at the full quadrature.
-      const assembly::AssumedShear assumed_shear(
-        degree, shear_integration != ShearIntegration::interior_tying);
-      const FullMatrix<double>     tying_weights = assumed_shear.interpolation(full);
-      const unsigned int           n_tying       = assumed_shear.n_tying_points();
-      const unsigned int           n_locations   = assumed_shear.tying_points().size();
-      // The tied strains at each location (e_0 and e_1 share some), once per assembly.
-      std::vector<std::vector<unsigned int>> strains_at(n_locations);
-      for (unsigned int k = 0; k < n_tying; ++k)
-        strains_at[assumed_shear.location_of(k)].push_back(k);
-      const double    t            = load_parameter;
-      const double    g_rod        = rod_growth_at(t);
-      const auto      rod          = rod_law();
-      const std::array<double, 3> rim_natural_curvature = {
-        {t * rod_natural_curvature[0], t * rod_natural_curvature[1], t * rod_natural_curvature[2]}};
-      const double    shear_scale  = model->shear_scale();
-      // COSMO_PLATE_NESTED_AD=1: nested AD of the plate energy even where the
-      // model has a chain rule (to measure against, benchmarks/README.md).
-      static const bool nested_ad_only = std::getenv("COSMO_PLATE_NESTED_AD") != nullptr;
-
-      // The transverse shear of one cell with assumed covariant strains (fev_full reinit on it):
-      // the energy E = sum_q W_q(e(q)) JxW_q, e(q) = sum_k N_qk e_k, depends on the DoFs through
-      // the tying points' strains e_k only, so its gradient is sum_k mu_k de_k/dU and its Hessian
-      // V M V^T + sum_k mu_k d2e_k/dU2, with mu_k = dE/de_k, M_kl = d2E/de_k de_l, V = de/dU.
-      auto assumed_shear_of_cell = [&](Scratch &sc, Copy &c, const bool jacobian) {
-        sc.fev_tying.reinit(sc.fev_full.get_cell());
-        sc.tying_drives.resize(n_locations);
-        sc.tying_z.resize(n_locations);
-        sc.tying_strain.resize(n_tying);
-        sc.tying_gradient.resize(n_tying);
-        sc.tying_hessian.resize(n_tying);
-        sc.V.reinit(dpc, n_tying);
-        sc.mu.assign(n_tying, 0.);
-        if (jacobian)
-          {
-            sc.M.reinit(n_tying, n_tying);
-            sc.VM.reinit(dpc, n_tying);
-          }
-        // The fields at each location (e_0 and e_1 share some), then each tied strain.
-        for (unsigned int l = 0; l < n_locations; ++l)
-          {
-            auto &drives = sc.tying_drives[l];
-            drives.resize(dpc);
-            for (unsigned int i = 0; i < dpc; ++i)
-              drives[i] = plate_drive(comp[i], sc.fev_tying.shape_value(i, l),
-                                      sc.fev_tying.shape_grad(i, l));
-            sc.tying_z[l].fill(0.);
-            assembly::gather_local_variables<n_plate>(drives, sc.U_local, sc.tying_z[l]);
-          }
-        // Location by location: the strains tied at one location follow each other, so that
-        // the model's shear derivatives can reuse its director there.
-        for (unsigned int location = 0; location < n_locations; ++location)
-          for (const unsigned int k : strains_at[location])
-          {
-            const auto &       drives   = sc.tying_drives[location];
-            const auto &       z        = sc.tying_z[location];
-            const Tensor<2, 2> J        = sc.fev_tying.jacobian(location);
-            const unsigned int comp_k   = assumed_shear.component(k);
-            // The model's own chain rule if it has one; else nested AD: the
-            // shear depends on du/dX and theta, local variables 3 to 10.
-            if (nested_ad_only ||
-                !model->covariant_shear_strain_derivatives(z, J, comp_k, jacobian, sc.tying_strain[k],
-                                                           sc.tying_gradient[k], sc.tying_hessian[k]))
-              {
-                materials::internal::differentiate_subset<8>(
-                  z, 3,
-                  [&](const auto &x) {
-                    using Number = std::decay_t<decltype(x[0])>;
-                    std::array<Number, n_plate> y;
-                    for (unsigned int m = 0; m < n_plate; ++m)
-                      y[m] = m >= 3 && m < 11 ? x[m - 3] : Number(z[m]);
-                    return kinematics::covariant_shear_strain(y, *model, J, comp_k);
-                  },
-                  jacobian, sc.tying_strain[k], sc.tying_gradient[k], sc.tying_hessian[k]);
-              }
-            for (unsigned int i = 0; i < dpc; ++i)
-              {
-                double v = 0;
-                for (unsigned int p = 0; p < drives[i].n; ++p)
-                  v += drives[i].w[p] * sc.tying_gradient[k][drives[i].var[p]];
-                sc.V(i, k) = v;
-              }
-          }
-        double energy = 0;
-        const FEValues<2> &fev = sc.fev_full;
-        for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
-          {
-            std::array<double, 2> e{{0., 0.}};
-            for (unsigned int k = 0; k < n_tying; ++k)
-              e[assumed_shear.component(k)] += tying_weights(q, k) * sc.tying_strain[k];
-            const auto         gr   = growth_at(fev.quadrature_point(q), t);
-            const Tensor<2, 2> Kinv = fev.inverse_jacobian(q);
-            const auto         law  = plate_law_at(fev.quadrature_point(q));
-            double                W = 0;
-            std::array<double, 2> dW;
-            std::array<double, 4> ddW;
-            materials::internal::differentiate<2>(
-              e,
-              [&](const auto &x) {
-                return kinematics::assumed_shear_energy(x, Kinv, gr, law, shear_scale);
-              },
-              jacobian, W, dW, ddW);
-            energy += W * fev.JxW(q);
-            for (unsigned int k = 0; k < n_tying; ++k)
-              {
-                const double a = fev.JxW(q) * tying_weights(q, k);
-                sc.mu[k] += a * dW[assumed_shear.component(k)];
-                if (jacobian)
-                  for (unsigned int l = 0; l < n_tying; ++l)
-                    sc.M(k, l) += a * tying_weights(q, l) *
-                                  ddW[2 * assumed_shear.component(k) + assumed_shear.component(l)];
-              }
-          }
-        // sum_k mu_k (de_k/dU, d2e_k/dU2) through the drives, one pass per location (the
-        // strains tied there summed), then V M V^T.
-        std::array<double, n_plate>           g;
-        std::array<double, n_plate * n_plate> H; // (read by add_point only with the Jacobian)
-        for (unsigned int l = 0; l < n_locations; ++l)
-          {
-            g.fill(0.);
-            if (jacobian)
-              H.fill(0.);
-            for (const unsigned int k : strains_at[l])
-              {
-                for (unsigned int m = 0; m < n_plate; ++m)
-                  g[m] += sc.mu[k] * sc.tying_gradient[k][m];
-                if (jacobian)
-                  for (unsigned int m = 0; m < n_plate * n_plate; ++m)
-                    H[m] += sc.mu[k] * sc.tying_hessian[k][m];
-              }
-            assembly::add_point<n_plate>(sc.tying_drives[l], g, H, 1., jacobian, c.r, c.K);
-          }
-        if (jacobian)
-          {
-            sc.V.mmult(sc.VM, sc.M);
-            sc.VM.mTmult(c.K, sc.V, true);
-          }
-        return energy;
-      };
-
+      const QGauss<2>    full(degree + 1), reduced(degree);
+      const QGauss<1>    face(degree);
+      const CellLoopData data(*this, full, jacobian);
+      // The cell's scalars: the plate's energy and the rim's.
       auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
                         Scratch &                                           sc,
-                        Copy &                                              c) {
-        cell->get_dof_indices(c.idx);
-        for (unsigned int i = 0; i < dpc; ++i)
-          sc.U_local[i] = U[c.idx[i]];
-        c.r            = 0;
-        c.plate_energy = 0;
-        c.rod_energy   = 0;
-        if (jacobian)
-          c.K = 0;
-        sc.drives.resize(dpc);
-        std::array<double, n_plate>           z, g;
-        std::array<double, n_plate * n_plate> H;
-        const bool stabilized_shear = shear_integration == ShearIntegration::stabilized;
-        for (const bool membrane_bending : {true, false})
-          {
-            if (!membrane_bending && (shear_integration == ShearIntegration::assumed_strain ||
-                                      shear_integration == ShearIntegration::interior_tying))
-              {
-                c.plate_energy += assumed_shear_of_cell(sc, c, jacobian);
-                continue;
-              }
-            FEValues<2> &fev =
-              membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
-            const double cell_shear_scale =
-              !membrane_bending && stabilized_shear ?
-                kinematics::stabilized_shear_scale(thickness_at(cell->center()), shear_scale,
-                                                   shear_stabilization,
-                                                   cell->diameter()) :
-                shear_scale;
-            fev.reinit(cell);
-            for (unsigned int q = 0; q < fev.n_quadrature_points; ++q)
-              {
-                z.fill(0.);
-                for (unsigned int i = 0; i < dpc; ++i)
-                  sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
-                assembly::gather_local_variables<n_plate>(sc.drives, sc.U_local, z);
-                const auto gr  = growth_at(fev.quadrature_point(q), t);
-                const auto law = plate_law_at(fev.quadrature_point(q));
-                double     W   = 0;
-                // The plate energy depends on the gradients of u, on theta and (membrane and
-                // bending only) on its gradients: 12 resp. 8 of the 15 local variables are
-                // differentiated (the cost of nested AD grows like the square).
-                auto energy_of = [&](const auto &x) {
-                  using Number = std::decay_t<decltype(x[0])>;
-                  std::array<Number, n_plate> y;
-                  for (unsigned int k = 0; k < n_plate; ++k)
-                    y[k] = k >= 3 && k < 3 + x.size() ? x[k - 3] : Number(z[k]);
-                  return kinematics::plate_energy(y, gr, law, *model, membrane_bending,
-                                                  cell_shear_scale);
-                };
-                // The model's own chain rule if it has one (the Cosserat kinematics).
-                if (nested_ad_only ||
-                    !model->plate_energy_derivatives(z, gr, law, membrane_bending, cell_shear_scale,
-                                                     jacobian, W, g, H))
-                  {
-                    if (membrane_bending)
-                      materials::internal::differentiate_subset<12>(z, 3, energy_of, jacobian, W, g, H);
-                    else
-                      materials::internal::differentiate_subset<8>(z, 3, energy_of, jacobian, W, g, H);
-                  }
-                c.plate_energy += W * fev.JxW(q);
-                assembly::add_point<n_plate>(sc.drives, g, H, fev.JxW(q), jacobian, c.r, c.K);
-              }
-          }
-        // The rim rod on the cell's rim faces.
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            {
-              sc.fev_face.reinit(cell, f);
-              std::array<double, n_rim>         zr, gr;
-              std::array<double, n_rim * n_rim> Hr;
-              for (unsigned int q = 0; q < sc.fev_face.n_quadrature_points; ++q)
-                {
-                  const Point<2> X     = sc.fev_face.quadrature_point(q);
-                  const auto     frame = kinematics::circular_rim_frame(X, sc.fev_face.normal_vector(q));
-                  const Tensor<1, 2> t2({frame.tangent[0], frame.tangent[1]});
-                  zr.fill(0.);
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    sc.drives[i] = rim_drive(comp[i], sc.fev_face.shape_value(i, q),
-                                             sc.fev_face.shape_grad(i, q) * t2);
-                  assembly::gather_local_variables<n_rim>(sc.drives, sc.U_local, zr);
-                  auto law              = rod;
-                  law.reference_strains = kinematics::rim_reference_strains(X, frame);
-                  double W              = 0;
-                  materials::internal::differentiate<n_rim>(
-                    zr,
-                    [&](const auto &x) {
-                      return kinematics::rim_rod_energy(x, frame, law, g_rod, *model,
-                                                        rim_natural_curvature);
-                    },
-                    jacobian, W, gr, Hr);
-                  c.rod_energy += W * sc.fev_face.JxW(q);
-                  assembly::add_point<n_rim>(sc.drives, gr, Hr, sc.fev_face.JxW(q), jacobian, c.r, c.K);
-                }
-            }
+                        assembly::CellContribution &                        c) {
+        for (unsigned int i = 0; i < data.dpc; ++i)
+          sc.U_local[i] = U[c.dof_indices[i]];
+        plate_of_cell(data, cell, sc, c);
+        rim_of_cell(data, cell, sc, c);
       };
 
       // A Jacobian assembly computes the residual at its state as well (the
@@ -798,34 +842,21 @@ namespace cosmo
         R = &jacobian_residual;
       R->reinit(n_unknowns());
       if (jacobian)
-        {
-          if (distributed_mesh)
-            distributed_matrix = 0;
-          else
-            matrix = 0;
-        }
-      double plate_energy = 0, rod_energy = 0;
-      auto   copier = [&](const Copy &c) {
-        plate_energy += c.plate_energy;
-        rod_energy += c.rod_energy;
-        if (jacobian && distributed_mesh)
-          constraints.distribute_local_to_global(c.K, c.r, c.idx, distributed_matrix, *R);
-        else if (jacobian)
-          constraints.distribute_local_to_global(c.K, c.r, c.idx, matrix, *R);
-        else
-          constraints.distribute_local_to_global(c.r, c.idx, *R);
-      };
-      // This rank's cells (all of them on one process).
-      WorkStream::run(filter_iterators(dof_handler.active_cell_iterators(),
-                                       IteratorFilters::LocallyOwnedCell()),
-                      worker, copier,
-                      Scratch(*mapping, *fe, full, reduced, face, assumed_shear.tying_points()),
-                      Copy(dpc));
+        system.clear();
+      assembly::AssemblyTarget target;
+      target.residual    = R;
+      target.jacobian    = jacobian;
+      target.system      = &system;
+      target.constraints = &constraints;
+      const auto totals  = assembly::EnergyAssembler<2>::assemble(
+        dof_handler, worker, Scratch(*mapping, *fe, full, reduced, face, data.assumed_shear.tying_points()),
+        assembly::CellContribution(data.dpc, 0, 2), target);
+      double plate_energy = totals.scalars[0], rod_energy = totals.scalars[1];
       if (distributed_mesh)
         {
           // Every rank holds the whole residual and energies, the same bits on each.
           if (jacobian)
-            distributed_matrix.compress(VectorOperation::add);
+            system.distributed_matrix.compress(VectorOperation::add);
           layout.sum_parts(*R);
           std::vector<double> e = {plate_energy, rod_energy};
           layout.sum(e);
@@ -880,10 +911,7 @@ namespace cosmo
       io::PhaseTimer::Scope scope(timer, "factorization");
       try
         {
-          if (distributed_mesh)
-            distributed_solver->factorize(distributed_matrix);
-          else
-            solver.factorize(matrix);
+          system.factorize();
         }
       catch (std::exception &e)
         {
@@ -904,11 +932,7 @@ namespace cosmo
     PlateRodProblem::solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst)
     {
       io::PhaseTimer::Scope scope(timer, "solve");
-      dst = rhs;
-      if (distributed_mesh)
-        distributed_solver->solve(dst);
-      else
-        solver.solve(dst);
+      system.solve(rhs, dst, {});
       constraints.distribute(dst);
       // (each rank set the slaves it knows: everyone takes them from their owners)
       layout.take_from_owners(dst);
@@ -918,9 +942,7 @@ namespace cosmo
     double
     PlateRodProblem::jacobian_abs_form(const Vector<double> &v) const
     {
-      if (distributed_mesh)
-        return solvers::absolute_quadratic_form(distributed_matrix, v, layout);
-      return solvers::absolute_quadratic_form(matrix, v);
+      return system.absolute_quadratic_form(v);
     }
 
     void
@@ -1040,19 +1062,8 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
+    PlateRodProblem::say_discretization() const
     {
-      write_output = true;
-      record.open(output_directory, prm, options);
-      if (distributed_mesh)
-        {
-          // Every rank takes every step: a failure of one rank alone ends all.
-          record.set_lockstep(&solvers::is_driver_failure);
-          io::ranks::check_checkpoints_agree(record.has_checkpoint() ? 1 : 0, "whether there is one");
-        }
-      plate_series = std::make_unique<io::PathCollections>(output_directory, "plate");
-      rim_series   = std::make_unique<io::PathCollections>(output_directory, "rim");
-      setup_system();
       std::ostringstream info;
       info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness
            << " (h/R = " << thickness / radius << "), "
@@ -1078,13 +1089,11 @@ namespace cosmo
           say(m.str());
         }
 
-      // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
-      double             first_closed = NAN;
-      std::string        closed_text;
-      const io::JSON     closed = closed_forms(first_closed, closed_text);
-      if (!closed_text.empty())
-        say(closed_text);
+    }
 
+    void
+    PlateRodProblem::add_steps_columns()
+    {
       for (const auto &c : {"step", "branch", "t", "mismatch", "plate_growth_rim", "rod_growth",
                             "newton_iterations"})
         steps_table.add_column(c);
@@ -1102,6 +1111,26 @@ namespace cosmo
         steps_table.add_column("rim_ur_" + std::to_string(k * sector_step()));
       steps_table.add_column("n_negative_eigenvalues");
       steps_table.add_column("smallest_eigenvalue");
+    }
+
+    void
+    PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
+    {
+      write_output = true;
+      solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
+      plate_series = std::make_unique<io::PathCollections>(output_directory, "plate");
+      rim_series   = std::make_unique<io::PathCollections>(output_directory, "rim");
+      setup_system();
+      say_discretization();
+
+      // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
+      double             first_closed = NAN;
+      std::string        closed_text;
+      const io::JSON     closed = closed_forms(first_closed, closed_text);
+      if (!closed_text.empty())
+        say(closed_text);
+
+      add_steps_columns();
 
       record.attempt([&]() {
         if (critical_guess)
@@ -1130,82 +1159,7 @@ namespace cosmo
               "start the path below the first critical growth (t = 0 always is)");
         follow_branches();
       });
-      if (!states.empty())
-        {
-          std::vector<solvers::PathRow>                 rows;
-          std::vector<solvers::BifurcationProblem::Event> ev;
-          for (const auto &st : states)
-            rows.push_back({st.branch, st.t, st.n_negative});
-          for (const auto &e : located_events)
-            ev.push_back(e.event);
-          say(solvers::path_summary(rows, ev, [this](const unsigned int k) {
-            std::string words = ", mismatch Delta = " + io::format_significant(mismatch(located_events[k].event.lambda), 6);
-            if (!located_events[k].mode.empty())
-              {
-                const Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
-                const auto           c = classify_mode(mode);
-                words += ", mode n = " + std::to_string(c.first) + (c.second ? " out of plane" : " planar");
-              }
-            return words;
-          }));
-        }
-
-      io::JSON j       = record.summary();
-      j["model"]       = model->name();
-      j["domain"]      = domain == "sector" ? "sector" : "full disc";
-      if (domain == "sector")
-        j["sector_n"] = sector_n;
-      j["radius"]    = radius;
-      j["thickness"] = thickness;
-      j["dofs"]      = dof_handler.n_dofs();
-      j["cells"]     = triangulation.get().n_global_active_cells();
-      if (distributed_mesh)
-        j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      j["closed_form"] = closed;
-      if (!states.empty())
-        {
-          // The last converged state (of an interrupted run: where it stopped).
-          const auto &s     = states.back();
-          io::JSON    last  = io::JSON::object();
-          last["step"]      = static_cast<unsigned int>(states.size() - 1);
-          last["branch"]    = s.branch;
-          last["t"]         = s.t;
-          last["dome_height"] = s.w_centre;
-          last["n_negative_eigenvalues"] = s.n_negative;
-          j["last_state"] = last;
-        }
-      io::JSON ev      = io::JSON::array();
-      for (unsigned int k = 0; k < located_events.size(); ++k)
-        {
-          const auto &e = located_events[k].event;
-          io::JSON    x = io::JSON::object();
-          x["kind"]              = e.name();
-          x["t"]                 = e.lambda;
-          x["mismatch"]          = mismatch(e.lambda);
-          x["branch"]            = e.branch;
-          x["n_negative_before"] = e.n_negative_before;
-          x["n_negative_after"]  = e.n_negative_after;
-          const std::string tag  = Utilities::int_to_string(k + 1, 2);
-          const std::string vtu  = distributed_mesh ? ".pvtu" : ".vtu";
-          x["state_vtu"]         = "event-" + tag + vtu;
-          if (!located_events[k].mode.empty())
-            {
-              Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
-              ModeMargins    margins;
-              const auto     c = classify_mode(mode, &margins);
-              x["mode_number"]  = c.first;
-              x["mode_type"]    = c.second ? "out of plane" : "planar";
-              x["mode_type_out_of_plane"] = c.second ? 1 : 0;
-              x["mode_type_margin"]   = margins.type;
-              x["mode_number_margin"] = margins.number;
-              x["mode_vtu"]     = "event-" + tag + "-mode" + vtu;
-              x["eigenvalue"]   = e.eigenvalue;
-            }
-          solvers::add_location_to_json(e, x);
-          ev.push_back(x);
-        }
-      j["events"] = ev;
-      record.finish(j, timer, states.size());
+      finish_run(closed);
     }
 
     void

@@ -9,11 +9,11 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <cosmo/analysis/plate_rod_thresholds.h>
+#include <cosmo/assembly/bordered_system.h>
+#include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/geometry/mesh_of_ranks.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
@@ -26,9 +26,7 @@
 #include <cosmo/materials/rod_law.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point_study.h>
-#include <cosmo/solvers/distributed_direct.h>
 #include <cosmo/solvers/replicated_vector.h>
-#include <cosmo/solvers/sparse_direct.h>
 
 #include <map>
 #include <memory>
@@ -132,11 +130,16 @@ namespace cosmo
       }
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      /// steps.csv's last row, for the postprocessors (io/postprocessors.h).
+      std::vector<std::pair<std::string, double>>
+      state_quantities() const override
+      {
+        return steps_table.last_row();
+      }
       int
       n_negative_eigenvalues() override
       {
-        return distributed_solver ? distributed_solver->n_negative_eigenvalues() :
-                                    solver.n_negative_eigenvalues();
+        return system.n_negative_eigenvalues({}, 0);
       }
       /// |v|.|J||v| with the assembled Hessian (resolution of a located event).
       double
@@ -224,7 +227,7 @@ namespace cosmo
       const SparseMatrix<double> &
       system_matrix() const
       {
-        return matrix;
+        return system.matrix;
       }
       const AffineConstraints<double> &
       dof_constraints() const
@@ -339,20 +342,17 @@ namespace cosmo
       double                         load_parameter = 0;
 
       // Discretization (with 'Mesh / Distributed' the mesh is divided over the
-      // ranks: each assembles its own cells into distributed_matrix,
-      // factorized by distributed_solver, and the drivers' vectors are whole on
+      // ranks: each assembles its own cells into system.distributed_matrix,
+      // factorized by MUMPS with distributed input, and the drivers' vectors are whole on
       // every rank, kept equal by `layout`)
       geometry::MeshOfRanks<2>     triangulation;
       std::unique_ptr<MappingQ<2>> mapping;
       std::unique_ptr<FESystem<2>> fe;
       DoFHandler<2>                dof_handler;
       AffineConstraints<double>    constraints;
-      SparsityPattern              sparsity;
-      SparseMatrix<double>         matrix;
-      solvers::SparseDirectSolver  solver;
-      TrilinosWrappers::SparseMatrix                   distributed_matrix;
-      std::unique_ptr<solvers::DistributedDirectSolver> distributed_solver;
-      solvers::ReplicatedVectorLayout                  layout;
+      /// The Hessian and its factorization, serial or distributed (no border).
+      assembly::BorderedSystem        system;
+      solvers::ReplicatedVectorLayout layout;
       Vector<double>               solution;
       std::vector<unsigned char>   dof_component; ///< field component of each DoF
       std::vector<unsigned char>   dof_constrained; ///< 1 where the constraints set the DoF
@@ -377,12 +377,39 @@ namespace cosmo
       io::PhaseTimer                    timer;
       unsigned int                      output_index = 0;
 
+      /// The run's discretization, and the rim's stiffness file, in the log.
+      void
+      say_discretization() const;
+      /// steps.csv's columns.
+      void
+      add_steps_columns();
+      /// The path's summary in the log, summary.json (with the closed forms), the run's end.
+      void
+      finish_run(const io::JSON &closed);
       void
       make_mesh();
       void
       make_constraints();
       int
       assemble(const Vector<double> &U, Vector<double> *R, bool jacobian, double *energy = nullptr);
+      /// The cell loop's work space and what its cells share (plate_rod_problem.cc).
+      struct Scratch;
+      struct CellLoopData;
+      /// The plate's membrane, bending and transverse shear on one cell.
+      void
+      plate_of_cell(const CellLoopData &                         d,
+                    const DoFHandler<2>::active_cell_iterator &cell,
+                    Scratch &                                    sc,
+                    assembly::CellContribution &                 c) const;
+      /// The transverse shear of one cell by assumed covariant strains; returns its energy.
+      double
+      assumed_shear_of_cell(const CellLoopData &d, Scratch &sc, assembly::CellContribution &c) const;
+      /// The rim rod on the cell's rim faces.
+      void
+      rim_of_cell(const CellLoopData &                         d,
+                  const DoFHandler<2>::active_cell_iterator &cell,
+                  Scratch &                                    sc,
+                  assembly::CellContribution &                 c) const;
       kinematics::PlateGrowthAtPoint
       growth_at(const Point<2> &X, double t) const;
       /// The plate's thickness at X ('Thickness' times 'Thickness profile').

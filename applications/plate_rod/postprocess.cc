@@ -624,5 +624,86 @@ namespace cosmo
       closed_forms(closed, text);
       return {mismatch(e.event.lambda), closed};
     }
+
+    void
+    PlateRodProblem::finish_run(const io::JSON &closed)
+    {
+      if (!states.empty())
+        {
+          std::vector<solvers::PathRow>                 rows;
+          std::vector<solvers::BifurcationProblem::Event> ev;
+          for (const auto &st : states)
+            rows.push_back({st.branch, st.t, st.n_negative});
+          for (const auto &e : located_events)
+            ev.push_back(e.event);
+          say(solvers::path_summary(rows, ev, [this](const unsigned int k) {
+            std::string words = ", mismatch Delta = " + io::format_significant(mismatch(located_events[k].event.lambda), 6);
+            if (!located_events[k].mode.empty())
+              {
+                const Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
+                const auto           c = classify_mode(mode);
+                words += ", mode n = " + std::to_string(c.first) + (c.second ? " out of plane" : " planar");
+              }
+            return words;
+          }));
+        }
+
+      io::JSON j       = record.summary();
+      j["model"]       = model->name();
+      j["domain"]      = domain == "sector" ? "sector" : "full disc";
+      if (domain == "sector")
+        j["sector_n"] = sector_n;
+      j["radius"]    = radius;
+      j["thickness"] = thickness;
+      j["dofs"]      = dof_handler.n_dofs();
+      j["cells"]     = triangulation.get().n_global_active_cells();
+      if (distributed_mesh)
+        j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      j["closed_form"] = closed;
+      if (!states.empty())
+        {
+          // The last converged state (of an interrupted run: where it stopped).
+          const auto &s     = states.back();
+          io::JSON    last  = io::JSON::object();
+          last["step"]      = static_cast<unsigned int>(states.size() - 1);
+          last["branch"]    = s.branch;
+          last["t"]         = s.t;
+          last["dome_height"] = s.w_centre;
+          last["n_negative_eigenvalues"] = s.n_negative;
+          j["last_state"] = last;
+        }
+      io::JSON ev      = io::JSON::array();
+      for (unsigned int k = 0; k < located_events.size(); ++k)
+        {
+          const auto &e = located_events[k].event;
+          io::JSON    x = io::JSON::object();
+          x["kind"]              = e.name();
+          x["t"]                 = e.lambda;
+          x["mismatch"]          = mismatch(e.lambda);
+          x["branch"]            = e.branch;
+          x["n_negative_before"] = e.n_negative_before;
+          x["n_negative_after"]  = e.n_negative_after;
+          const std::string tag  = Utilities::int_to_string(k + 1, 2);
+          const std::string vtu  = distributed_mesh ? ".pvtu" : ".vtu";
+          x["state_vtu"]         = "event-" + tag + vtu;
+          if (!located_events[k].mode.empty())
+            {
+              Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
+              ModeMargins    margins;
+              const auto     c = classify_mode(mode, &margins);
+              x["mode_number"]  = c.first;
+              x["mode_type"]    = c.second ? "out of plane" : "planar";
+              x["mode_type_out_of_plane"] = c.second ? 1 : 0;
+              x["mode_type_margin"]   = margins.type;
+              x["mode_number_margin"] = margins.number;
+              x["mode_vtu"]     = "event-" + tag + "-mode" + vtu;
+              x["eigenvalue"]   = e.eigenvalue;
+            }
+          solvers::add_location_to_json(e, x);
+          ev.push_back(x);
+        }
+      j["events"] = ev;
+      record.finish(j, timer, states.size());
+    }
   } // namespace plate_rod
 } // namespace cosmo

@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/work_stream.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -10,12 +9,15 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/numerics/vector_tools_interpolate.h>
 
+#include <cosmo/solvers/run_start.h>
+#include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
 #include <cosmo/io/resources.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/parameter_sweep.h>
+#include <cosmo/io/point_loop.h>
 #include <cosmo/io/ranks.h>
 #include <cosmo/kinematics/section.h>
 
@@ -351,25 +353,6 @@ namespace cosmo
         materials::EnergyDerivatives                 d;
       };
 
-      /// One cell's contributions (WorkStream copy data).
-      struct CellContribution
-      {
-        explicit CellContribution(const unsigned int dpc)
-          : idx(dpc)
-          , r(dpc)
-          , K(dpc, dpc)
-          , B(dpc, n_strains)
-          , E(n_strains, n_strains)
-        {}
-        std::vector<types::global_dof_index> idx;
-        Vector<double>                       r;
-        FullMatrix<double>                   K, B, E;
-        std::array<double, 6>                resultants{};
-        double                               energy     = 0;
-        double                               min_J      = 0;
-        bool                                 admissible = true;
-      };
-
       /// The component of each DoF of a cell.
       std::vector<unsigned int>
       dof_components(const FiniteElement<2> &fe)
@@ -434,24 +417,12 @@ namespace cosmo
       // the contributions in cell order (so sums are reproducible).
       auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
                         AssemblyScratch &                                  scratch,
-                        CellContribution &                                 out) {
+                        assembly::CellContribution &                       out) {
         auto &fev = scratch.fev;
         fev.reinit(cell);
-        cell->get_dof_indices(out.idx);
         for (unsigned int i = 0; i < dpc; ++i)
-          scratch.U_local[i] = U[out.idx[i]];
+          scratch.U_local[i] = U[out.dof_indices[i]];
         const auto &material = materials.material(cell->material_id());
-        out.r                = 0;
-        out.resultants.fill(0.);
-        out.energy     = 0;
-        out.min_J      = std::numeric_limits<double>::max();
-        out.admissible = true;
-        if (jacobian)
-          {
-            out.K = 0;
-            out.B = 0;
-            out.E = 0;
-          }
         auto &B = scratch.B;
         auto &D = scratch.D;
         auto &d = scratch.d;
@@ -479,8 +450,8 @@ namespace cosmo
                 out.admissible = false;
                 return;
               }
-            out.energy += d.energy * dA;
-            out.min_J = std::min(out.min_J, determinant(F) / determinant(Fg));
+            out.scalars[0] += d.energy * dA;
+            out.minimum = std::min(out.minimum, determinant(F) / determinant(Fg));
             const auto &P = d.P;
 
             for (unsigned int i = 0; i < dpc; ++i)
@@ -493,7 +464,7 @@ namespace cosmo
                 B[i].add(3 * c + 1, g[1]);
                 for (unsigned int r = 0; r < 3; ++r)
                   B[i].add(3 * r + 2, h.Kx[r][c] * N);
-                out.r[i] += B[i].dot(P) * dA;
+                out.residual[i] += B[i].dot(P) * dA;
               }
             // dFbar/d(strain k): only the third column depends on the strains.
             for (unsigned int k = 0; k < n_strains; ++k)
@@ -503,7 +474,7 @@ namespace cosmo
                 for (unsigned int r = 0; r < 3; ++r)
                   if (k >= 3 || r == k)
                     D[k].add(3 * r + 2, db[r]);
-                out.resultants[k] += D[k].dot(P) * dA;
+                out.scalars[1 + k] += D[k].dot(P) * dA;
               }
 
             if (!jacobian)
@@ -517,7 +488,7 @@ namespace cosmo
               {
                 const auto &CBi = scratch.CB[i];
                 for (unsigned int j = 0; j <= i; ++j)
-                  out.K(i, j) += B[j].dot(CBi) * dA;
+                  out.hessian(i, j) += B[j].dot(CBi) * dA;
                 const double       N = fev.shape_value(i, q);
                 const unsigned int c = comp[i];
                 for (unsigned int k = 0; k < n_strains; ++k)
@@ -529,43 +500,29 @@ namespace cosmo
                         for (unsigned int r = 0; r < 3; ++r)
                           bik += P[3 * r + 2] * ex[r] * N;
                       }
-                    out.B(i, k) += bik * dA;
+                    out.border(i, k) += bik * dA;
                   }
               }
             for (unsigned int k = 0; k < n_strains; ++k)
               for (unsigned int l = 0; l < n_strains; ++l)
-                out.E(k, l) += D[l].dot(scratch.CD[k]) * dA;
+                out.border_block(k, l) += D[l].dot(scratch.CD[k]) * dA;
           }
         if (jacobian)
           for (unsigned int i = 0; i < dpc; ++i)
             for (unsigned int j = 0; j < i; ++j)
-              out.K(j, i) = out.K(i, j);
+              out.hessian(j, i) = out.hessian(i, j);
       };
 
-      std::array<double, 6> resultants{};
-      double                energy = 0, minJ = std::numeric_limits<double>::max();
-      bool                  admissible = true;
-      auto copier = [&](const CellContribution &c) {
-        if (!c.admissible)
-          admissible = false;
-        if (!admissible)
-          return;
-        energy += c.energy;
-        minJ = std::min(minJ, c.min_J);
-        for (unsigned int k = 0; k < n_strains; ++k)
-          resultants[k] += c.resultants[k];
-        add_local_contribution(c.idx, c.r, c.K, c.B, &c.E, R, jacobian, E);
-      };
-      // This rank's cells (all of them on one process).
-      WorkStream::run(filter_iterators(dof_handler.active_cell_iterators(),
-                                       IteratorFilters::LocallyOwnedCell()),
-                      worker, copier, AssemblyScratch(*mapping, *fe, quadrature),
-                      CellContribution(dpc));
-      if (!admissible)
+      // The cell's scalars: its energy, then the six resultants dE/de.
+      const auto totals = assembly::EnergyAssembler<2>::assemble(
+        dof_handler, worker, AssemblyScratch(*mapping, *fe, quadrature),
+        assembly::CellContribution(dpc, n_strains, 1 + n_strains), field_target(R, jacobian, E));
+      if (!totals.admissible)
         return false;
-      results.energy        = energy;
-      results.min_elastic_J = minJ;
-      results.resultants    = resultants;
+      results.energy        = totals.scalars[0];
+      results.min_elastic_J = totals.minimum;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        results.resultants[k] = totals.scalars[1 + k];
       return true;
     }
 
@@ -588,7 +545,7 @@ namespace cosmo
       FEFaceValues<2>    ffv(*mapping, *fe, face_quadrature,
                           update_values | update_gradients | update_quadrature_points |
                             update_JxW_values | update_normal_vectors);
-      CellContribution                   out(dpc);
+      assembly::CellContribution         out(dpc, n_strains);
       std::vector<double>                U_local(dpc);
       std::vector<std::array<double, 6>> dF(dpc), CdF(dpc);
       std::array<std::array<double, 6>, n_strains> D, CD;
@@ -614,16 +571,10 @@ namespace cosmo
           const auto &sf    = surface_faces[f];
           const auto &layer = surface_layers.layers()[sf.layer];
           ffv.reinit(sf.cell, sf.face);
-          sf.cell->get_dof_indices(out.idx);
+          out.reset(jacobian);
+          sf.cell->get_dof_indices(out.dof_indices);
           for (unsigned int i = 0; i < dpc; ++i)
-            U_local[i] = U[out.idx[i]];
-          out.r = 0;
-          if (jacobian)
-            {
-              out.K = 0;
-              out.B = 0;
-              out.E = 0;
-            }
+            U_local[i] = U[out.dof_indices[i]];
           for (unsigned int q = 0; q < nqf; ++q)
             {
               const double        dS = ffv.JxW(q);
@@ -653,7 +604,7 @@ namespace cosmo
                   dF[i][2 * c] = ffv.shape_grad(i, q) * T;
                   for (unsigned int r = 0; r < 3; ++r)
                     dF[i][2 * r + 1] += h.Kx[r][c] * N;
-                  out.r[i] += dot6(dF[i], d.P) * dS;
+                  out.residual[i] += dot6(dF[i], d.P) * dS;
                 }
               for (unsigned int k = 0; k < n_strains; ++k)
                 {
@@ -672,7 +623,7 @@ namespace cosmo
               for (unsigned int i = 0; i < dpc; ++i)
                 {
                   for (unsigned int j = 0; j < dpc; ++j)
-                    out.K(i, j) += dot6(dF[j], CdF[i]) * dS;
+                    out.hessian(i, j) += dot6(dF[j], CdF[i]) * dS;
                   const double       N = ffv.shape_value(i, q);
                   const unsigned int c = comp[i];
                   for (unsigned int k = 0; k < n_strains; ++k)
@@ -684,15 +635,17 @@ namespace cosmo
                           for (unsigned int r = 0; r < 3; ++r)
                             bik += d.P[2 * r + 1] * ex[r] * N;
                         }
-                      out.B(i, k) += bik * dS;
+                      out.border(i, k) += bik * dS;
                     }
                 }
               for (unsigned int k = 0; k < n_strains; ++k)
                 for (unsigned int l = 0; l < n_strains; ++l)
                   E(k, l) += dot6(D[l], CD[k]) * dS;
             }
-          // The 6x6 block of the surface went into E point by point.
-          add_local_contribution(out.idx, out.r, out.K, out.B, nullptr, R, jacobian, E);
+          // (the 6x6 block of the surface went into E point by point)
+          auto target         = field_target(R, jacobian, E);
+          target.border_block = nullptr;
+          assembly::add_cell_contribution(out, target);
         }
     }
 
@@ -759,7 +712,8 @@ namespace cosmo
       // A copy of this problem on the section refined once less, from the run's own parameters.
       ParameterHandler prm;
       declare_parameters(prm);
-      prm.parse_input_from_string(parameters_text);
+      // (skipping the library's own entries, Postprocess and Additional shared libraries)
+      prm.parse_input_from_string(parameters_text, "", /*skip_undefined=*/true);
       CrossSectionProblem coarse;
       coarse.parse_parameters(prm);
       coarse.quiet                = true;
@@ -867,13 +821,7 @@ namespace cosmo
     CrossSectionProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
       write_output   = true;
-      record.open(output_directory, prm, options);
-      if (distributed_mesh)
-        {
-          // Every rank takes every step: a failure of one rank alone ends all.
-          record.set_lockstep(&solvers::is_driver_failure);
-          io::ranks::check_checkpoints_agree(record.has_checkpoint() ? 1 : 0, "whether there is one");
-        }
+      solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
       pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
       pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
       if (!surface_faces.empty() || !surface_layers.layers().empty())
@@ -969,6 +917,87 @@ namespace cosmo
       write_output = keep_output;
     }
 
+    namespace
+    {
+      /// sweep.csv's columns.
+      io::CSVTable
+      sweep_columns(const io::ParameterSweep &sweep)
+      {
+        io::CSVTable table;
+        table.add_column("point");
+        table.add_column("value", sweep.axis_label());
+        table.add_column("converged");
+        table.add_column("energy", "E L^2");
+        for (const auto &s : kinematics::strain_names)
+          table.add_column(s, s[0] == 'n' ? "1" : "1/L");
+        for (unsigned int k = 0; k < 6; ++k)
+          table.add_column(kinematics::resultant_names[k], k < 3 ? "E L^2" : "E L^3");
+        for (unsigned int a = 0; a < 6; ++a)
+          for (unsigned int b = a; b < 6; ++b)
+            table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
+        table.add_column("helix_radius", "L");
+        table.add_column("helix_pitch", "L");
+        table.add_column("n_negative_eigenvalues");
+        return table;
+      }
+
+      /// Point k of a sweep (its parameters prepared in `prm`): its row and line.
+      io::PointLoop::Point
+      sweep_point(ParameterHandler &              prm,
+                  const io::RunOptions &          options,
+                  const io::ParameterSweep &      sweep,
+                  const unsigned int              k)
+      {
+        io::RunOptions point_options = options;
+        point_options.quiet          = true;    // the point's log.txt has the details
+        point_options.resume_directory.clear(); // a point is run whole again
+        io::PointLoop::Point p;
+        p.row = {double(k), sweep.value(k)};
+        std::ostringstream line;
+        line << "point " << k + 1 << "/" << sweep.size() << ": " << sweep.label() << " = "
+             << sweep.text(k);
+        try
+          {
+            CrossSectionProblem problem;
+            problem.parse_parameters(prm);
+            problem.run(point_options, prm);
+            const auto &s = problem.final_state();
+            const auto  h = kinematics::helix_geometry(kinematics::RodStrains(s.strains));
+            p.row.push_back(1);
+            p.row.push_back(s.energy);
+            p.row.insert(p.row.end(), s.strains.begin(), s.strains.end());
+            p.row.insert(p.row.end(), s.resultants.begin(), s.resultants.end());
+            for (unsigned int a = 0; a < 6; ++a)
+              for (unsigned int b = a; b < 6; ++b)
+                p.row.push_back(s.stiffness(a, b));
+            p.row.push_back(h.radius);
+            p.row.push_back(h.pitch);
+            p.row.push_back(s.n_negative);
+            line << "  strains (";
+            for (unsigned int i = 0; i < 6; ++i)
+              line << (i ? ", " : "") << io::format_significant(s.strains[i], 6);
+            line << ")  " << h.description();
+          }
+        catch (io::RunFailure &e)
+          {
+            p.outcome = io::PointLoop::Point::Outcome::failed;
+            p.row.push_back(0);
+            line << "  FAILED: " << e.what();
+          }
+        catch (io::InputError &e)
+          {
+            // A value can pass the entry's pattern and still be rejected
+            // by the problem (det Fg <= 0 somewhere, ...): that point is
+            // bad input, the others still run.
+            p.outcome = io::PointLoop::Point::Outcome::rejected;
+            p.row.push_back(0);
+            line << "  REJECTED: " << e.what();
+          }
+        p.line = line.str();
+        return p;
+      }
+    } // namespace
+
     void
     run_study(ParameterHandler &prm, const io::RunOptions &options)
     {
@@ -1018,180 +1047,26 @@ namespace cosmo
           return solvers::run_critical_point_study(prm, options, sweep, study);
         }
 
+      io::PointLoop::Description d;
+      d.application     = "rod_cross_section";
+      d.checkpoint_kind = "rod_cross_section sweep";
+      // A checkpoint of other parameters is refused before anything is touched.
+      d.parameters = io::checkpoint_parameters(prm);
       prm.enter_subsection("Output");
-      const std::string base = prm.get("Output directory");
+      d.directory = prm.get("Output directory");
       prm.leave_subsection();
-      // A sweep resumed (--resume) goes on after its last finished point; a
-      // checkpoint of other parameters is refused before anything is touched.
-      const std::string    parameters = io::checkpoint_parameters(prm);
-      const bool           resume     = !options.resume_directory.empty();
-      io::CSVTable table;
-      table.add_column("point");
-      table.add_column("value", sweep.axis_label());
-      table.add_column("converged");
-      table.add_column("energy", "E L^2");
-      for (const auto &s : kinematics::strain_names)
-        table.add_column(s, s[0] == 'n' ? "1" : "1/L");
-      for (unsigned int k = 0; k < 6; ++k)
-        table.add_column(kinematics::resultant_names[k], k < 3 ? "E L^2" : "E L^3");
-      for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = a; b < 6; ++b)
-          table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
-      table.add_column("helix_radius", "L");
-      table.add_column("helix_pitch", "L");
-      table.add_column("n_negative_eigenvalues");
-
-      io::ranks::Resumed resumed;
-      if (resume)
-        resumed = io::ranks::resume_points(base, table, [&](const std::string &d) {
-          return io::read_checkpoint(d, "rod_cross_section sweep", parameters);
-        });
-      const auto log_file =
-        io::open_run_directory(base, prm, options.quiet, "sweep-log.txt", resume);
-      auto &     log      = *log_file;
-      log("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
-          ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
-      // Under mpirun each rank runs a contiguous block of the values
-      // (io/ranks.h), after rank 0 has taken the run's directory.
-      const unsigned int n_ranks          = io::ranks::size();
-      const auto [block_begin, block_end] = io::ranks::my_block(sweep.size());
-      const std::string shared            = n_ranks > 1 ? io::ranks::shared_directory() : base;
-      io::ranks::barrier();
-
-      unsigned int             n_failed = 0;
-      std::vector<std::string> rejected;
-      unsigned int             k0 = block_begin;
-      if (resume && resumed.same_ranks)
-        {
-          k0       = resumed.own.next;
-          for (const auto &row : resumed.own.rows)
-            table.add_row(row);
-          n_failed = resumed.reader.get_unsigned();
-          rejected = resumed.reader.get_strings();
-          table.write(base + "/sweep.csv");
-          log("  resumed from the checkpoint: " + std::to_string(k0 - block_begin) + " of " +
-              std::to_string(block_end - block_begin) + " values done");
-        }
-      else if (resume)
-        log("  resumed on " + std::to_string(n_ranks) + " ranks a sweep begun on " +
-            std::to_string(resumed.ranks_then) +
-            ": the converged values done before are taken as they are, the others run again");
-      std::vector<std::string> point_lines; // this rank's, for rank 0's log
-      for (unsigned int k = k0; k < block_end; ++k)
-        {
-          auto interrupted = [&]() {
-            log("interrupted; continue with: rod_cross_section --resume " + base);
-          };
-          if (io::pending_signal() != 0)
-            interrupted();
-          io::check_interrupt(); // between points: sweep.csv holds every point done so far
-          if (const auto done = resumed.done.find(k);
-              done != resumed.done.end() && done->second[2] == 1) // (converged)
-            {
-              table.add_row(done->second);
-              point_lines.push_back("point " + std::to_string(k + 1) + "/" +
-                                    std::to_string(sweep.size()) + ": done before the resume");
-              log(point_lines.back());
-              continue;
-            }
-          sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(shared, k));
-          io::RunOptions point_options = options;
-          point_options.quiet          = true; // the point's log.txt has the details
-          point_options.resume_directory.clear(); // a point is run whole again
-          std::vector<double> row = {double(k), sweep.value(k)};
-          std::ostringstream  line;
-          line << "point " << k + 1 << "/" << sweep.size() << ": " << sweep.label() << " = "
-               << sweep.text(k);
-          try
-            {
-              CrossSectionProblem problem;
-              problem.parse_parameters(prm);
-              problem.run(point_options, prm);
-              const auto &s = problem.final_state();
-              const auto  h = kinematics::helix_geometry(kinematics::RodStrains(s.strains));
-              row.push_back(1);
-              row.push_back(s.energy);
-              row.insert(row.end(), s.strains.begin(), s.strains.end());
-              row.insert(row.end(), s.resultants.begin(), s.resultants.end());
-              for (unsigned int a = 0; a < 6; ++a)
-                for (unsigned int b = a; b < 6; ++b)
-                  row.push_back(s.stiffness(a, b));
-              row.push_back(h.radius);
-              row.push_back(h.pitch);
-              row.push_back(s.n_negative);
-              line << "  strains (";
-              for (unsigned int i = 0; i < 6; ++i)
-                line << (i ? ", " : "") << io::format_significant(s.strains[i], 6);
-              line << ")  " << h.description();
-            }
-          catch (io::Interrupted &)
-            {
-              interrupted();
-              throw;
-            }
-          catch (io::RunFailure &e)
-            {
-              ++n_failed;
-              row.push_back(0);
-              row.resize(table.n_columns(), std::numeric_limits<double>::quiet_NaN());
-              line << "  FAILED: " << e.what();
-            }
-          catch (io::InputError &e)
-            {
-              // A value can pass the entry's pattern and still be rejected
-              // by the problem (det Fg <= 0 somewhere, ...): that point is
-              // bad input, the others still run.
-              rejected.push_back(sweep.text(k));
-              row.push_back(0);
-              row.resize(table.n_columns(), std::numeric_limits<double>::quiet_NaN());
-              line << "  REJECTED: " << e.what();
-            }
-          log(line.str());
-          point_lines.push_back(line.str());
-          // Rewritten after every point: a killed sweep leaves a complete table.
-          table.add_row(row);
-          table.write(base + "/sweep.csv");
-          io::CheckpointWriter w;
-          io::ranks::put_point_header(w, block_begin, k + 1, table);
-          w.put(n_failed);
-          w.put(rejected);
-          io::write_checkpoint(base, "rod_cross_section sweep", parameters, w);
-        }
-      if (n_ranks > 1)
-        {
-          // Rank 0 writes every rank's rows (in rank order: the values').
-          const auto rows  = io::ranks::gather_rows(table.row_values());
-          const auto lines = io::ranks::gather_lines(point_lines);
-          n_failed         = io::ranks::sum(n_failed);
-          rejected         = io::ranks::all_gather_lines(rejected);
-          if (io::ranks::rank() == 0)
-            {
-              log("the " + std::to_string(n_ranks) + " ranks' values:");
-              for (const auto &l : lines)
-                log(l);
-              table.clear_rows();
-              for (const auto &r : rows)
-                table.add_row(r);
-              table.write(shared + "/sweep.csv");
-            }
-        }
-      // Not before: a rank stopped while the others still run resumes from it.
-      io::remove_checkpoint(base);
-      log("sweep table: " + shared + "/sweep.csv");
-      if (!rejected.empty())
-        {
-          std::string values;
-          for (const auto &v : rejected)
-            values += (values.empty() ? "'" : ", '") + v + "'";
-          throw io::InputError("Parameter sweep", "Entry", sweep.entry(),
-                               std::to_string(rejected.size()) + " of " +
-                                 std::to_string(sweep.size()) +
-                                 " values were rejected by the problem: " + values +
-                                 " (the other points ran; see " + base + "/sweep-log.txt)");
-        }
-      if (n_failed > 0)
-        throw io::RunFailure(std::to_string(n_failed) + " of " + std::to_string(sweep.size()) +
-                             " sweep points failed (see " + base + "/sweep-log.txt)");
+      d.entry = sweep.entry();
+      for (unsigned int k = 0; k < sweep.size(); ++k)
+        d.values.push_back(sweep.text(k));
+      io::PointLoop loop(d, sweep_columns(sweep), !options.resume_directory.empty());
+      const auto log = io::open_run_directory(d.directory, prm, options.quiet, d.log_file,
+                                              !options.resume_directory.empty());
+      (*log)("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
+             ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
+      loop.run(*log, [&](const unsigned int k) {
+        sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(loop.shared_directory(), k));
+        return sweep_point(prm, options, sweep, k);
+      });
     }
   } // namespace rod
 } // namespace cosmo

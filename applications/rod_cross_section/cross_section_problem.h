@@ -113,6 +113,12 @@ namespace cosmo
       // ContinuationProblem
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      /// steps.csv's last row, for the postprocessors (io/postprocessors.h).
+      std::vector<std::pair<std::string, double>>
+      state_quantities() const override
+      {
+        return steps_table.last_row();
+      }
       /// Nested iteration: the first step solved on the section refined 'Coarse-mesh start'
       /// times less (recursively), interpolated to this mesh.
       bool

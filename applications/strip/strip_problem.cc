@@ -4,7 +4,6 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -12,6 +11,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <cosmo/solvers/run_start.h>
+#include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
@@ -166,22 +167,6 @@ namespace cosmo
         std::array<double, n_local * n_local>     H;
       };
 
-      /// One cell's contributions (WorkStream copy data).
-      struct StripCellContribution
-      {
-        explicit StripCellContribution(const unsigned int dpc)
-          : idx(dpc)
-          , r(dpc)
-          , K(dpc, dpc)
-          , B(dpc, 6)
-          , E(6, 6)
-        {}
-        std::vector<types::global_dof_index> idx;
-        Vector<double>                       r;
-        FullMatrix<double>                   K, B, E;
-        double                               energy = 0;
-        std::array<double, 6>                resultants{};
-      };
     } // namespace
 
     int
@@ -204,21 +189,12 @@ namespace cosmo
 
       // Cells are independent: the worker runs on all cores, the copier adds
       // the contributions in cell order (so sums are reproducible).
+      // The cell's scalars: its energy, then the six resultants dE/de.
       auto worker = [&](const typename DoFHandler<1>::active_cell_iterator &cell,
                         StripScratch &                                      sc,
-                        StripCellContribution &                             c) {
-        cell->get_dof_indices(c.idx);
+                        assembly::CellContribution &                        c) {
         for (unsigned int i = 0; i < dpc; ++i)
-          sc.U_local[i] = U[c.idx[i]];
-        c.r      = 0;
-        c.energy = 0;
-        c.resultants.fill(0.);
-        if (jacobian)
-          {
-            c.K = 0;
-            c.B = 0;
-            c.E = 0;
-          }
+          sc.U_local[i] = U[c.dof_indices[i]];
         auto &z = sc.z;
         auto &g = sc.g;
         auto &H = sc.H;
@@ -247,26 +223,23 @@ namespace cosmo
                     H);
                 else
                   kinematics::strip_energy_derivatives(z, eta, law, membrane_bending, jacobian, W, g, H);
-                c.energy += W * dA;
+                c.scalars[0] += W * dA;
                 for (unsigned int k = 0; k < n_strains; ++k)
-                  c.resultants[k] += g[10 + k] * dA;
-                assembly::add_point<n_local>(sc.drives, g, H, dA, jacobian, c.r, c.K);
+                  c.scalars[1 + k] += g[10 + k] * dA;
+                assembly::add_point<n_local>(sc.drives, g, H, dA, jacobian, c.residual, c.hessian);
                 if (jacobian)
-                  assembly::add_strain_blocks<n_local>(sc.drives, H, dA, 10, n_strains, c.B, c.E);
+                  assembly::add_strain_blocks<n_local>(sc.drives, H, dA, 10, n_strains, c.border,
+                                                       c.border_block);
               }
           }
       };
 
-      out.energy = 0;
-      out.resultants.fill(0.);
-      auto copier = [&](const StripCellContribution &c) {
-        out.energy += c.energy;
-        for (unsigned int k = 0; k < n_strains; ++k)
-          out.resultants[k] += c.resultants[k];
-        add_local_contribution(c.idx, c.r, c.K, c.B, &c.E, R, jacobian, E);
-      };
-      WorkStream::run(dof_handler.begin_active(), dof_handler.end(), worker, copier,
-                      StripScratch(*fe, full, reduced), StripCellContribution(dpc));
+      const auto totals = assembly::EnergyAssembler<1>::assemble(
+        dof_handler, worker, StripScratch(*fe, full, reduced),
+        assembly::CellContribution(dpc, n_strains, 1 + n_strains), field_target(R, jacobian, E));
+      out.energy = totals.scalars[0];
+      for (unsigned int k = 0; k < n_strains; ++k)
+        out.resultants[k] = totals.scalars[1 + k];
       out.min_elastic_J = 0;
       return 0;
     }
@@ -327,7 +300,7 @@ namespace cosmo
     StripProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
       write_output = true;
-      record.open(output_directory, prm, options);
+      solvers::start_run(record, *this, options, prm, output_directory, false);
       setup_system();
       std::ostringstream info;
       info << "  strip w = " << strip_width << ", h = " << thickness << " (w/h = "

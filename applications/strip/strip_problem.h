@@ -82,6 +82,12 @@ namespace cosmo
 
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
+      /// steps.csv's last row, for the postprocessors (io/postprocessors.h).
+      std::vector<std::pair<std::string, double>>
+      state_quantities() const override
+      {
+        return steps_table.last_row();
+      }
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
       /// This run's checkpoints (written into its directory; resumed with --resume).

@@ -16,6 +16,7 @@ namespace cosmo
     BorderedSystem::reinit(const DynamicSparsityPattern &dsp, const unsigned int n_b)
     {
       matrix.clear();
+      distributed_solver.reset(); // (serial now, whatever it was before)
       pattern.copy_from(dsp);
       matrix.reinit(pattern);
       border_columns.assign(n_b, Vector<double>(pattern.n_rows()));

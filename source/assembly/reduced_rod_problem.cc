@@ -397,32 +397,6 @@ namespace cosmo
     }
 
     void
-    ReducedRodProblem::add_local_contribution(const std::vector<types::global_dof_index> &idx,
-                                              const Vector<double> &                      r,
-                                              const FullMatrix<double> &                  K,
-                                              const FullMatrix<double> &                  B,
-                                              const FullMatrix<double> *                  Ecell,
-                                              Vector<double> *                            R,
-                                              const bool                                  jacobian,
-                                              FullMatrix<double> &                        E)
-    {
-      if (R)
-        for (unsigned int i = 0; i < idx.size(); ++i)
-          (*R)[idx[i]] += r[i];
-      if (!jacobian)
-        return;
-      if (system->distributed())
-        system->distributed_matrix.add(idx, K, false);
-      else
-        system->matrix.add(idx, K);
-      for (unsigned int i = 0; i < idx.size(); ++i)
-        for (unsigned int k = 0; k < n_strains; ++k)
-          system->border_columns[k][idx[i]] += B(i, k);
-      if (Ecell)
-        E.add(1., *Ecell);
-    }
-
-    void
     ReducedRodProblem::add_state_to_summary(
       io::JSON &                                            j,
       const ReducedRodState &                               s,

@@ -109,6 +109,17 @@ namespace cosmo
     CSVTable::add_column(const std::string &name, const std::string &unit)
     {
       columns.push_back(unit.empty() ? name : name + " [" + unit + "]");
+      names.push_back(name);
+    }
+
+    std::vector<std::pair<std::string, double>>
+    CSVTable::last_row() const
+    {
+      std::vector<std::pair<std::string, double>> r;
+      if (!rows.empty())
+        for (unsigned int k = 0; k < names.size(); ++k)
+          r.emplace_back(names[k], rows.back()[k]);
+      return r;
     }
 
     void

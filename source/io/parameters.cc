@@ -4,6 +4,8 @@
 
 #include <cosmo/config.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/io/postprocessors.h>
+#include <cosmo/io/shared_libraries.h>
 #include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/sparse_direct.h>
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -101,6 +104,12 @@ namespace cosmo
           }
       }
     } // namespace
+
+    void
+    check_parameter_file(const std::string &file)
+    {
+      check_includes(file, {});
+    }
 
     void
     parse_parameter_file(ParameterHandler &prm, const std::string &file)
@@ -215,6 +224,170 @@ namespace cosmo
             << "could not proceed (files written so far are kept and complete),\n"
             << "130/143 interrupted by SIGINT/SIGTERM (go on with --resume DIR).\n";
       }
+
+      /**
+       * --print-parameters [FORMAT] [FILE.prm] (args[i] the option): every
+       * parameter, with a file its values (defaults for what it leaves
+       * unset), as ASPECT's --output-json does. Returns the exit status.
+       */
+      int
+      print_parameters(const std::vector<std::string> &               args,
+                       unsigned int                                   i,
+                       const ApplicationInfo &                        info,
+                       const std::function<void(ParameterHandler &)> &declare_all,
+                       RunOptions &                                   options)
+      {
+        std::string fmt = "prm";
+        if (i + 1 < args.size() && (args[i + 1] == "prm" || args[i + 1] == "json" ||
+                                    args[i + 1] == "xml"))
+          fmt = args[++i];
+        else if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-' &&
+                 args[i + 1].find('.') == std::string::npos &&
+                 !std::filesystem::exists(args[i + 1]))
+          {
+            std::cerr << info.name << ": --print-parameters takes prm, json or xml "
+                      << "(then, optionally, a parameter file), not '" << args[i + 1]
+                      << "'\n";
+            return 1;
+          }
+        if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-')
+          {
+            options.parameter_file = args[++i];
+            load_shared_libraries(options.parameter_file);
+          }
+        ParameterHandler prm;
+        declare_all(prm);
+        if (!options.parameter_file.empty())
+          parse_parameter_file(prm, options.parameter_file);
+        ParameterHandler::OutputStyle style =
+          fmt == "json" ? ParameterHandler::JSON :
+          fmt == "xml"  ? ParameterHandler::XML :
+                          ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM;
+        prm.print_parameters(std::cout, style);
+        return 0;
+      }
+
+      /**
+       * The command line: an exit status to return at once (--help,
+       * --version, --print-parameters, a usage error), or none, with
+       * `options` filled, for a run.
+       */
+      std::optional<int>
+      read_command_line(const std::vector<std::string> &               args,
+                        const ApplicationInfo &                        info,
+                        const std::function<void(ParameterHandler &)> &declare_all,
+                        RunOptions &                                   options)
+      {
+        for (unsigned int i = 0; i < args.size(); ++i)
+          {
+            const std::string &a = args[i];
+            if (a == "--help" || a == "-h")
+              {
+                print_usage(info, std::cout);
+                return 0;
+              }
+            else if (a == "--version")
+              {
+                std::cout << info.name << " " << COSMO_VERSION << " (deal.II "
+                          << DEAL_II_PACKAGE_VERSION << ")\n";
+                return 0;
+              }
+            else if (a == "--print-parameters")
+              return print_parameters(args, i, info, declare_all, options);
+            else if (a == "--quiet" || a == "-q")
+              options.quiet = true;
+            else if (a == "--resume")
+              {
+                if (i + 1 >= args.size() || args[i + 1].empty())
+                  {
+                    std::cerr << info.name << ": --resume takes the run directory to continue\n";
+                    return 1;
+                  }
+                options.resume_directory = args[++i];
+              }
+            else if (!a.empty() && a[0] == '-')
+              {
+                std::cerr << info.name << ": unknown option '" << a << "'\n\n";
+                print_usage(info, std::cerr);
+                return 1;
+              }
+            else if (options.parameter_file.empty())
+              options.parameter_file = a;
+            else
+              {
+                std::cerr << info.name << ": more than one parameter file given ('"
+                          << options.parameter_file << "', '" << a << "')\n";
+                return 1;
+              }
+          }
+        if (!options.resume_directory.empty() && options.parameter_file.empty())
+          {
+            options.parameter_file = options.resume_directory + "/parameters.prm";
+            if (!std::filesystem::is_regular_file(options.parameter_file))
+              {
+                std::cerr << info.name << ": --resume " << options.resume_directory
+                          << ": not a run directory (it has no parameters.prm)\n";
+                return 1;
+              }
+          }
+        if (options.parameter_file.empty())
+          {
+            print_usage(info, std::cerr);
+            return 1;
+          }
+
+        return std::nullopt;
+      }
+
+      /// The run: the libraries loaded, the file read, the run in its
+      /// directory (each rank in its own under mpirun), then the ranks' ends.
+      void
+      run_from_file(const std::function<void(ParameterHandler &)> &                    declare_all,
+                    const std::function<void(ParameterHandler &, const RunOptions &)> &run,
+                    RunOptions &                                                       options)
+      {
+        load_shared_libraries(options.parameter_file);
+        ParameterHandler prm;
+        declare_all(prm);
+        parse_parameter_file(prm, options.parameter_file);
+        options.postprocessors = std::make_shared<Postprocessors>();
+        options.postprocessors->parse_parameters(prm);
+        if (!options.resume_directory.empty())
+          {
+            // The run goes on where it was, wherever the directory now is.
+            prm.enter_subsection("Output");
+            prm.set("Output directory", options.resume_directory);
+            prm.leave_subsection();
+          }
+        // Under mpirun, rank k > 0 runs in its own directory (io/ranks.h):
+        // only rank 0 speaks and writes the run's result set.
+        prm.enter_subsection("Output");
+        const std::string shared = prm.get("Output directory");
+        prm.set("Output directory", ranks::enter_run(shared));
+        prm.leave_subsection();
+        if (ranks::rank() > 0)
+          options.quiet = true;
+        ranks::share_cores();
+        run(prm, options);
+        prm.enter_subsection("Output");
+        options.postprocessors->finish(prm.get("Output directory"));
+        prm.leave_subsection();
+        // The ranks serving rank 0's factorizations (a one-path run) stop.
+        solvers::factorization_ranks::release();
+        // A rank done early sleeps until the others are, instead of
+        // spinning in MPI_Finalize.
+        ranks::wait_for_all();
+        // Its results are in rank 0's files now; nothing to resume. Rank 0
+        // removes those of the ranks beyond this run's (a run resumed on
+        // fewer ranks than it was begun with).
+        std::error_code ec;
+        if (ranks::rank() > 0)
+          std::filesystem::remove_all(ranks::private_directory(shared, ranks::rank()), ec);
+        else
+          for (unsigned int k = std::max(1u, ranks::size());
+               std::filesystem::is_directory(ranks::private_directory(shared, k), ec); ++k)
+            std::filesystem::remove_all(ranks::private_directory(shared, k), ec);
+      }
     } // namespace
 
     int
@@ -244,133 +417,19 @@ namespace cosmo
           }
         return status;
       };
-      std::vector<std::string> args(argv + 1, argv + argc);
-      RunOptions               options;
+      const std::vector<std::string> args(argv + 1, argv + argc);
+      RunOptions                     options;
+      // The library's entries of every application, then its own.
+      auto declare_all = [&declare](ParameterHandler &prm) {
+        declare_shared_libraries_entry(prm);
+        declare(prm);
+        Postprocessors::declare_parameters(prm);
+      };
       try
         {
-          for (unsigned int i = 0; i < args.size(); ++i)
-            {
-              const std::string &a = args[i];
-              if (a == "--help" || a == "-h")
-                {
-                  print_usage(info, std::cout);
-                  return 0;
-                }
-              else if (a == "--version")
-                {
-                  std::cout << info.name << " " << COSMO_VERSION << " (deal.II "
-                            << DEAL_II_PACKAGE_VERSION << ")\n";
-                  return 0;
-                }
-              else if (a == "--print-parameters")
-                {
-                  // --print-parameters [FORMAT] [FILE.prm]: with a file, its
-                  // values (defaults for what it leaves unset), as ASPECT's
-                  // --output-json does.
-                  std::string fmt = "prm";
-                  if (i + 1 < args.size() && (args[i + 1] == "prm" || args[i + 1] == "json" ||
-                                              args[i + 1] == "xml"))
-                    fmt = args[++i];
-                  else if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-' &&
-                           args[i + 1].find('.') == std::string::npos &&
-                           !std::filesystem::exists(args[i + 1]))
-                    {
-                      std::cerr << info.name << ": --print-parameters takes prm, json or xml "
-                                << "(then, optionally, a parameter file), not '" << args[i + 1]
-                                << "'\n";
-                      return 1;
-                    }
-                  ParameterHandler prm;
-                  declare(prm);
-                  if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-')
-                    {
-                      options.parameter_file = args[++i];
-                      parse_parameter_file(prm, options.parameter_file);
-                    }
-                  ParameterHandler::OutputStyle style =
-                    fmt == "json" ? ParameterHandler::JSON :
-                    fmt == "xml"  ? ParameterHandler::XML :
-                                    ParameterHandler::KeepDeclarationOrder | ParameterHandler::PRM;
-                  prm.print_parameters(std::cout, style);
-                  return 0;
-                }
-              else if (a == "--quiet" || a == "-q")
-                options.quiet = true;
-              else if (a == "--resume")
-                {
-                  if (i + 1 >= args.size() || args[i + 1].empty())
-                    {
-                      std::cerr << info.name << ": --resume takes the run directory to continue\n";
-                      return 1;
-                    }
-                  options.resume_directory = args[++i];
-                }
-              else if (!a.empty() && a[0] == '-')
-                {
-                  std::cerr << info.name << ": unknown option '" << a << "'\n\n";
-                  print_usage(info, std::cerr);
-                  return 1;
-                }
-              else if (options.parameter_file.empty())
-                options.parameter_file = a;
-              else
-                {
-                  std::cerr << info.name << ": more than one parameter file given ('"
-                            << options.parameter_file << "', '" << a << "')\n";
-                  return 1;
-                }
-            }
-          if (!options.resume_directory.empty() && options.parameter_file.empty())
-            {
-              options.parameter_file = options.resume_directory + "/parameters.prm";
-              if (!std::filesystem::is_regular_file(options.parameter_file))
-                {
-                  std::cerr << info.name << ": --resume " << options.resume_directory
-                            << ": not a run directory (it has no parameters.prm)\n";
-                  return 1;
-                }
-            }
-          if (options.parameter_file.empty())
-            {
-              print_usage(info, std::cerr);
-              return 1;
-            }
-
-          ParameterHandler prm;
-          declare(prm);
-          parse_parameter_file(prm, options.parameter_file);
-          if (!options.resume_directory.empty())
-            {
-              // The run goes on where it was, wherever the directory now is.
-              prm.enter_subsection("Output");
-              prm.set("Output directory", options.resume_directory);
-              prm.leave_subsection();
-            }
-          // Under mpirun, rank k > 0 runs in its own directory (io/ranks.h):
-          // only rank 0 speaks and writes the run's result set.
-          prm.enter_subsection("Output");
-          const std::string shared = prm.get("Output directory");
-          prm.set("Output directory", ranks::enter_run(shared));
-          prm.leave_subsection();
-          if (ranks::rank() > 0)
-            options.quiet = true;
-          ranks::share_cores();
-          run(prm, options);
-          // The ranks serving rank 0's factorizations (a one-path run) stop.
-          solvers::factorization_ranks::release();
-          // A rank done early sleeps until the others are, instead of
-          // spinning in MPI_Finalize.
-          ranks::wait_for_all();
-          // Its results are in rank 0's files now; nothing to resume. Rank 0
-          // removes those of the ranks beyond this run's (a run resumed on
-          // fewer ranks than it was begun with).
-          std::error_code ec;
-          if (ranks::rank() > 0)
-            std::filesystem::remove_all(ranks::private_directory(shared, ranks::rank()), ec);
-          else
-            for (unsigned int k = std::max(1u, ranks::size());
-                 std::filesystem::is_directory(ranks::private_directory(shared, k), ec); ++k)
-              std::filesystem::remove_all(ranks::private_directory(shared, k), ec);
+          if (const auto status = read_command_line(args, info, declare_all, options))
+            return *status;
+          run_from_file(declare_all, run, options);
           return 0;
         }
       catch (InputError &e)

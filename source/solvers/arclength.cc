@@ -18,6 +18,23 @@ namespace cosmo
 {
   namespace solvers
   {
+    void
+    report_located_event(BifurcationProblem &              problem,
+                         const BifurcationProblem::Event &e,
+                         const Vector<double> &            U,
+                         const Vector<double> *            mode)
+    {
+      problem.located_event(e, U, mode);
+      io::PostprocessedState s;
+      s.kind       = io::PostprocessedState::Kind::located_event;
+      s.branch     = e.branch;
+      s.t          = e.lambda;
+      s.n_negative = e.n_negative_after;
+      s.event      = e.name();
+      s.unknowns   = &U;
+      problem.postprocess(s);
+    }
+
     int
     BifurcationProblem::load_derivative(const Vector<double> &U,
                                         const double          lambda,
@@ -1015,7 +1032,7 @@ namespace cosmo
               record.mode.assign(phi.begin(), phi.end());
             }
           problem.set_load_parameter(e.lambda);
-          problem.located_event(e, U_event, record.mode.size() ? &phi : nullptr);
+          report_located_event(problem, e, U_event, record.mode.size() ? &phi : nullptr);
 
           std::ostringstream m;
           m << std::setprecision(12) << "  " << e.name() << " on branch " << branch
@@ -1168,7 +1185,7 @@ namespace cosmo
           report.final = (k + 1 == settings.maximum_steps || s.lambda < settings.lambda_min ||
                           s.lambda > settings.lambda_max);
           problem.set_load_parameter(s.lambda);
-          problem.converged_step(s.U, report);
+          report_converged_step(problem, s.U, report);
           io::inject_fault("step " + std::to_string(step)); // (robustness tests only)
           cutbacks = 0;
           if (r.iterations <= settings.easy_iterations)
@@ -1229,7 +1246,7 @@ namespace cosmo
         << ", negative eigenvalues there " << e.n_negative_after << ")";
       say(m.str());
       problem.set_load_parameter(e.lambda);
-      problem.located_event(e, cp.U, e.kind == BifurcationProblem::Event::Kind::branch_point ? &phi : nullptr);
+      report_located_event(problem, e, cp.U, e.kind == BifurcationProblem::Event::Kind::branch_point ? &phi : nullptr);
       return record;
     }
 
@@ -1264,7 +1281,7 @@ namespace cosmo
             report.residual_norm     = r0.residual_norm;
             report.n_negative        = s.n_negative;
             problem.set_load_parameter(lambda);
-            problem.converged_step(s.U, report);
+            report_converged_step(problem, s.U, report);
           }
           at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
           follow(problem, s, 0, at.may_switch, events, switches, at.step, settings.initial_step,
@@ -1354,7 +1371,7 @@ namespace cosmo
             report.n_negative        = first.n_negative;
             report.factorized_at_predictor = first.factorized_at_predictor;
             problem.set_load_parameter(first.lambda);
-            problem.converged_step(first.U, report);
+            report_converged_step(problem, first.U, report);
           }
           say("  following branch " + std::to_string(branch) + " (depth " +
               std::to_string(first.depth) + ", from branch " + std::to_string(start.branch) +

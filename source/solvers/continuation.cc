@@ -10,6 +10,30 @@ namespace cosmo
   namespace solvers
   {
     void
+    ContinuationProblem::postprocess(io::PostprocessedState state) const
+    {
+      if (postprocessors == nullptr || postprocessors->empty())
+        return;
+      state.output_directory = postprocessor_directory;
+      if (state.kind == io::PostprocessedState::Kind::converged_state)
+        state.quantities = state_quantities();
+      postprocessors->execute(state);
+    }
+
+    void
+    report_converged_step(ContinuationProblem &problem, const Vector<double> &U, const StepReport &report)
+    {
+      problem.converged_step(U, report);
+      io::PostprocessedState s;
+      s.step       = report.step;
+      s.branch     = report.branch;
+      s.t          = report.t;
+      s.n_negative = report.n_negative;
+      s.unknowns   = &U;
+      problem.postprocess(s);
+    }
+
+    void
     ContinuationSettings::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Continuation");
@@ -128,7 +152,7 @@ namespace cosmo
             report.newton_iterations = r.iterations;
             report.residual_norm     = r.residual_norm;
             report.final             = (t >= settings.target);
-            problem.converged_step(U, report);
+            report_converged_step(problem, U, report);
           }
           U_previous = U;
           save_point();
@@ -168,7 +192,7 @@ namespace cosmo
               report.residual_norm     = r.residual_norm;
               report.cutbacks          = cutbacks;
               report.final             = (t >= settings.target - 1e-14);
-              problem.converged_step(U, report);
+              report_converged_step(problem, U, report);
               cutbacks = 0;
               if (r.iterations <= settings.easy_iterations)
                 dt = std::min(settings.maximum_step, dt * settings.growth_factor);

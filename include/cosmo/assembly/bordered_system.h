@@ -18,7 +18,11 @@
 #include <vector>
 
 /**
- * The bordered Newton system of an energy with a few global unknowns:
+ * The factorized system of every problem of the suite (assembled by
+ * assembly::EnergyAssembler): the Hessian, serial or distributed over the
+ * ranks, its MUMPS (or UMFPACK) factorization, the inertia, and the bordered
+ * Newton system of an energy with a few global unknowns (none: the plain
+ * Hessian, as the plate's):
  *
  *     [ A    B ] [d_in]   [r_in]        A = [[E_UU, C^T], [C, 0]]  (sparse:
  *     [ B^T  E ] [d_b ] = [r_b ]        field Hessian + linear constraints)
@@ -141,6 +145,13 @@ namespace cosmo
       solver() const
       {
         return direct_solver;
+      }
+      /// A's diagonal has no zero (its constraints condensed, no multipliers):
+      /// the serial solver may order it for that (SparseDirectSolver).
+      void
+      set_nonzero_diagonal(const bool nonzero)
+      {
+        direct_solver.set_nonzero_diagonal(nonzero);
       }
 
     private:

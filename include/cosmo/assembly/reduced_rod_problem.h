@@ -8,6 +8,7 @@
 
 #include <cosmo/assembly/bordered_system.h>
 #include <cosmo/io/output.h>
+#include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point_study.h>
 
@@ -217,8 +218,9 @@ namespace cosmo
        * Add the field's energy derivatives at U with strains e: the field
        * residual into R[0..n_field) (R is zeroed, may be null), and with
        * `jacobian` E_UU into system->matrix, E_Ue into
-       * system->border_columns and E_ee into `border_block` (all zeroed).
-       * Returns > 0 if U is inadmissible.
+       * system->border_columns and E_ee into `border_block` (all zeroed):
+       * the cell loop of assembly::EnergyAssembler into an AssemblyTarget of
+       * `system`. Returns > 0 if U is inadmissible.
        */
       virtual int
       assemble_field(const Vector<double> &       U,
@@ -227,6 +229,19 @@ namespace cosmo
                      bool                         jacobian,
                      FullMatrix<double> &         border_block,
                      FieldIntegrals &             out) = 0;
+
+      /// Where assemble_field() adds its cells: R, the system's matrix and
+      /// border columns, and the border block E (assembly::EnergyAssembler).
+      AssemblyTarget
+      field_target(Vector<double> *R, const bool jacobian, FullMatrix<double> &E) const
+      {
+        AssemblyTarget target;
+        target.residual     = R;
+        target.jacobian     = jacobian;
+        target.system       = system.get();
+        target.border_block = &E;
+        return target;
+      }
 
       /**
        * Scales that make the residual rows dimensionless: a modulus times
@@ -278,21 +293,6 @@ namespace cosmo
 
       /// The field DoFs' owners on a distributed mesh (identity otherwise).
       solvers::ReplicatedVectorLayout field_layout;
-
-      /**
-       * Add one cell's (or face's) contributions: the residual r into R (if
-       * given) and, with `jacobian`, K into E_UU, B into the border columns
-       * and Ecell into the 6x6 border block E. Both applications' copiers.
-       */
-      void
-      add_local_contribution(const std::vector<types::global_dof_index> &idx,
-                             const Vector<double> &                      r,
-                             const FullMatrix<double> &                  K,
-                             const FullMatrix<double> &                  B,
-                             const FullMatrix<double> *                  Ecell,
-                             Vector<double> *                            R,
-                             bool                                        jacobian,
-                             FullMatrix<double> &                        E);
 
       /**
        * The rod-level keys of summary.json, shared by the applications:

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 /**
  * Extension by registration (as ASPECT's plugins): an implementation of an
@@ -30,6 +31,11 @@ namespace cosmo
   {
     using namespace dealii;
 
+    /// Registrations refused so far (a name registered twice), in order;
+    /// io::load_shared_libraries() reports those of a library it loads.
+    std::vector<std::string> &
+    registration_errors();
+
     template <class Interface>
     class Registry
     {
@@ -45,13 +51,21 @@ namespace cosmo
         std::function<std::unique_ptr<Interface>()> create;
       };
 
-      /// Registers an implementation; a name registered twice is a programming error.
+      /**
+       * Registers an implementation. A name registered twice (a user's
+       * library loaded at run time that repeats a name) keeps the first and
+       * is recorded in registration_errors(): registration runs in static
+       * initialization, where an exception would end the process unexplained.
+       */
       static bool
       add(Entry e)
       {
         auto &m = entries();
-        AssertThrow(m.find(e.name) == m.end(),
-                    ExcMessage("'" + e.name + "' is registered twice"));
+        if (m.find(e.name) != m.end())
+          {
+            registration_errors().push_back("'" + e.name + "' is registered twice");
+            return false;
+          }
         const std::string name = e.name;
         m.emplace(name, std::move(e));
         return true;

@@ -50,6 +50,9 @@ namespace cosmo
       {
         return rows;
       }
+      /// The last row by column name (no units); empty before the first row.
+      std::vector<std::pair<std::string, double>>
+      last_row() const;
       /// The same columns, no rows.
       void
       clear_rows()
@@ -63,7 +66,8 @@ namespace cosmo
       load(CheckpointReader &r);
 
     private:
-      std::vector<std::string>         columns;
+      std::vector<std::string>         columns; ///< "name [unit]"
+      std::vector<std::string>         names;
       std::vector<std::vector<double>> rows;
     };
 

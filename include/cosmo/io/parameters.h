@@ -39,12 +39,17 @@ namespace cosmo
       using std::runtime_error::runtime_error;
     };
 
+    class Postprocessors;
+
     struct RunOptions
     {
       std::string parameter_file;
       bool        quiet = false;
       /// `--resume DIR`: continue the run whose checkpoint is in DIR (io/checkpoint.h).
       std::string resume_directory;
+      /// The postprocessors the file selects ('Postprocess', io/postprocessors.h),
+      /// parsed by run_application; an application attaches them to its problem.
+      std::shared_ptr<Postprocessors> postprocessors;
     };
 
     struct ApplicationInfo
@@ -59,6 +64,10 @@ namespace cosmo
      * `--resume DIR` (DIR/parameters.prm, output into DIR).
      * `declare` declares all parameters, `run` parses them from the handler
      * (already filled from the file) and runs. Returns the exit status.
+     * Every application has, besides its own, the top-level entry
+     * 'Additional shared libraries' (loaded before anything is declared,
+     * io/shared_libraries.h) and the section 'Postprocess'
+     * (io/postprocessors.h, parsed into RunOptions::postprocessors).
      */
     int
     run_application(int                                                       argc,

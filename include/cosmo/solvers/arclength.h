@@ -168,6 +168,14 @@ namespace cosmo
       {}
     };
 
+    /// problem.located_event(), then its postprocessors: how the driver
+    /// reports a located fold or branch point.
+    void
+    report_located_event(BifurcationProblem &              problem,
+                         const BifurcationProblem::Event &e,
+                         const Vector<double> &            U,
+                         const Vector<double> *            mode);
+
     /**
      * The eigenvalue of smallest magnitude of the problem's factorized
      * Jacobian on the mode unknowns (mask), and its unit eigenvector, by

@@ -5,10 +5,13 @@
 #include <deal.II/lac/vector.h>
 
 #include <cosmo/io/checkpoint.h>
+#include <cosmo/io/postprocessors.h>
 #include <cosmo/solvers/newton.h>
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 /**
  * Natural-parameter continuation (doc/specification/continuation.md): the load parameter t
@@ -67,7 +70,38 @@ namespace cosmo
       {
         return false;
       }
+
+      /**
+       * The postprocessors the drivers call after converged_step() and
+       * located events (io/postprocessors.h), with the run's output
+       * directory; null: none. The problem keeps neither.
+       */
+      void
+      attach_postprocessors(io::Postprocessors *p, const std::string &output_directory)
+      {
+        postprocessors           = p;
+        postprocessor_directory = output_directory;
+      }
+      /// The quantities of the last converged state by name (the columns of
+      /// its steps.csv row), for the postprocessors; none by default.
+      virtual std::vector<std::pair<std::string, double>>
+      state_quantities() const
+      {
+        return {};
+      }
+      /// Calls the attached postprocessors, if any, with `state` completed.
+      void
+      postprocess(io::PostprocessedState state) const;
+
+    private:
+      io::Postprocessors *postprocessors = nullptr;
+      std::string         postprocessor_directory;
     };
+
+    /// problem.converged_step(), then its postprocessors: how every driver
+    /// reports a converged state.
+    void
+    report_converged_step(ContinuationProblem &problem, const Vector<double> &U, const StepReport &report);
 
 
     struct ContinuationSettings

@@ -2,8 +2,10 @@
 // the volume ratio, Fg = J^(1/3) I with J = 1 + t (g - 1) the ramped
 // 'Growth factor'. This file is the whole extension: compiled into an
 // executable together with an application's main.cc (tests/CMakeLists.txt,
-// rod_cross_section_cookbook), the name 'volumetric' becomes a value of every
-// material's 'Growth kind'.
+// rod_cross_section_cookbook), or into a shared library built against the
+// installed suite (examples/plugin/CMakeLists.txt) and named in a run's
+// 'Additional shared libraries', the name 'volumetric' becomes a value of
+// every material's 'Growth kind'.
 #include <cosmo/materials/growth.h>
 
 #include <cmath>

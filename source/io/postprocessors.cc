@@ -1,0 +1,90 @@
+#include <cosmo/io/parameters.h>
+#include <cosmo/io/postprocessors.h>
+
+#include <limits>
+
+namespace cosmo
+{
+  namespace plugins
+  {
+    template class Registry<io::Postprocessor>;
+  }
+
+  namespace io
+  {
+    double
+    PostprocessedState::quantity(const std::string &name) const
+    {
+      for (const auto &q : quantities)
+        if (q.first == name)
+          return q.second;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    void
+    Postprocessors::declare_parameters(ParameterHandler &prm)
+    {
+      using R = plugins::Registry<Postprocessor>;
+      prm.enter_subsection("Postprocess");
+      prm.declare_entry("List of postprocessors", "", Patterns::MultipleSelection(R::names()),
+                        "Postprocessors called at every converged state and located event, "
+                        "separated by ','; each has its entries in its own subsection. " +
+                          R::documentation());
+      for (const auto &e : R::entries())
+        if (e.second.declare_parameters)
+          {
+            prm.enter_subsection(e.first);
+            e.second.declare_parameters(prm);
+            prm.leave_subsection();
+          }
+      prm.leave_subsection();
+    }
+
+    void
+    Postprocessors::parse_parameters(ParameterHandler &prm)
+    {
+      selected.clear();
+      prm.enter_subsection("Postprocess");
+      const std::string list = prm.get("List of postprocessors");
+      for (const std::string &name : Utilities::split_string_list(list, ','))
+        {
+          for (const auto &s : selected)
+            if (s.first == name)
+              {
+                prm.leave_subsection();
+                throw InputError("Postprocess", "List of postprocessors", list,
+                                 "'" + name + "' is listed twice");
+              }
+          auto p = plugins::Registry<Postprocessor>::create(name);
+          prm.enter_subsection(name);
+          try
+            {
+              p->parse_parameters(prm);
+            }
+          catch (...)
+            {
+              prm.leave_subsection();
+              prm.leave_subsection();
+              throw;
+            }
+          prm.leave_subsection();
+          selected.emplace_back(name, std::move(p));
+        }
+      prm.leave_subsection();
+    }
+
+    void
+    Postprocessors::execute(const PostprocessedState &state)
+    {
+      for (auto &s : selected)
+        s.second->execute(state);
+    }
+
+    void
+    Postprocessors::finish(const std::string &output_directory)
+    {
+      for (auto &s : selected)
+        s.second->finish(output_directory);
+    }
+  } // namespace io
+} // namespace cosmo
