@@ -9,10 +9,14 @@ namespace cosmo
 {
   namespace io
   {
-    PointLoop::PointLoop(const Description &description, const CSVTable &columns, const bool resume)
+    PointLoop::PointLoop(const Description &description,
+                         const CSVTable &   columns,
+                         const bool         resume,
+                         const Hooks &      hooks)
       : description(description)
       , table(columns)
       , resume(resume)
+      , hooks(hooks)
     {
       // (read before the directory is claimed: open_run_directory moves what it finds)
       if (resume)
@@ -28,8 +32,55 @@ namespace cosmo
       ranks::put_point_header(w, first, next, table);
       w.put(n_failed);
       w.put(rejected);
+      if (hooks.save_held)
+        hooks.save_held(w);
       io::write_checkpoint(description.directory, description.checkpoint_kind,
                            description.parameters, w);
+    }
+
+    void
+    PointLoop::read_payload(CheckpointReader &r, const bool keep_counters)
+    {
+      const unsigned int             failed   = r.get_unsigned();
+      const std::vector<std::string> refusals = r.get_strings();
+      if (keep_counters)
+        {
+          n_failed = failed;
+          rejected = refusals;
+        }
+      if (hooks.load_held)
+        hooks.load_held(r);
+    }
+
+    bool
+    PointLoop::take_done(const unsigned int k, RunLog &log, std::vector<std::string> &point_lines)
+    {
+      const auto done = resumed.done.find(k);
+      if (done == resumed.done.end())
+        return false;
+      const auto &       row = done->second;
+      const unsigned int c   = description.converged_column;
+      std::optional<Point> p;
+      if (hooks.take_done)
+        p = hooks.take_done(k, row);
+      else if (row.size() > c && row[c] == 1)
+        {
+          p       = Point();
+          p->line = "point " + std::to_string(k + 1) + "/" +
+                    std::to_string(description.values.size()) + ": done before the resume";
+        }
+      if (!p)
+        return false; // run again
+      table.add_row(row);
+      n_failed += p->outcome == Point::Outcome::failed;
+      log(p->line);
+      point_lines.push_back(p->line);
+      // The last point of an earlier rank's block: go on from what that
+      // rank held there, as it would have.
+      if (const auto a = resumed.after.find(k + 1);
+          hooks.load_held && a != resumed.after.end() && !resumed.done.count(k + 1))
+        read_payload(a->second, false);
+      return true;
     }
 
     void
@@ -50,35 +101,32 @@ namespace cosmo
           k0 = resumed.own.next;
           for (const auto &row : resumed.own.rows)
             table.add_row(row);
-          n_failed = resumed.reader.get_unsigned();
-          rejected = resumed.reader.get_strings();
+          read_payload(resumed.reader, true);
           table.write(base + "/" + description.table_file);
+          for (const auto &name : description.also_written)
+            table.write(base + "/" + name);
           log("  resumed from the checkpoint: " + std::to_string(k0 - block_begin) + " of " +
               std::to_string(block_end - block_begin) + " values done");
         }
       else if (resume)
-        log("  resumed on " + std::to_string(n_ranks) + " ranks a sweep begun on " +
-            std::to_string(resumed.ranks_then) +
-            ": the converged values done before are taken as they are, the others run again");
+        log("  resumed on " + std::to_string(n_ranks) + " ranks a " + description.kind +
+            " begun on " + std::to_string(resumed.ranks_then) +
+            ": the values done before are taken as they are, the others run again");
+      if (n_ranks > 1)
+        log("  values " + std::to_string(block_begin + 1) + " to " + std::to_string(block_end) +
+            " of " + std::to_string(n) + " on rank " + std::to_string(ranks::rank()) + " of " +
+            std::to_string(n_ranks));
       std::vector<std::string> point_lines; // this rank's, for rank 0's log
+      auto interrupted = [&]() {
+        log("interrupted; continue with: " + description.application + " --resume " + base);
+      };
       for (unsigned int k = k0; k < block_end; ++k)
         {
-          auto interrupted = [&]() {
-            log("interrupted; continue with: " + description.application + " --resume " + base);
-          };
           if (pending_signal() != 0)
             interrupted();
           check_interrupt(); // between points: the table holds every point done so far
-          const unsigned int c = description.converged_column;
-          if (const auto done = resumed.done.find(k);
-              done != resumed.done.end() && done->second.size() > c && done->second[c] == 1)
-            {
-              table.add_row(done->second);
-              point_lines.push_back("point " + std::to_string(k + 1) + "/" + std::to_string(n) +
-                                    ": done before the resume");
-              log(point_lines.back());
-              continue;
-            }
+          if (take_done(k, log, point_lines))
+            continue;
           Point p;
           try
             {
@@ -92,56 +140,76 @@ namespace cosmo
           if (p.outcome == Point::Outcome::failed)
             ++n_failed;
           else if (p.outcome == Point::Outcome::rejected)
-            rejected.push_back(description.values[k]);
+            rejected.push_back(p.rejection.empty() ? "'" + description.values[k] + "'" :
+                                                     p.rejection);
           p.row.resize(table.n_columns(), std::numeric_limits<double>::quiet_NaN());
           log(p.line);
           point_lines.push_back(p.line);
-          // Rewritten after every point: a killed sweep leaves a complete table.
+          // Rewritten after every point: a killed study leaves a complete table.
           table.add_row(p.row);
           table.write(base + "/" + description.table_file);
+          for (const auto &name : description.also_written)
+            table.write(base + "/" + name);
           write_checkpoint(block_begin, k + 1);
         }
       gather(log, point_lines);
       // Not before: a rank stopped while the others still run resumes from it.
       remove_checkpoint(base);
-      log("sweep table: " + shared + "/" + description.table_file);
+      log("table: " + shared + "/" + description.table_file);
+      report();
+    }
+
+    void
+    PointLoop::report() const
+    {
+      const unsigned int n = description.values.size();
       if (!rejected.empty())
         {
-          std::string values;
+          std::string what;
           for (const auto &v : rejected)
-            values += (values.empty() ? "'" : ", '") + v + "'";
-          throw InputError("Parameter sweep", "Entry", description.entry,
+            what += (what.empty() ? "" : ", ") + v;
+          throw InputError("Parameter sweep", description.rejected_entry, description.entry,
                            std::to_string(rejected.size()) + " of " + std::to_string(n) +
-                             " values were rejected by the problem: " + values +
-                             " (the other points ran; see " + base + "/" + description.log_file +
-                             ")");
+                             " values were rejected by the problem: " + what +
+                             " (the other points ran; see " + description.directory + "/" +
+                             description.log_file + ")");
         }
       if (n_failed > 0)
-        throw RunFailure(std::to_string(n_failed) + " of " + std::to_string(n) +
-                         " sweep points failed (see " + base + "/" + description.log_file + ")");
+        throw RunFailure(std::to_string(n_failed) + " of " + std::to_string(n) + " " +
+                         description.failed_words + " (see " + description.directory + "/" +
+                         description.log_file + ")");
     }
 
     void
     PointLoop::gather(RunLog &log, const std::vector<std::string> &point_lines)
     {
       const unsigned int n_ranks = ranks::size();
-      if (n_ranks == 1)
+      if (n_ranks == 1 && !(hooks.complete_rows && !resumed.done.empty()))
         return;
       // Rank 0 writes every rank's rows (in rank order: the values').
-      const auto rows  = ranks::gather_rows(table.row_values());
+      auto       rows  = ranks::gather_rows(table.row_values());
       const auto lines = ranks::gather_lines(point_lines);
       n_failed         = ranks::sum(n_failed);
       rejected         = ranks::all_gather_lines(rejected);
-      if (ranks::rank() == 0)
+      if (ranks::rank() > 0)
+        {
+          log("the values of this rank are in " + shared + "/" + description.table_file);
+          return;
+        }
+      if (n_ranks > 1)
         {
           log("the " + std::to_string(n_ranks) + " ranks' values:");
           for (const auto &l : lines)
             log(l);
-          table.clear_rows();
-          for (const auto &r : rows)
-            table.add_row(r);
-          table.write(shared + "/" + description.table_file);
         }
+      if (hooks.complete_rows)
+        hooks.complete_rows(rows);
+      table.clear_rows();
+      for (const auto &r : rows)
+        table.add_row(r);
+      table.write(shared + "/" + description.table_file);
+      for (const auto &name : description.also_written)
+        table.write(shared + "/" + name);
     }
   } // namespace io
 } // namespace cosmo

@@ -5,6 +5,7 @@
 #include <cosmo/io/ranks.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,35 @@ namespace cosmo
         Outcome             outcome = Outcome::converged;
         std::vector<double> row;  ///< its row (completed with NaN to the table's columns)
         std::string         line; ///< its line in the log
+        /// A rejected point: what to say of it at the end (by default its value, quoted).
+        std::string rejection;
+      };
+
+      /**
+       * What a driver of dependent points adds (a critical curve, whose
+       * next point is predicted from the previous ones); each may be empty.
+       */
+      struct Hooks
+      {
+        /**
+         * A point an earlier run did (a resume on another number of ranks):
+         * whether it is taken as it is (its outcome and line; the row is the
+         * earlier one), or run again (none). Default: taken if converged.
+         */
+        std::function<std::optional<Point>(unsigned int k, const std::vector<double> &row)>
+          take_done;
+        /// What the driver holds after a point, written into each checkpoint
+        /// and read back on a resume (also from an earlier rank's checkpoint
+        /// where that rank stopped, to go on from there as it would have).
+        std::function<void(CheckpointWriter &)> save_held;
+        std::function<void(CheckpointReader &)> load_held;
+        /**
+         * Rank 0, every rank's rows gathered in the points' order, before
+         * they are written: what only the whole table shows (a change of
+         * the critical mode between two points run apart). With it the rows
+         * are gathered also after a resume on one rank.
+         */
+        std::function<void(std::vector<std::vector<double>> &rows)> complete_rows;
       };
 
       struct Description
@@ -57,7 +87,14 @@ namespace cosmo
         std::string parameters;      ///< io::checkpoint_parameters(prm): another run's is refused
         std::string directory;       ///< the run's directory (rank 0's)
         std::string  table_file = "sweep.csv";
+        /// Further names the table is written under (e.g. critical_curve.csv).
+        std::vector<std::string> also_written;
         std::string  log_file   = "sweep-log.txt";
+        /// "sweep" or "study", in the log.
+        std::string  kind = "sweep";
+        /// The end's errors: the entry named for rejected values, and what failed points are.
+        std::string  rejected_entry = "Entry";
+        std::string  failed_words   = "sweep points failed";
         /// The table's column that is 1 for a converged point (a resumed run
         /// on another number of ranks takes those as they are).
         unsigned int converged_column = 2;
@@ -72,7 +109,10 @@ namespace cosmo
        * the directory is claimed (io::open_run_directory moves what it
        * finds into previous/).
        */
-      PointLoop(const Description &description, const CSVTable &columns, bool resume);
+      PointLoop(const Description &description,
+                const CSVTable &   columns,
+                bool               resume,
+                const Hooks &      hooks = Hooks());
 
       /**
        * Runs this rank's points, `point(k)` for each not done before, then
@@ -83,7 +123,8 @@ namespace cosmo
       void
       run(RunLog &log, const std::function<Point(unsigned int k)> &point);
 
-      /// The directory every rank's point directories are in (rank 0's).
+      /// The directory every rank's point directories are in (rank 0's);
+      /// valid from run() on.
       const std::string &
       shared_directory() const
       {
@@ -94,6 +135,7 @@ namespace cosmo
       Description           description;
       CSVTable              table;
       bool                  resume;
+      Hooks                 hooks;
       ranks::Resumed        resumed;
       std::string           shared;
       unsigned int          n_failed = 0;
@@ -104,6 +146,15 @@ namespace cosmo
       gather(RunLog &log, const std::vector<std::string> &point_lines);
       void
       write_checkpoint(unsigned int first, unsigned int next) const;
+      /// A checkpoint's payload after its header: the counters, then the held state.
+      void
+      read_payload(CheckpointReader &r, bool keep_counters);
+      /// Takes point k if an earlier run did it; true if taken.
+      bool
+      take_done(unsigned int k, RunLog &log, std::vector<std::string> &point_lines);
+      /// The end: rejected values (io::InputError), failed points (io::RunFailure).
+      void
+      report() const;
     };
   } // namespace io
 } // namespace cosmo
