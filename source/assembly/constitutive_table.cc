@@ -338,47 +338,174 @@ namespace cosmo
       prm.leave_subsection();
     }
 
-    void
-    ConstitutiveTable::run(const std::array<double, 6> &                   base,
-                           const std::array<double, 6> &                   start,
-                           const Resolver &                                 resolve,
-                           const std::function<void()> &                    save,
-                           const std::function<void()> &                    restore,
-                           const std::string &                              directory,
-                           const std::function<void(const std::string &)> &progress,
-                           const TableDescription &                         description,
-                           const TableCheckpointing &                       checkpointing) const
+    namespace
     {
-      auto value = [](double a, double b, unsigned int n, unsigned int i) {
+      double
+      axis_value(const double a, const double b, const unsigned int n, const unsigned int i)
+      {
         return n == 1 ? a : a + (b - a) * i / (n - 1);
-      };
-      const unsigned int  N = n1 * n2; // < 2^32: check_points_memory refused more
-      progress("constitutive table: " + std::to_string(N) + " points, their results estimated at " +
-               io::format_bytes(N * bytes_per_point) + " beside the problem's memory");
-      std::vector<double> energy(N, NAN), resultants(6 * N, NAN), stiffness(36 * N, NAN),
-        converged(N, 0);
-      io::CSVTable table;
-      table.add_column(kinematics::strain_names[first]);
-      table.add_column(kinematics::strain_names[second]);
-      table.add_column("converged");
-      table.add_column("energy");
-      for (unsigned int k = 0; k < 6; ++k)
-        table.add_column(kinematics::resultant_names[k]);
-      for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = a; b < 6; ++b)
-          table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
+      }
 
-      // Under mpirun each rank takes a contiguous block of the serpentine
-      // (io/ranks.h) and continues from its own converged neighbour; rank
-      // k > 0 reaches its first point from the start in substeps.
-      const unsigned int n_ranks              = io::ranks::size();
-      const auto [block_begin, block_end]     = io::ranks::my_block(N);
-      std::array<double, 6> last = start;
-      save();
-      unsigned int          n_failed = 0;
-      // Points are taken in serpentine order; this rank's are done up to `next`.
-      unsigned int next = block_begin;
-      auto write_checkpoint = [&]() {
+      /// A point of an earlier run on another number of ranks, taken as it is.
+      struct Earlier
+      {
+        unsigned int                     next = 0, begin = 0;
+        std::array<double, 6>            last{};
+        std::vector<double>              start_state;
+        std::vector<std::vector<double>> rows;
+        std::vector<double>              energy, resultants, stiffness, converged;
+      };
+
+      /**
+       * One run of a constitutive table: the grid's points in serpentine
+       * order, each continued from the last converged one, this rank's
+       * block of them (io/ranks.h), and what its checkpoints keep.
+       */
+      class TableRun
+      {
+      public:
+        TableRun(const ConstitutiveTable &                       t,
+                 const std::array<double, 6> &                   base,
+                 const std::array<double, 6> &                   start,
+                 const ConstitutiveTable::Resolver &             resolve,
+                 const std::function<void()> &                   save,
+                 const std::function<void()> &                   restore,
+                 const std::string &                             directory,
+                 const std::function<void(const std::string &)> &progress,
+                 const TableCheckpointing &                      checkpointing);
+
+        /// Go on from this rank's checkpoint, or take the points an earlier
+        /// run on another number of ranks did.
+        void
+        resume();
+        /// This rank's points.
+        void
+        solve_block();
+        /// The seams compared, table.csv and table.h5 of all ranks, the end.
+        void
+        finish(const TableDescription &description);
+
+      private:
+        const ConstitutiveTable &                t;
+        const std::array<double, 6>              base;
+        const ConstitutiveTable::Resolver &      resolve;
+        const std::function<void()> &            save, &restore;
+        const std::string                        directory;
+        std::function<void(const std::string &)> progress;
+        const TableCheckpointing &               checkpointing;
+
+        const unsigned int N; // < 2^32: check_points_memory refused more
+        const unsigned int n_ranks;
+        unsigned int       block_begin = 0, block_end = 0;
+        std::vector<double> energy, resultants, stiffness, converged;
+        io::CSVTable          table;
+        std::array<double, 6> last;
+        unsigned int          n_failed = 0;
+        /// Points are taken in serpentine order; this rank's are done up to `next`.
+        unsigned int         next = 0;
+        std::vector<Earlier> earlier;
+        /// The state of a point away from the last one solved here (a
+        /// block's first point, or one after an earlier run's points):
+        /// reached in substeps from the start, more of them than between
+        /// neighbours.
+        bool far = false;
+
+        /// The strains of serpentine point q.
+        std::array<double, 6>
+        strains_of_point(unsigned int q) const;
+        /// Its index in the grid (i n2 + j).
+        unsigned int
+        grid_index(unsigned int q) const;
+        bool
+        solve_point(const std::array<double, 6> &e, bool far, ReducedRodState &s) const;
+        void
+        write_checkpoint() const;
+        Earlier
+        read_payload(io::CheckpointReader &r, unsigned int &ranks_then) const;
+        void
+        resume_from_other_ranks();
+        /// Point `next` done by an earlier run: taken as it is (true), else its start set.
+        bool
+        take_earlier();
+        /// Point `next` solved here.
+        void
+        solve_next();
+        /// Each rank but the last continues one point further, to the next block's first.
+        std::vector<std::vector<double>>
+        seam() const;
+        void
+        compare_seams(const std::vector<std::vector<double>> &seams,
+                      const std::vector<std::vector<double>> &all_rows) const;
+        void
+        write_h5(const std::string &shared, const TableDescription &description) const;
+      };
+
+      TableRun::TableRun(const ConstitutiveTable &                       t,
+                         const std::array<double, 6> &                   base,
+                         const std::array<double, 6> &                   start,
+                         const ConstitutiveTable::Resolver &             resolve,
+                         const std::function<void()> &                   save,
+                         const std::function<void()> &                   restore,
+                         const std::string &                             directory,
+                         const std::function<void(const std::string &)> &progress,
+                         const TableCheckpointing &                      checkpointing)
+        : t(t)
+        , base(base)
+        , resolve(resolve)
+        , save(save)
+        , restore(restore)
+        , directory(directory)
+        , progress(progress)
+        , checkpointing(checkpointing)
+        , N(t.n1 * t.n2)
+        , n_ranks(io::ranks::size())
+        , energy(N, NAN)
+        , resultants(6 * N, NAN)
+        , stiffness(36 * N, NAN)
+        , converged(N, 0)
+        , last(start)
+      {
+        progress("constitutive table: " + std::to_string(N) + " points, their results estimated at " +
+                 io::format_bytes(N * ConstitutiveTable::bytes_per_point) +
+                 " beside the problem's memory");
+        table.add_column(kinematics::strain_names[t.first]);
+        table.add_column(kinematics::strain_names[t.second]);
+        table.add_column("converged");
+        table.add_column("energy");
+        for (unsigned int k = 0; k < 6; ++k)
+          table.add_column(kinematics::resultant_names[k]);
+        for (unsigned int a = 0; a < 6; ++a)
+          for (unsigned int b = a; b < 6; ++b)
+            table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
+        // Under mpirun each rank takes a contiguous block of the serpentine
+        // (io/ranks.h) and continues from its own converged neighbour; rank
+        // k > 0 reaches its first point from the start in substeps.
+        std::tie(block_begin, block_end) = io::ranks::my_block(N);
+        save();
+        next = block_begin;
+        far  = block_begin > 0;
+      }
+
+      unsigned int
+      TableRun::grid_index(const unsigned int q) const
+      {
+        const unsigned int i = q / t.n2, jj = q % t.n2;
+        return i * t.n2 + ((i % 2 == 0) ? jj : t.n2 - 1 - jj); // serpentine
+      }
+
+      std::array<double, 6>
+      TableRun::strains_of_point(const unsigned int q) const
+      {
+        const unsigned int    p = grid_index(q);
+        std::array<double, 6> e = base;
+        e[t.first]              = axis_value(t.from1, t.to1, t.n1, p / t.n2);
+        e[t.second]             = axis_value(t.from2, t.to2, t.n2, p % t.n2);
+        return e;
+      }
+
+      void
+      TableRun::write_checkpoint() const
+      {
         if (!checkpointing.write)
           return;
         io::CheckpointWriter w;
@@ -394,109 +521,109 @@ namespace cosmo
         table.save(w);
         checkpointing.save_start(w);
         checkpointing.write(w);
-      };
-      // A point of an earlier run on another number of ranks, taken as it is.
-      struct Earlier
+      }
+
+      Earlier
+      TableRun::read_payload(io::CheckpointReader &r, unsigned int &ranks_then) const
       {
-        unsigned int          next = 0, begin = 0;
-        std::array<double, 6> last{};
-        std::vector<double>   start_state;
-        std::vector<std::vector<double>> rows;
-        std::vector<double>   energy, resultants, stiffness, converged;
-      };
-      std::vector<Earlier> earlier;
-      // The state of a point away from the last one solved here (a block's
-      // first point, or one after an earlier run's points): reached in
-      // substeps from the start, more of them than between neighbours.
-      bool far = block_begin > 0;
-      auto read_payload = [&](io::CheckpointReader &r, unsigned int &ranks_then) {
         Earlier e;
-        ranks_then = r.get_unsigned();
+        ranks_then                   = r.get_unsigned();
         const unsigned int rank_then = r.get_unsigned();
         e.begin                      = io::ranks::block(N, rank_then, ranks_then).first;
         e.next                       = r.get_unsigned();
         r.get_unsigned(); // its failed points: counted again from its rows
         const auto l = r.get_vector();
         std::copy(l.begin(), l.end(), e.last.begin());
-        e.energy     = r.get_vector();
-        e.resultants = r.get_vector();
-        e.stiffness  = r.get_vector();
-        e.converged  = r.get_vector();
-        io::CSVTable t = table;
-        t.load(r);
-        e.rows        = t.row_values();
+        e.energy       = r.get_vector();
+        e.resultants   = r.get_vector();
+        e.stiffness    = r.get_vector();
+        e.converged    = r.get_vector();
+        io::CSVTable c = table;
+        c.load(r);
+        e.rows        = c.row_values();
         e.start_state = r.get_vector();
         if (e.energy.size() != N || e.next > N || e.rows.size() != e.next - e.begin)
           throw std::runtime_error("the checkpoint's table has another size");
         return e;
-      };
-      unsigned int ranks_then = n_ranks;
-      if (checkpointing.resume)
-        {
-          io::CheckpointReader &r = *checkpointing.resume;
-          // Peek: the same number of ranks goes on exactly where it was.
-          io::CheckpointReader peek = r;
-          ranks_then                = peek.get_unsigned();
-        }
-      if (checkpointing.resume && ranks_then == n_ranks)
-        {
-          io::CheckpointReader &r = *checkpointing.resume;
-          r.get_unsigned();
-          r.get_unsigned();
-          next                    = r.get_unsigned();
-          n_failed                = r.get_unsigned();
-          const auto l            = r.get_vector();
-          std::copy(l.begin(), l.end(), last.begin());
-          energy     = r.get_vector();
-          resultants = r.get_vector();
-          stiffness  = r.get_vector();
-          converged  = r.get_vector();
-          table.load(r);
-          checkpointing.load_start(r);
-          save();
-          if (energy.size() != N || next > block_end || next < block_begin)
-            throw std::runtime_error("the checkpoint's table has another size");
-          far = next == block_begin && block_begin > 0;
-          progress("  going on after " + std::to_string(next - block_begin) + " of " +
-                   std::to_string(block_end - block_begin) + " table points");
-        }
-      else if (checkpointing.resuming)
-        {
-          // Begun on another number of ranks: every rank's points so far
-          // (rank 0's checkpoint in the run's directory, rank k's in
-          // rank-k/), each point of this rank's block taken from the one
-          // that did it; the others solved here, from the state an earlier
-          // rank stopped at where it stopped, else from this rank's last.
-          const std::string shared = io::ranks::shared_directory();
-          io::CheckpointReader r0  = checkpointing.read_in(shared);
-          earlier.push_back(read_payload(r0, ranks_then));
-          for (unsigned int k = 1; k < ranks_then; ++k)
-            {
-              const std::string d = io::ranks::private_directory(shared, k);
-              if (!std::filesystem::exists(d + "/" + io::checkpoint_name))
-                continue; // rank k had finished no point
-              io::CheckpointReader rk = checkpointing.read_in(d);
-              unsigned int         ignore;
-              earlier.push_back(read_payload(rk, ignore));
-            }
-          unsigned int taken = 0;
-          for (const auto &e : earlier)
-            for (unsigned int q = std::max(e.begin, block_begin); q < std::min(e.next, block_end); ++q)
-              ++taken;
-          progress("  resumed on " + std::to_string(n_ranks) + " ranks a table begun on " +
-                   std::to_string(ranks_then) + ": " + std::to_string(taken) + " of this rank's " +
-                   std::to_string(block_end - block_begin) + " points done before");
-        }
-      if (n_ranks > 1)
-        progress("  table points " + std::to_string(block_begin + 1) + " to " +
-                 std::to_string(block_end) + " of " + std::to_string(N) + " on rank " +
-                 std::to_string(io::ranks::rank()) + " of " +
-                 std::to_string(n_ranks));
-      // The state at strains e from the last converged one (`last`), in
-      // substeps if one step fails. A point away from the last one solved
-      // here (`far`): its path is longer than one grid step, so more
-      // substeps may be needed.
-      auto solve_point = [&](const std::array<double, 6> &e, const bool far, ReducedRodState &s) {
+      }
+
+      void
+      TableRun::resume()
+      {
+        unsigned int ranks_then = n_ranks;
+        if (checkpointing.resume)
+          {
+            // Peek: the same number of ranks goes on exactly where it was.
+            io::CheckpointReader peek = *checkpointing.resume;
+            ranks_then                = peek.get_unsigned();
+          }
+        if (checkpointing.resume && ranks_then == n_ranks)
+          {
+            io::CheckpointReader &r = *checkpointing.resume;
+            r.get_unsigned();
+            r.get_unsigned();
+            next         = r.get_unsigned();
+            n_failed     = r.get_unsigned();
+            const auto l = r.get_vector();
+            std::copy(l.begin(), l.end(), last.begin());
+            energy     = r.get_vector();
+            resultants = r.get_vector();
+            stiffness  = r.get_vector();
+            converged  = r.get_vector();
+            table.load(r);
+            checkpointing.load_start(r);
+            save();
+            if (energy.size() != N || next > block_end || next < block_begin)
+              throw std::runtime_error("the checkpoint's table has another size");
+            far = next == block_begin && block_begin > 0;
+            progress("  going on after " + std::to_string(next - block_begin) + " of " +
+                     std::to_string(block_end - block_begin) + " table points");
+          }
+        else if (checkpointing.resuming)
+          resume_from_other_ranks();
+        if (n_ranks > 1)
+          progress("  table points " + std::to_string(block_begin + 1) + " to " +
+                   std::to_string(block_end) + " of " + std::to_string(N) + " on rank " +
+                   std::to_string(io::ranks::rank()) + " of " + std::to_string(n_ranks));
+      }
+
+      void
+      TableRun::resume_from_other_ranks()
+      {
+        // Begun on another number of ranks: every rank's points so far
+        // (rank 0's checkpoint in the run's directory, rank k's in
+        // rank-k/), each point of this rank's block taken from the one
+        // that did it; the others solved here, from the state an earlier
+        // rank stopped at where it stopped, else from this rank's last.
+        const std::string    shared = io::ranks::shared_directory();
+        io::CheckpointReader r0     = checkpointing.read_in(shared);
+        unsigned int         ranks_then;
+        earlier.push_back(read_payload(r0, ranks_then));
+        for (unsigned int k = 1; k < ranks_then; ++k)
+          {
+            const std::string d = io::ranks::private_directory(shared, k);
+            if (!std::filesystem::exists(d + "/" + io::checkpoint_name))
+              continue; // rank k had finished no point
+            io::CheckpointReader rk = checkpointing.read_in(d);
+            unsigned int         ignore;
+            earlier.push_back(read_payload(rk, ignore));
+          }
+        unsigned int taken = 0;
+        for (const auto &e : earlier)
+          for (unsigned int q = std::max(e.begin, block_begin); q < std::min(e.next, block_end); ++q)
+            ++taken;
+        progress("  resumed on " + std::to_string(n_ranks) + " ranks a table begun on " +
+                 std::to_string(ranks_then) + ": " + std::to_string(taken) + " of this rank's " +
+                 std::to_string(block_end - block_begin) + " points done before");
+      }
+
+      bool
+      TableRun::solve_point(const std::array<double, 6> &e, const bool far, ReducedRodState &s) const
+      {
+        // The state at strains e from the last converged one (`last`), in
+        // substeps if one step fails. A point away from the last one solved
+        // here (`far`): its path is longer than one grid step, so more
+        // substeps may be needed.
         const std::vector<unsigned int> attempts =
           far ? std::vector<unsigned int>{1u, 4u, 16u, 64u, 256u} : std::vector<unsigned int>{1u, 4u, 16u};
         for (const unsigned int substeps : attempts)
@@ -517,20 +644,83 @@ namespace cosmo
               {}
           }
         return false;
-      };
-      // The strains of serpentine point q.
-      auto strains_of_point = [&](const unsigned int q) {
-        const unsigned int    i = q / n2, jj = q % n2;
-        std::array<double, 6> e = base;
-        e[first]                = value(from1, to1, n1, i);
-        e[second]               = value(from2, to2, n2, (i % 2 == 0) ? jj : n2 - 1 - jj);
-        return e;
-      };
-      auto last_checkpoint = std::chrono::steady_clock::now();
-      for (; next < block_end; ++next)
+      }
+
+      bool
+      TableRun::take_earlier()
+      {
+        const unsigned int p = grid_index(next);
+        if (const auto done = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
+              return x.begin <= next && next < x.next;
+            });
+            done != earlier.end())
           {
-            const unsigned int i = next / n2, jj = next % n2;
-            const unsigned int    j = (i % 2 == 0) ? jj : n2 - 1 - jj; // serpentine
+            // Solved by an earlier run: its row and values as they are.
+            table.add_row(done->rows[next - done->begin]);
+            converged[p] = done->converged[p];
+            energy[p]    = done->energy[p];
+            std::copy_n(done->resultants.begin() + 6 * p, 6, resultants.begin() + 6 * p);
+            std::copy_n(done->stiffness.begin() + 36 * p, 36, stiffness.begin() + 36 * p);
+            n_failed += converged[p] == 0;
+            far = true;
+            return true;
+          }
+        if (const auto stopped = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
+              return x.next == next && x.next > x.begin;
+            });
+            stopped != earlier.end())
+          {
+            // An earlier rank stopped here: its state is this point's neighbour.
+            checkpointing.set_start(stopped->start_state);
+            save();
+            last = stopped->last;
+            far  = false;
+          }
+        return false;
+      }
+
+      void
+      TableRun::solve_next()
+      {
+        const unsigned int          p = grid_index(next);
+        const std::array<double, 6> e = strains_of_point(next);
+        ReducedRodState             s;
+        const bool                  ok  = solve_point(e, far, s);
+        std::vector<double>         row = {e[t.first], e[t.second], ok ? 1. : 0.};
+        if (ok)
+          {
+            far = false;
+            save();
+            last         = e;
+            converged[p] = 1;
+            energy[p]    = s.energy;
+            for (unsigned int a = 0; a < 6; ++a)
+              {
+                resultants[6 * p + a] = s.resultants[a];
+                for (unsigned int b = 0; b < 6; ++b)
+                  stiffness[36 * p + 6 * a + b] = s.stiffness(a, b);
+              }
+            row.push_back(s.energy);
+            row.insert(row.end(), s.resultants.begin(), s.resultants.end());
+            for (unsigned int a = 0; a < 6; ++a)
+              for (unsigned int b = a; b < 6; ++b)
+                row.push_back(s.stiffness(a, b));
+          }
+        else
+          {
+            ++n_failed;
+            restore();
+          }
+        row.resize(table.n_columns(), NAN);
+        table.add_row(row);
+      }
+
+      void
+      TableRun::solve_block()
+      {
+        auto last_checkpoint = std::chrono::steady_clock::now();
+        for (; next < block_end; ++next)
+          {
             if (io::pending_signal() != 0)
               {
                 // Interrupted: the rows so far as a complete (shorter) table,
@@ -539,65 +729,9 @@ namespace cosmo
                 write_checkpoint();
                 io::check_interrupt();
               }
-            std::array<double, 6> e = base;
-            e[first]                = value(from1, to1, n1, i);
-            e[second]               = value(from2, to2, n2, j);
-            const unsigned int p    = i * n2 + j;
-            if (const auto done = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
-                  return x.begin <= next && next < x.next;
-                });
-                done != earlier.end())
-              {
-                // Solved by an earlier run: its row and values as they are.
-                table.add_row(done->rows[next - done->begin]);
-                converged[p] = done->converged[p];
-                energy[p]    = done->energy[p];
-                std::copy_n(done->resultants.begin() + 6 * p, 6, resultants.begin() + 6 * p);
-                std::copy_n(done->stiffness.begin() + 36 * p, 36, stiffness.begin() + 36 * p);
-                n_failed += converged[p] == 0;
-                far = true;
-                continue;
-              }
-            if (const auto stopped = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
-                  return x.next == next && x.next > x.begin;
-                });
-                stopped != earlier.end())
-              {
-                // An earlier rank stopped here: its state is this point's neighbour.
-                checkpointing.set_start(stopped->start_state);
-                save();
-                last = stopped->last;
-                far  = false;
-              }
-            ReducedRodState s;
-            const bool      ok = solve_point(e, far, s);
-            std::vector<double> row = {e[first], e[second], ok ? 1. : 0.};
-            if (ok)
-              {
-                far = false;
-                save();
-                last         = e;
-                converged[p] = 1;
-                energy[p]    = s.energy;
-                for (unsigned int a = 0; a < 6; ++a)
-                  {
-                    resultants[6 * p + a] = s.resultants[a];
-                    for (unsigned int b = 0; b < 6; ++b)
-                      stiffness[36 * p + 6 * a + b] = s.stiffness(a, b);
-                  }
-                row.push_back(s.energy);
-                row.insert(row.end(), s.resultants.begin(), s.resultants.end());
-                for (unsigned int a = 0; a < 6; ++a)
-                  for (unsigned int b = a; b < 6; ++b)
-                    row.push_back(s.stiffness(a, b));
-              }
-            else
-              {
-                ++n_failed;
-                restore();
-              }
-            row.resize(table.n_columns(), NAN);
-            table.add_row(row);
+            if (take_earlier())
+              continue;
+            solve_next();
             // A checkpoint a second: what a kill can lose, against the cost of writing the table.
             if (std::chrono::steady_clock::now() - last_checkpoint > std::chrono::seconds(1))
               {
@@ -608,107 +742,143 @@ namespace cosmo
                 last_checkpoint = std::chrono::steady_clock::now();
               }
           }
-      // The seams: a block's first point was reached from the start, not
-      // from its serpentine neighbour, and where the table crosses an
-      // instability the two paths can end on different branches. So each
-      // rank but the last continues one point further, to the next
-      // block's first, and rank 0 compares the two (a state from another
-      // path agrees to Newton's stopping test, 1e-10; another branch does
-      // not).
-      std::vector<std::vector<double>> seam;
-      if (io::ranks::rank() + 1 < n_ranks && block_end < N && block_end > block_begin)
-        {
-          ReducedRodState s;
-          if (solve_point(strains_of_point(block_end), far, s))
-            {
-              std::vector<double> v = {double(block_end), s.energy};
-              v.insert(v.end(), s.resultants.begin(), s.resultants.end());
-              seam.push_back(v);
-            }
-        }
-      const auto seams = io::ranks::gather_rows(seam);
-      // Rank 0 writes the rows of all ranks (in rank order: the serpentine's).
-      const auto all_rows = io::ranks::gather_rows(table.row_values());
-      if (io::ranks::rank() == 0 && !seams.empty())
-        {
-          // The energy against its largest value; a resultant a against
-          // sqrt(2 max K_aa max Psi) (Psi ~ K e^2/2, so K e ~ sqrt(2 K Psi)):
-          // a free strain's resultant is held at 0 and is round-off itself.
-          // (Row: strains, converged, energy, 6 resultants, K_ab for b >= a.)
-          auto max_of = [&](const unsigned int column) {
-            double m = 0;
-            for (const auto &row : all_rows)
-              if (std::isfinite(row[column]))
-                m = std::max(m, std::abs(row[column]));
-            return m;
-          };
-          std::vector<double> scale(7, max_of(3));
-          for (unsigned int a = 0, column = 10; a < 6; column += 6 - a, ++a)
-            scale[1 + a] = std::sqrt(2 * max_of(column) * scale[0]);
-          for (const auto &v : seams)
-            {
-              const auto &row = all_rows[static_cast<unsigned int>(v[0])];
-              if (row[2] != 1)
-                continue;
-              double gap = 0;
-              for (unsigned int c = 0; c < 7; ++c)
-                if (scale[c] > 0)
-                  gap = std::max(gap, std::abs(row[3 + c] - v[1 + c]) / scale[c]);
-              std::ostringstream m;
-              m << std::setprecision(3) << "  seam before point " << v[0] + 1
-                << ": the block's first state and its neighbour's continuation agree to " << gap
-                << " (energy and resultants, of their scales)";
-              if (gap > 1e-6)
-                m << "\nWARNING: they differ by more than 1e-6: the blocks followed different "
-                     "branches across an instability; run the table on one rank (or on ranks "
-                     "whose blocks do not start past it) to follow the serpentine's";
-              progress(m.str());
-            }
-        }
-      if (n_ranks > 1 && io::ranks::rank() == 0)
-        {
-          io::CSVTable whole = table;
-          whole.clear_rows();
-          for (const auto &row : all_rows)
-            whole.add_row(row);
-          whole.write(io::ranks::shared_directory() + "/table.csv");
-        }
-      else
-        table.write(directory + "/table.csv");
-      n_failed = io::ranks::sum(n_failed);
+      }
 
-      // HDF5, written under a temporary name and renamed: complete or absent.
-      const std::string shared = n_ranks > 1 ? io::ranks::shared_directory() : directory;
-      const std::string tmp = shared + "/table.h5.tmp", h5 = shared + "/table.h5";
-      std::vector<unsigned int> mine;
-      for (unsigned int q = block_begin; q < block_end; ++q)
-        {
-          const unsigned int i = q / n2, jj = q % n2;
-          mine.push_back(i * n2 + ((i % 2 == 0) ? jj : n2 - 1 - jj));
-        }
-      // The axes: the strains of the points, as table.csv has them.
-      std::vector<double> axis1(n1), axis2(n2);
-      for (unsigned int i = 0; i < n1; ++i)
-        axis1[i] = value(from1, to1, n1, i);
-      for (unsigned int j = 0; j < n2; ++j)
-        axis2[j] = value(from2, to2, n2, j);
-      write_table_h5(tmp, description, first, second, axis1, axis2, mine, energy, resultants,
-                     stiffness, converged);
-      if (io::ranks::rank() == 0)
-        {
-          std::filesystem::rename(tmp, h5);
-          io::record_output_file(h5);
-        }
-      std::ostringstream m;
-      m << "constitutive table: " << n1 << " x " << n2 << " points of ("
-        << kinematics::strain_names[first] << ", " << kinematics::strain_names[second] << "), "
-        << n_failed << " not converged";
-      if (n_ranks > 1)
-        m << ", on " << n_ranks << " MPI ranks";
-      m << "; " << shared << "/table.csv, table.h5";
-      progress(m.str());
-      if (n_failed > 0)
-        throw io::RunFailure(std::to_string(n_failed) + " table points did not converge");
+      std::vector<std::vector<double>>
+      TableRun::seam() const
+      {
+        // The seams: a block's first point was reached from the start, not
+        // from its serpentine neighbour, and where the table crosses an
+        // instability the two paths can end on different branches. So each
+        // rank but the last continues one point further, to the next
+        // block's first, and rank 0 compares the two (a state from another
+        // path agrees to Newton's stopping test, 1e-10; another branch does
+        // not).
+        std::vector<std::vector<double>> seam;
+        if (io::ranks::rank() + 1 < n_ranks && block_end < N && block_end > block_begin)
+          {
+            ReducedRodState s;
+            if (solve_point(strains_of_point(block_end), far, s))
+              {
+                std::vector<double> v = {double(block_end), s.energy};
+                v.insert(v.end(), s.resultants.begin(), s.resultants.end());
+                seam.push_back(v);
+              }
+          }
+        return seam;
+      }
+
+      void
+      TableRun::compare_seams(const std::vector<std::vector<double>> &seams,
+                              const std::vector<std::vector<double>> &all_rows) const
+      {
+        // The energy against its largest value; a resultant a against
+        // sqrt(2 max K_aa max Psi) (Psi ~ K e^2/2, so K e ~ sqrt(2 K Psi)):
+        // a free strain's resultant is held at 0 and is round-off itself.
+        // (Row: strains, converged, energy, 6 resultants, K_ab for b >= a.)
+        auto max_of = [&](const unsigned int column) {
+          double m = 0;
+          for (const auto &row : all_rows)
+            if (std::isfinite(row[column]))
+              m = std::max(m, std::abs(row[column]));
+          return m;
+        };
+        std::vector<double> scale(7, max_of(3));
+        for (unsigned int a = 0, column = 10; a < 6; column += 6 - a, ++a)
+          scale[1 + a] = std::sqrt(2 * max_of(column) * scale[0]);
+        for (const auto &v : seams)
+          {
+            const auto &row = all_rows[static_cast<unsigned int>(v[0])];
+            if (row[2] != 1)
+              continue;
+            double gap = 0;
+            for (unsigned int c = 0; c < 7; ++c)
+              if (scale[c] > 0)
+                gap = std::max(gap, std::abs(row[3 + c] - v[1 + c]) / scale[c]);
+            std::ostringstream m;
+            m << std::setprecision(3) << "  seam before point " << v[0] + 1
+              << ": the block's first state and its neighbour's continuation agree to " << gap
+              << " (energy and resultants, of their scales)";
+            if (gap > 1e-6)
+              m << "\nWARNING: they differ by more than 1e-6: the blocks followed different "
+                   "branches across an instability; run the table on one rank (or on ranks "
+                   "whose blocks do not start past it) to follow the serpentine's";
+            progress(m.str());
+          }
+      }
+
+      void
+      TableRun::write_h5(const std::string &shared, const TableDescription &description) const
+      {
+        // HDF5, written under a temporary name and renamed: complete or absent.
+        const std::string         tmp = shared + "/table.h5.tmp", h5 = shared + "/table.h5";
+        std::vector<unsigned int> mine;
+        for (unsigned int q = block_begin; q < block_end; ++q)
+          mine.push_back(grid_index(q));
+        // The axes: the strains of the points, as table.csv has them.
+        std::vector<double> axis1(t.n1), axis2(t.n2);
+        for (unsigned int i = 0; i < t.n1; ++i)
+          axis1[i] = axis_value(t.from1, t.to1, t.n1, i);
+        for (unsigned int j = 0; j < t.n2; ++j)
+          axis2[j] = axis_value(t.from2, t.to2, t.n2, j);
+        write_table_h5(tmp, description, t.first, t.second, axis1, axis2, mine, energy, resultants,
+                       stiffness, converged);
+        if (io::ranks::rank() == 0)
+          {
+            std::filesystem::rename(tmp, h5);
+            io::record_output_file(h5);
+          }
+      }
+
+      void
+      TableRun::finish(const TableDescription &description)
+      {
+        const auto seams = io::ranks::gather_rows(seam());
+        // Rank 0 writes the rows of all ranks (in rank order: the serpentine's).
+        const auto all_rows = io::ranks::gather_rows(table.row_values());
+        if (io::ranks::rank() == 0 && !seams.empty())
+          compare_seams(seams, all_rows);
+        if (n_ranks > 1 && io::ranks::rank() == 0)
+          {
+            io::CSVTable whole = table;
+            whole.clear_rows();
+            for (const auto &row : all_rows)
+              whole.add_row(row);
+            whole.write(io::ranks::shared_directory() + "/table.csv");
+          }
+        else
+          table.write(directory + "/table.csv");
+        const unsigned int failed = io::ranks::sum(n_failed);
+        const std::string  shared = n_ranks > 1 ? io::ranks::shared_directory() : directory;
+        write_h5(shared, description);
+        std::ostringstream m;
+        m << "constitutive table: " << t.n1 << " x " << t.n2 << " points of ("
+          << kinematics::strain_names[t.first] << ", " << kinematics::strain_names[t.second]
+          << "), " << failed << " not converged";
+        if (n_ranks > 1)
+          m << ", on " << n_ranks << " MPI ranks";
+        m << "; " << shared << "/table.csv, table.h5";
+        progress(m.str());
+        if (failed > 0)
+          throw io::RunFailure(std::to_string(failed) + " table points did not converge");
+      }
+    } // namespace
+
+    void
+    ConstitutiveTable::run(const std::array<double, 6> &                   base,
+                           const std::array<double, 6> &                   start,
+                           const Resolver &                                 resolve,
+                           const std::function<void()> &                    save,
+                           const std::function<void()> &                    restore,
+                           const std::string &                              directory,
+                           const std::function<void(const std::string &)> &progress,
+                           const TableDescription &                         description,
+                           const TableCheckpointing &                       checkpointing) const
+    {
+      TableRun run(*this, base, start, resolve, save, restore, directory, progress, checkpointing);
+      run.resume();
+      run.solve_block();
+      run.finish(description);
     }
   } // namespace assembly
 } // namespace cosmo
