@@ -372,7 +372,43 @@ namespace cosmo
                  const std::function<void()> &                   restore,
                  const std::string &                             directory,
                  const std::function<void(const std::string &)> &progress,
-                 const TableCheckpointing &                      checkpointing);
+                 const TableCheckpointing &                      checkpointing)
+          : t(t)
+          , base(base)
+          , resolve(resolve)
+          , save(save)
+          , restore(restore)
+          , directory(directory)
+          , progress(progress)
+          , checkpointing(checkpointing)
+          , N(t.n1 * t.n2)
+          , n_ranks(io::ranks::size())
+          , energy(N, NAN)
+          , resultants(6 * N, NAN)
+          , stiffness(36 * N, NAN)
+          , converged(N, 0)
+          , last(start)
+        {
+          progress("constitutive table: " + std::to_string(N) + " points, their results estimated at " +
+                   io::format_bytes(N * ConstitutiveTable::bytes_per_point) +
+                   " beside the problem's memory");
+          table.add_column(kinematics::strain_names[t.first]);
+          table.add_column(kinematics::strain_names[t.second]);
+          table.add_column("converged");
+          table.add_column("energy");
+          for (unsigned int k = 0; k < 6; ++k)
+            table.add_column(kinematics::resultant_names[k]);
+          for (unsigned int a = 0; a < 6; ++a)
+            for (unsigned int b = a; b < 6; ++b)
+              table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
+          // Under mpirun each rank takes a contiguous block of the serpentine
+          // (io/ranks.h) and continues from its own converged neighbour; rank
+          // k > 0 reaches its first point from the start in substeps.
+          std::tie(block_begin, block_end) = io::ranks::my_block(N);
+          save();
+          next = block_begin;
+          far  = block_begin > 0;
+        }
 
         /// Go on from this rank's checkpoint, or take the points an earlier
         /// run on another number of ranks did.
@@ -439,52 +475,6 @@ namespace cosmo
         void
         write_h5(const std::string &shared, const TableDescription &description) const;
       };
-
-      TableRun::TableRun(const ConstitutiveTable &                       t,
-                         const std::array<double, 6> &                   base,
-                         const std::array<double, 6> &                   start,
-                         const ConstitutiveTable::Resolver &             resolve,
-                         const std::function<void()> &                   save,
-                         const std::function<void()> &                   restore,
-                         const std::string &                             directory,
-                         const std::function<void(const std::string &)> &progress,
-                         const TableCheckpointing &                      checkpointing)
-        : t(t)
-        , base(base)
-        , resolve(resolve)
-        , save(save)
-        , restore(restore)
-        , directory(directory)
-        , progress(progress)
-        , checkpointing(checkpointing)
-        , N(t.n1 * t.n2)
-        , n_ranks(io::ranks::size())
-        , energy(N, NAN)
-        , resultants(6 * N, NAN)
-        , stiffness(36 * N, NAN)
-        , converged(N, 0)
-        , last(start)
-      {
-        progress("constitutive table: " + std::to_string(N) + " points, their results estimated at " +
-                 io::format_bytes(N * ConstitutiveTable::bytes_per_point) +
-                 " beside the problem's memory");
-        table.add_column(kinematics::strain_names[t.first]);
-        table.add_column(kinematics::strain_names[t.second]);
-        table.add_column("converged");
-        table.add_column("energy");
-        for (unsigned int k = 0; k < 6; ++k)
-          table.add_column(kinematics::resultant_names[k]);
-        for (unsigned int a = 0; a < 6; ++a)
-          for (unsigned int b = a; b < 6; ++b)
-            table.add_column("K_" + kinematics::strain_names[a] + "_" + kinematics::strain_names[b]);
-        // Under mpirun each rank takes a contiguous block of the serpentine
-        // (io/ranks.h) and continues from its own converged neighbour; rank
-        // k > 0 reaches its first point from the start in substeps.
-        std::tie(block_begin, block_end) = io::ranks::my_block(N);
-        save();
-        next = block_begin;
-        far  = block_begin > 0;
-      }
 
       unsigned int
       TableRun::grid_index(const unsigned int q) const
