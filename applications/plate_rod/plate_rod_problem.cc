@@ -121,6 +121,28 @@ namespace cosmo
                          tying_hessian;
       FullMatrix<double> V, M, VM;
       std::vector<double> mu;
+
+      /// The assumed shear's work space for the cell fev_full is on, zeroed.
+      void
+      prepare_tying(const unsigned int n_locations,
+                    const unsigned int n_tying,
+                    const unsigned int dpc,
+                    const bool         jacobian)
+      {
+        fev_tying.reinit(fev_full.get_cell());
+        tying_drives.resize(n_locations);
+        tying_z.resize(n_locations);
+        tying_strain.resize(n_tying);
+        tying_gradient.resize(n_tying);
+        tying_hessian.resize(n_tying);
+        V.reinit(dpc, n_tying);
+        mu.assign(n_tying, 0.);
+        if (jacobian)
+          {
+            M.reinit(n_tying, n_tying);
+            VM.reinit(dpc, n_tying);
+          }
+      }
     };
 
     /// What every cell of one assembly shares: the load, the laws at it, the
@@ -287,6 +309,101 @@ namespace cosmo
       mapping = std::make_unique<MappingQ<2>>(degree);
     }
 
+    namespace
+    {
+      /// The sector's mirror edges (boundary mirror_first: m = E2; mirror_second: the edge
+      /// at pi/n): m.u = 0 and theta parallel to m (m.d = 0), and the rim's alpha = 0 there.
+      void
+      add_mirror_constraints(const DoFHandler<2> &       dof_handler,
+                             const FiniteElement<2> &    fe,
+                             const unsigned int          sector_n,
+                             AffineConstraints<double> &constraints)
+      {
+        // Mirror planes with normal m: m.u = 0 and theta parallel to m (m.d = 0).
+        const double phi = M_PI / sector_n, c = std::cos(phi), s = std::sin(phi);
+        std::vector<types::global_dof_index> fd(fe.n_dofs_per_face());
+        auto constrain = [&constraints](const types::global_dof_index slave,
+                                        const types::global_dof_index master,
+                                        const double                  w) {
+          if (constraints.is_constrained(slave))
+            return;
+          constraints.add_line(slave);
+          if (master != numbers::invalid_dof_index && w != 0)
+            constraints.add_entry(slave, master, w);
+        };
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                (cell->face(f)->boundary_id() == mirror_first ||
+                 cell->face(f)->boundary_id() == mirror_second))
+              {
+                cell->face(f)->get_dof_indices(fd);
+                std::map<unsigned int, std::array<types::global_dof_index, 6>> nodes;
+                for (unsigned int i = 0; i < fd.size(); ++i)
+                  {
+                    const auto ci                     = fe.face_system_to_component_index(i);
+                    nodes[ci.second][ci.first]        = fd[i];
+                  }
+                const bool first = cell->face(f)->boundary_id() == mirror_first;
+                for (const auto &[node, d] : nodes)
+                  {
+                    (void)node;
+                    constrain(d[5], numbers::invalid_dof_index, 0); // the rim end: alpha = 0
+                    if (first)
+                      {
+                        // m = E2: u2 = 0, theta1 = 0.
+                        constrain(d[1], numbers::invalid_dof_index, 0);
+                        constrain(d[3], numbers::invalid_dof_index, 0);
+                      }
+                    else if (std::abs(c) >= std::abs(s))
+                      {
+                        // m = (-s, c): u2 = (s/c) u1;  c theta1 + s theta2 = 0.
+                        constrain(d[1], d[0], s / c);
+                        constrain(d[3], d[4], -s / c);
+                      }
+                    else
+                      {
+                        constrain(d[0], d[1], c / s);
+                        constrain(d[4], d[3], -c / s);
+                      }
+                  }
+              }
+      }
+
+      /// The rim's in-plane rotation alpha lives on the rim: zero elsewhere. (A cell with a DoF
+      /// on the rim has its rim face there, so every rank that knows such a DoF sees it is on
+      /// the rim.)
+      void
+      constrain_alpha_off_rim(const DoFHandler<2> &       dof_handler,
+                              const FiniteElement<2> &    fe,
+                              AffineConstraints<double> &constraints)
+      {
+        std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+        std::set<types::global_dof_index>    all_alpha, rim_alpha;
+        std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              cell->get_dof_indices(cell_dofs);
+              for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+                if (fe.system_to_component_index(k).first == 5)
+                  all_alpha.insert(cell_dofs[k]);
+              for (const unsigned int f : cell->face_indices())
+                if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
+                  {
+                    cell->face(f)->get_dof_indices(face_dofs);
+                    for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                      if (fe.face_system_to_component_index(k).first == 5)
+                        rim_alpha.insert(face_dofs[k]);
+                  }
+            }
+        for (const auto i : all_alpha)
+          if (!rim_alpha.count(i) && !constraints.is_constrained(i))
+            constraints.add_line(i);
+      }
+    } // namespace
+
     void
     PlateRodProblem::make_constraints()
     {
@@ -337,81 +454,9 @@ namespace cosmo
         }
       else
         {
-          // Mirror planes with normal m: m.u = 0 and theta parallel to m (m.d = 0).
-          const double phi = M_PI / sector_n, c = std::cos(phi), s = std::sin(phi);
-          std::vector<types::global_dof_index> fd(fe->n_dofs_per_face());
-          auto constrain = [this](const types::global_dof_index slave,
-                                  const types::global_dof_index master,
-                                  const double                  w) {
-            if (constraints.is_constrained(slave))
-              return;
-            constraints.add_line(slave);
-            if (master != numbers::invalid_dof_index && w != 0)
-              constraints.add_entry(slave, master, w);
-          };
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (!cell->is_artificial())
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  (cell->face(f)->boundary_id() == mirror_first ||
-                   cell->face(f)->boundary_id() == mirror_second))
-                {
-                  cell->face(f)->get_dof_indices(fd);
-                  std::map<unsigned int, std::array<types::global_dof_index, 6>> nodes;
-                  for (unsigned int i = 0; i < fd.size(); ++i)
-                    {
-                      const auto ci                     = fe->face_system_to_component_index(i);
-                      nodes[ci.second][ci.first]        = fd[i];
-                    }
-                  const bool first = cell->face(f)->boundary_id() == mirror_first;
-                  for (const auto &[node, d] : nodes)
-                    {
-                      (void)node;
-                      constrain(d[5], numbers::invalid_dof_index, 0); // the rim end: alpha = 0
-                      if (first)
-                        {
-                          // m = E2: u2 = 0, theta1 = 0.
-                          constrain(d[1], numbers::invalid_dof_index, 0);
-                          constrain(d[3], numbers::invalid_dof_index, 0);
-                        }
-                      else if (std::abs(c) >= std::abs(s))
-                        {
-                          // m = (-s, c): u2 = (s/c) u1;  c theta1 + s theta2 = 0.
-                          constrain(d[1], d[0], s / c);
-                          constrain(d[3], d[4], -s / c);
-                        }
-                      else
-                        {
-                          constrain(d[0], d[1], c / s);
-                          constrain(d[4], d[3], -c / s);
-                        }
-                    }
-                }
+          add_mirror_constraints(dof_handler, *fe, sector_n, constraints);
         }
-      // alpha lives on the rim: zero elsewhere. (A cell with a DoF on the rim
-      // has its rim face there, so every rank that knows such a DoF sees it
-      // is on the rim.)
-      std::set<types::global_dof_index>    all_alpha, rim_alpha;
-      std::vector<types::global_dof_index> face_dofs(fe->n_dofs_per_face());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          {
-            cell->get_dof_indices(cell_dofs);
-            for (unsigned int k = 0; k < cell_dofs.size(); ++k)
-              if (fe->system_to_component_index(k).first == 5)
-                all_alpha.insert(cell_dofs[k]);
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-                {
-                  cell->face(f)->get_dof_indices(face_dofs);
-                  for (unsigned int k = 0; k < face_dofs.size(); ++k)
-                    if (fe->face_system_to_component_index(k).first == 5)
-                      rim_alpha.insert(face_dofs[k]);
-                }
-          }
-      for (const auto i : all_alpha)
-        if (!rim_alpha.count(i) && !constraints.is_constrained(i))
-          constraints.add_line(i);
+      constrain_alpha_off_rim(dof_handler, *fe, constraints);
       constraints.close();
     }
 
@@ -587,19 +632,7 @@ namespace cosmo
       const auto &       strains_at    = d.strains_at;
       const double       t = d.t, shear_scale = d.shear_scale;
       const bool         jacobian = d.jacobian;
-      sc.fev_tying.reinit(sc.fev_full.get_cell());
-      sc.tying_drives.resize(n_locations);
-      sc.tying_z.resize(n_locations);
-      sc.tying_strain.resize(n_tying);
-      sc.tying_gradient.resize(n_tying);
-      sc.tying_hessian.resize(n_tying);
-      sc.V.reinit(dpc, n_tying);
-      sc.mu.assign(n_tying, 0.);
-      if (jacobian)
-        {
-          sc.M.reinit(n_tying, n_tying);
-          sc.VM.reinit(dpc, n_tying);
-        }
+      sc.prepare_tying(n_locations, n_tying, dpc, jacobian);
       // The fields at each location (e_0 and e_1 share some), then each tied strain.
       for (unsigned int l = 0; l < n_locations; ++l)
         {
