@@ -79,6 +79,42 @@ namespace cosmo
         return s;
       }
 
+      /// table.h5's attributes: what the table is, its strains and units, the run's parameters.
+      void
+      write_table_attributes(HDF5::File &            file,
+                             const TableDescription &d,
+                             const unsigned int      first,
+                             const unsigned int      second)
+      {
+        const auto &names  = kinematics::strain_names;
+        const auto &rnames = kinematics::resultant_names;
+        file.set_attribute("application", d.application);
+        file.set_attribute("version", d.version);
+        file.set_attribute("format", std::string("cosmo constitutive table 2"));
+        file.set_attribute("strain_1_name", names[first]);
+        file.set_attribute("strain_2_name", names[second]);
+        file.set_attribute("strain_order", joined({names.begin(), names.end()}));
+        file.set_attribute("resultant_order", joined({rnames.begin(), rnames.end()}));
+        std::vector<std::string> free, units;
+        std::ostringstream       held;
+        held << std::setprecision(17);
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            if (d.free_strains[k])
+              {
+                free.push_back(names[k]);
+                held << (held.tellp() > 0 ? ", " : "") << rnames[k] << " = " << d.held_resultants[k];
+              }
+            units.push_back(names[k] + ": " + unit_of_strain(k, d));
+          }
+        file.set_attribute("free_strains", free.empty() ? std::string("(none)") : joined(free));
+        file.set_attribute("held_resultants",
+                           held.tellp() > 0 ? held.str() : std::string("(no free strains)"));
+        file.set_attribute("strain_units", joined(units));
+        file.set_attribute("length_unit", d.length_unit);
+        file.set_attribute("parameters", d.parameters);
+      }
+
       /**
        * table.h5, written by all ranks together (each its own points, a
        * collective MPI-IO write; one rank alone without mpirun): the
@@ -169,32 +205,7 @@ namespace cosmo
                                         "(its other entries are NaN)"));
           }
 
-          file.set_attribute("application", d.application);
-          file.set_attribute("version", d.version);
-          file.set_attribute("format", std::string("cosmo constitutive table 2"));
-          file.set_attribute("strain_1_name", names[first]);
-          file.set_attribute("strain_2_name", names[second]);
-          file.set_attribute("strain_order", joined({names.begin(), names.end()}));
-          file.set_attribute("resultant_order", joined({rnames.begin(), rnames.end()}));
-          std::vector<std::string> free, units;
-          std::ostringstream       base, held;
-          base << std::setprecision(17);
-          held << std::setprecision(17);
-          for (unsigned int k = 0; k < 6; ++k)
-            {
-              if (d.free_strains[k])
-                {
-                  free.push_back(names[k]);
-                  held << (held.tellp() > 0 ? ", " : "") << rnames[k] << " = " << d.held_resultants[k];
-                }
-              units.push_back(names[k] + ": " + unit_of_strain(k, d));
-            }
-          file.set_attribute("free_strains", free.empty() ? std::string("(none)") : joined(free));
-          file.set_attribute("held_resultants",
-                             held.tellp() > 0 ? held.str() : std::string("(no free strains)"));
-          file.set_attribute("strain_units", joined(units));
-          file.set_attribute("length_unit", d.length_unit);
-          file.set_attribute("parameters", d.parameters);
+          write_table_attributes(file, d, first, second);
         }
         // Closed by every rank; the dimension scales are rank 0's.
         io::ranks::barrier();

@@ -51,45 +51,44 @@ namespace cosmo
       prm.leave_subsection();
     }
 
-    void
-    ReducedRodProblem::parse_strain_parameters(ParameterHandler &prm)
+    namespace
     {
-      prm.enter_subsection("Rod strains");
-      mode         = prm.get("Mode");
-      if (mode == "natural shape")
-        {
-          // All six strains are unknowns there: what prescribes or frees a
-          // strain has no effect, and a user who set it meant something else.
-          for (const auto &[entry, unset] :
-               std::vector<std::pair<std::string, std::string>>{{"Strains", "0, 0, 1, 0, 0, 0"},
-                                                                {"Free strains", ""},
-                                                                {"Path", ""},
-                                                                {"Resultants", "0, 0, 0, 0, 0, 0"}})
-            {
-              const std::string text = prm.get(entry);
-              bool              is_unset = text == unset;
-              if (!is_unset && (entry == "Strains" || entry == "Resultants"))
-                try
-                  {
-                    is_unset = Utilities::string_to_double(Utilities::split_string_list(text, ',')) ==
-                               (entry == "Strains" ? std::vector<double>{0, 0, 1, 0, 0, 0} :
-                                                     std::vector<double>(6, 0.));
-                  }
-                catch (...)
-                  {}
-              if (!is_unset)
-                throw io::InputError("Rod strains", entry, text,
-                                     "nothing in 'Mode = natural shape' (all six strains are free "
-                                     "there and this entry is ignored): set 'Mode = prescribed "
-                                     "strains' to use it, or remove it");
-            }
-        }
-      const auto e = io::get_double_list(prm, "Strains", 6, "Rod strains");
-      // A strain of a size no rod has (a shear or stretch of 100, a curvature
-      // of 100 turns per unit length) is a typing error, and would only make
-      // the nonlinear solver wander.
-      auto check_size = [&](const std::string &entry, const std::string &text,
-                            const std::array<double, 6> &v) {
+      /// 'Mode = natural shape' (section 'Rod strains' entered): all six strains are unknowns
+      /// there, so what prescribes or frees a strain has no effect, and a user who set it
+      /// meant something else.
+      void
+      refuse_prescriptions_in_natural_shape(ParameterHandler &prm)
+      {
+        for (const auto &[entry, unset] :
+             std::vector<std::pair<std::string, std::string>>{{"Strains", "0, 0, 1, 0, 0, 0"},
+                                                              {"Free strains", ""},
+                                                              {"Path", ""},
+                                                              {"Resultants", "0, 0, 0, 0, 0, 0"}})
+          {
+            const std::string text = prm.get(entry);
+            bool              is_unset = text == unset;
+            if (!is_unset && (entry == "Strains" || entry == "Resultants"))
+              try
+                {
+                  is_unset = Utilities::string_to_double(Utilities::split_string_list(text, ',')) ==
+                             (entry == "Strains" ? std::vector<double>{0, 0, 1, 0, 0, 0} :
+                                                   std::vector<double>(6, 0.));
+                }
+              catch (...)
+                {}
+            if (!is_unset)
+              throw io::InputError("Rod strains", entry, text,
+                                   "nothing in 'Mode = natural shape' (all six strains are free "
+                                   "there and this entry is ignored): set 'Mode = prescribed "
+                                   "strains' to use it, or remove it");
+          }
+      }
+
+      /// A strain of a size no rod has (a shear or stretch of 100, a curvature of 100 turns per
+      /// unit length) is a typing error, and would only make the nonlinear solver wander.
+      void
+      check_strain_sizes(const std::string &entry, const std::string &text, const std::array<double, 6> &v)
+      {
         for (unsigned int k = 0; k < 6; ++k)
           if (std::abs(v[k]) > (k < 3 ? 100. : 200. * M_PI))
             {
@@ -98,8 +97,18 @@ namespace cosmo
                 << kinematics::strain_names[k] << " = " << v[k] << " is not)";
               throw io::InputError("Rod strains", entry, text, m.str());
             }
-      };
-      check_size("Strains", prm.get("Strains"), {{e[0], e[1], e[2], e[3], e[4], e[5]}});
+      }
+    } // namespace
+
+    void
+    ReducedRodProblem::parse_strain_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Rod strains");
+      mode         = prm.get("Mode");
+      if (mode == "natural shape")
+        refuse_prescriptions_in_natural_shape(prm);
+      const auto e = io::get_double_list(prm, "Strains", 6, "Rod strains");
+      check_strain_sizes("Strains", prm.get("Strains"), {{e[0], e[1], e[2], e[3], e[4], e[5]}});
       std::copy(e.begin(), e.end(), target_strains.begin());
       {
         const auto n = io::get_double_list(prm, "Resultants", 6, "Rod strains");
@@ -155,7 +164,7 @@ namespace cosmo
                                    "waypoints of six finite numbers ('" + point +
                                      "' has nan or inf)");
           waypoints.push_back({{v[0], v[1], v[2], v[3], v[4], v[5]}});
-          check_size("Path", path_text, waypoints.back());
+          check_strain_sizes("Path", path_text, waypoints.back());
         }
       if (!waypoints.empty())
         {
