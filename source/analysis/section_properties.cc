@@ -58,6 +58,110 @@ namespace cosmo
     } // namespace
 
 
+    namespace
+    {
+      /// Area, first moments (geometric, E- and mass-weighted) and the
+      /// stiffnesses EA, GA, the mass and the three centres.
+      void
+      add_area_moments(const DoFHandler<2> &                                  dof_handler,
+                       FEValues<2> &                                          fe_values,
+                       const std::function<RegionModuli(types::material_id)> &moduli,
+                       LinearSectionProperties &                              p)
+      {
+        const unsigned int nq = fe_values.n_quadrature_points;
+        double Sx = 0, Sy = 0, ESx = 0, ESy = 0, RSx = 0, RSy = 0;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            fe_values.reinit(cell);
+            const RegionModuli m = moduli(cell->material_id());
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const Point<2> &x  = fe_values.quadrature_point(q);
+                const double    dA = fe_values.JxW(q);
+                p.area += dA;
+                Sx += x[0] * dA;
+                Sy += x[1] * dA;
+                p.EA += m.young * dA;
+                p.GA += m.shear * dA;
+                ESx += m.young * x[0] * dA;
+                ESy += m.young * x[1] * dA;
+                p.mass += m.density * dA;
+                RSx += m.density * x[0] * dA;
+                RSy += m.density * x[1] * dA;
+              }
+          }
+        p.mass_centre = Point<2>(RSx / p.mass, RSy / p.mass);
+        p.centroid       = Point<2>(Sx / p.area, Sy / p.area);
+        p.elastic_centre = Point<2>(ESx / p.EA, ESy / p.EA);
+      }
+
+      /**
+       * Flexure loads for unit shear forces n = e1, e2 (Poisson effect
+       * neglected): the axial stress rate d sigma/dX3 = E (g1 X1 + g2 X2)
+       * with [[S11, S12], [S12, S22]] g = n, S_ab = int E X_a X_b about the
+       * elastic centre xe.
+       */
+      std::array<Vector<double>, 2>
+      flexure_loads(const DoFHandler<2> &                                  dof_handler,
+                    FEValues<2> &                                          fe_values,
+                    const std::function<RegionModuli(types::material_id)> &moduli,
+                    const Point<2> &                                       xe,
+                    const double                                           S11,
+                    const double                                           S12,
+                    const double                                           S22)
+      {
+        const unsigned int n = dof_handler.n_dofs(), dpc = fe_values.dofs_per_cell,
+                           nq = fe_values.n_quadrature_points;
+        const double       D = S11 * S22 - S12 * S12;
+        std::array<Vector<double>, 2>        flexure_rhs{{Vector<double>(n), Vector<double>(n)}};
+        std::vector<types::global_dof_index> dofs(dpc);
+        std::array<std::array<double, 2>, 2> g;
+        g[0] = {{S22 / D, -S12 / D}};
+        g[1] = {{-S12 / D, S11 / D}};
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dofs);
+            const RegionModuli m = moduli(cell->material_id());
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const Point<2> &x  = fe_values.quadrature_point(q);
+                const double    dA = fe_values.JxW(q);
+                const double    X1 = x[0] - xe[0], X2 = x[1] - xe[1];
+                for (unsigned int a = 0; a < 2; ++a)
+                  {
+                    const double f = m.young * (g[a][0] * X1 + g[a][1] * X2);
+                    for (unsigned int i = 0; i < dpc; ++i)
+                      flexure_rhs[a](dofs[i]) += f * fe_values.shape_value(i, q) * dA;
+                  }
+              }
+          }
+        return flexure_rhs;
+      }
+      /**
+       * Pure Neumann problems with the matrix A, each load in balance (int f
+       * = 0 at the elastic centre; the torsion load is a divergence): pinning
+       * one value selects one solution of the singular system without
+       * changing the others. A is changed; the loads become the solutions.
+       */
+      void
+      solve_neumann_problems(SparseMatrix<double> &A, std::vector<Vector<double>> &solutions)
+      {
+        const unsigned int pin = 0;
+        for (auto it = A.begin(pin); it != A.end(pin); ++it)
+          if (it->column() != pin)
+            {
+              it->value() = 0;
+              A.set(it->column(), pin, 0.);
+            }
+        for (auto &s : solutions)
+          s(pin) = 0;
+        solvers::SparseDirectSolver solver;
+        solver.factorize(A);
+        solver.solve(solutions);
+      }
+    } // namespace
+
     LinearSectionProperties
     linear_section_properties(const Triangulation<2> &                                 tria,
                               const Mapping<2> &                                       mapping,
@@ -77,30 +181,7 @@ namespace cosmo
       const unsigned int dpc = fe.n_dofs_per_cell(), nq = quadrature.size();
 
       // Pass 1: areas and first and second moments (geometric and E-weighted).
-      double Sx = 0, Sy = 0, ESx = 0, ESy = 0, RSx = 0, RSy = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fe_values.reinit(cell);
-          const RegionModuli m = moduli(cell->material_id());
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const Point<2> &x  = fe_values.quadrature_point(q);
-              const double    dA = fe_values.JxW(q);
-              p.area += dA;
-              Sx += x[0] * dA;
-              Sy += x[1] * dA;
-              p.EA += m.young * dA;
-              p.GA += m.shear * dA;
-              ESx += m.young * x[0] * dA;
-              ESy += m.young * x[1] * dA;
-              p.mass += m.density * dA;
-              RSx += m.density * x[0] * dA;
-              RSy += m.density * x[1] * dA;
-            }
-        }
-      p.mass_centre = Point<2>(RSx / p.mass, RSy / p.mass);
-      p.centroid       = Point<2>(Sx / p.area, Sy / p.area);
-      p.elastic_centre = Point<2>(ESx / p.EA, ESy / p.EA);
+      add_area_moments(dof_handler, fe_values, moduli, p);
       const Point<2> &xe = p.elastic_centre;
 
       // Pass 2: bending about the elastic centre; the G-weighted Laplacian
@@ -148,45 +229,10 @@ namespace cosmo
       // neglected): the axial stress rate d sigma/dX3 = E (g1 X1 + g2 X2)
       // with [[S11, S12], [S12, S22]] g = n, S_ab = int E X_a X_b.
       const double S11 = p.EI22, S22 = p.EI11, S12 = p.EI12, D = S11 * S22 - S12 * S12;
-      std::array<Vector<double>, 2> flexure_rhs{{Vector<double>(n), Vector<double>(n)}};
-      std::array<std::array<double, 2>, 2> g;
-      g[0] = {{S22 / D, -S12 / D}};
-      g[1] = {{-S12 / D, S11 / D}};
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dofs);
-          const RegionModuli m = moduli(cell->material_id());
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const Point<2> &x  = fe_values.quadrature_point(q);
-              const double    dA = fe_values.JxW(q);
-              const double    X1 = x[0] - xe[0], X2 = x[1] - xe[1];
-              for (unsigned int a = 0; a < 2; ++a)
-                {
-                  const double f = m.young * (g[a][0] * X1 + g[a][1] * X2);
-                  for (unsigned int i = 0; i < dpc; ++i)
-                    flexure_rhs[a](dofs[i]) += f * fe_values.shape_value(i, q) * dA;
-                }
-            }
-        }
+      const auto flexure_rhs = flexure_loads(dof_handler, fe_values, moduli, xe, S11, S12, S22);
 
-      // Pure Neumann problems, each load in balance (int f = 0 at the elastic
-      // centre; the torsion load is a divergence): pinning one value
-      // selects one solution of the singular system without changing the others.
-      const unsigned int pin = 0;
-      for (auto it = A.begin(pin); it != A.end(pin); ++it)
-        if (it->column() != pin)
-          {
-            it->value() = 0;
-            A.set(it->column(), pin, 0.);
-          }
       std::vector<Vector<double>> solutions{torsion_rhs, flexure_rhs[0], flexure_rhs[1]};
-      for (auto &s : solutions)
-        s(pin) = 0;
-      solvers::SparseDirectSolver solver;
-      solver.factorize(A);
-      solver.solve(solutions);
+      solve_neumann_problems(A, solutions);
       const Vector<double> &omega = solutions[0];
 
       // Pass 3: integrals of the warping functions.
