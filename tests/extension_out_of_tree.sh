@@ -15,7 +15,8 @@
 #    doc.cookbook_growth_law); its postprocessor 'quantity history' is called
 #    at every converged state and located event of a strip run (its rows are
 #    steps.csv's, its event rows summary.json's events), with the library's
-#    own 'unknowns' beside it;
+#    own 'unknowns' beside it; in a study each point's postprocessors are its
+#    own (a point's unknowns.csv has its own states only);
 # 3. bad input: a library that cannot be loaded, or that registers a name
 #    already registered, is exit status 1 naming the entry.
 # usage: extension_out_of_tree.sh <build dir> <source dir> <scratch dir>
@@ -134,6 +135,27 @@ assert abs(q["largest |energy|"] - largest) <= 1e-9 * largest
 print(f"{d.rsplit('/', 1)[1]}: the postprocessors saw {len(states)} states (steps.csv's) and {len(events)} events (summary.json's)")
 PY
 done
+
+# In a study each point's run has postprocessors of its own: its unknowns.csv
+# holds its own states, as many as its steps.csv (not the points' before it).
+cat "$src/parameter_files/rod_cross_section/studies/curvature_vs_differential_growth.prm" \
+  - > "$dir/study.prm" <<'EOP'
+subsection Postprocess
+  set List of postprocessors = unknowns
+end
+EOP
+sed -i -e "s|^\( *set Output directory *=\).*|\1 $dir/study|" "$dir/study.prm"
+(cd "$src" && "$prefix/bin/rod_cross_section" --quiet "$dir/study.prm")
+python3 - "$dir/study" <<'PY'
+import glob, sys
+points = sorted(glob.glob(sys.argv[1] + "/point-*"))
+assert len(points) > 1, points
+for d in points:
+    steps = sum(1 for _ in open(d + "/steps.csv")) - 1
+    own = sum(1 for _ in open(d + "/unknowns.csv")) - 1
+    assert own == steps > 0, (d, own, steps)
+print(f"study: each of the {len(points)} points' unknowns.csv has its own states only")
+PY
 
 # 3. Bad input.
 expect_error() {

@@ -941,16 +941,16 @@ namespace cosmo
         return table;
       }
 
-      /// Point k of a sweep (its parameters prepared in `prm`): its row and line.
+      /// Point k of a sweep (its parameters prepared in `prm`, its files in `directory`): its
+      /// row and line.
       io::PointLoop::Point
-      sweep_point(ParameterHandler &              prm,
-                  const io::RunOptions &          options,
-                  const io::ParameterSweep &      sweep,
-                  const unsigned int              k)
+      sweep_point(ParameterHandler &        prm,
+                  const io::RunOptions &    options,
+                  const io::ParameterSweep &sweep,
+                  const unsigned int        k,
+                  const std::string &       directory)
       {
-        io::RunOptions point_options = options;
-        point_options.quiet          = true;    // the point's log.txt has the details
-        point_options.resume_directory.clear(); // a point is run whole again
+        const io::RunOptions point_options = io::PointLoop::point_options(options, prm);
         io::PointLoop::Point p;
         p.row = {double(k), sweep.value(k)};
         std::ostringstream line;
@@ -961,6 +961,7 @@ namespace cosmo
             CrossSectionProblem problem;
             problem.parse_parameters(prm);
             problem.run(point_options, prm);
+            io::PointLoop::finish_point(point_options, directory);
             const auto &s = problem.final_state();
             const auto  h = kinematics::helix_geometry(kinematics::RodStrains(s.strains));
             p.row.push_back(1);
@@ -1064,8 +1065,9 @@ namespace cosmo
       (*log)("rod_cross_section " + std::string(COSMO_VERSION) + ": " + options.parameter_file +
              ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
       loop.run(*log, [&](const unsigned int k) {
-        sweep.prepare_point(prm, k, io::ParameterSweep::point_directory(loop.shared_directory(), k));
-        return sweep_point(prm, options, sweep, k);
+        const std::string directory = io::ParameterSweep::point_directory(loop.shared_directory(), k);
+        sweep.prepare_point(prm, k, directory);
+        return sweep_point(prm, options, sweep, k, directory);
       });
     }
   } // namespace rod

@@ -1,6 +1,7 @@
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/point_loop.h>
+#include <cosmo/io/postprocessors.h>
 #include <cosmo/io/run_directory.h>
 
 #include <limits>
@@ -23,6 +24,24 @@ namespace cosmo
         resumed = ranks::resume_points(description.directory, table, [&](const std::string &d) {
           return read_checkpoint(d, description.checkpoint_kind, description.parameters);
         });
+    }
+
+    RunOptions
+    PointLoop::point_options(const RunOptions &options, ParameterHandler &prm)
+    {
+      RunOptions o = options;
+      o.quiet      = true;
+      o.resume_directory.clear();
+      o.postprocessors = std::make_shared<Postprocessors>();
+      o.postprocessors->parse_parameters(prm);
+      return o;
+    }
+
+    void
+    PointLoop::finish_point(const RunOptions &point_options, const std::string &point_directory)
+    {
+      if (point_options.postprocessors)
+        point_options.postprocessors->finish(point_directory);
     }
 
     void

@@ -97,9 +97,12 @@ namespace cosmo
         auto run = study.make_run(prm);
         run->start_from_critical_point(g);
         ContinuedBack back;
+        // (an auxiliary run: the point's postprocessors are the point's own)
+        io::RunOptions auxiliary = options;
+        auxiliary.postprocessors.reset();
         try
           {
-            run->run(options, prm);
+            run->run(auxiliary, prm);
           }
         catch (io::RunFailure &e)
           {
@@ -166,6 +169,7 @@ namespace cosmo
           , sweep(sweep)
           , study(study)
           , log(log)
+          , options(options)
           , quiet(options)
           , curve(sweep.critical_curve())
           , n_mode(study.mode_columns.size())
@@ -218,6 +222,8 @@ namespace cosmo
         const io::ParameterSweep &                      sweep;
         const CriticalPointStudy &                      study;
         std::function<void(const std::string &)>        log;
+        const io::RunOptions &                          options;
+        /// The running point's options (PointLoop::point_options).
         io::RunOptions                                  quiet;
         const bool                                      curve;
         const std::size_t                               n_mode, n_more;
@@ -342,7 +348,9 @@ namespace cosmo
         try
           {
             sweep.prepare_point(prm, k, directory);
+            quiet          = io::PointLoop::point_options(options, prm);
             const auto run = solve(k, f);
+            io::PointLoop::finish_point(quiet, directory);
             if (const EventRecord *e = first_critical_point(run->located_events()))
               {
                 f.t          = e->event.lambda;

@@ -1,7 +1,10 @@
 #ifndef cosmo_io_point_loop_h
 #define cosmo_io_point_loop_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
 #include <cosmo/io/ranks.h>
 
 #include <functional>
@@ -122,6 +125,17 @@ namespace cosmo
        */
       void
       run(RunLog &log, const std::function<Point(unsigned int k)> &point);
+
+      /**
+       * The options of one point's run: quiet (the point's log.txt has the
+       * details), run whole (not resumed), and with postprocessors of its
+       * own, parsed from the point's parameters, so that no point's files
+       * carry another point's states. finish_point() ends them.
+       */
+      static RunOptions
+      point_options(const RunOptions &options, ParameterHandler &prm);
+      static void
+      finish_point(const RunOptions &point_options, const std::string &point_directory);
 
       /// The directory every rank's point directories are in (rank 0's);
       /// valid from run() on.
