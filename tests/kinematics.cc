@@ -10,6 +10,7 @@
 #include <cosmo/kinematics/rotation.h>
 #include <cosmo/kinematics/strip.h>
 #include <cosmo/materials/energy_derivatives.h>
+#include <cosmo/materials/plate_laws/linear_isotropic.h>
 
 #include <Sacado.hpp>
 
@@ -182,6 +183,76 @@ namespace
     return d / m;
   }
 
+  /**
+   * A plate law no built-in law is: a full 6 x 6 quadratic form in the
+   * membrane and bending measures (membrane-bending couplings, as of an
+   * unsymmetric laminate) plus a quartic stiffening, and a quartic shear.
+   * The kinematics must take it as they take the linear isotropic law: the
+   * chain rule through the measures and the nested AD of the law's Taylor
+   * form (materials::PlateLawAt) must agree for it too.
+   */
+  class CoupledQuarticLaw : public cosmo::materials::PlateLaw
+  {
+  public:
+    void
+    parse_parameters(ParameterHandler &) override
+    {}
+    double
+    young() const override
+    {
+      return 1;
+    }
+    double
+    poisson() const override
+    {
+      return 0.3;
+    }
+    void
+    energy_derivatives(const std::array<double, 8> &s,
+                       const double                 h,
+                       const cosmo::materials::PlatePart part,
+                       const bool                   with_hessian,
+                       double &                     W,
+                       std::array<double, 8> &      dW,
+                       std::array<double, 64> &     ddW) const override
+    {
+      dW.fill(0.);
+      ddW.fill(0.);
+      const bool         shear = part == cosmo::materials::PlatePart::transverse_shear;
+      const unsigned int first = shear ? 6 : 0, n = shear ? 2 : 6;
+      // W = 1/2 s.A s + c/4 (s.s)^2 over the part's measures, A = h (I + B^T B / 4).
+      double ss = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        ss += s[first + i] * s[first + i];
+      const double c = 0.7 * h;
+      W              = 0.25 * c * ss * ss;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double A = h * ((i == j ? 1. : 0.) + 0.25 * coupling(i, j));
+              W += 0.5 * s[first + i] * A * s[first + j];
+              dW[first + i] += A * s[first + j];
+              if (with_hessian)
+                ddW[8 * (first + i) + first + j] =
+                  A + c * ((i == j ? ss : 0.) + 2 * s[first + i] * s[first + j]);
+            }
+          dW[first + i] += c * ss * s[first + i];
+        }
+    }
+
+  private:
+    // (B^T B)_ij with B_kl = sin(k + 2 l + 1): dense, symmetric, positive semi-definite.
+    static double
+    coupling(const unsigned int i, const unsigned int j)
+    {
+      double x = 0;
+      for (unsigned int k = 0; k < 6; ++k)
+        x += std::sin(k + 2. * i + 1) * std::sin(k + 2. * j + 1);
+      return x;
+    }
+  };
+
   // The strip energy's chain-rule derivatives (strip_energy_derivatives)
   // against the nested AD of strip_energy in all 16 variables, at random
   // states with large rotations, at theta = 0 exactly (the exponential's
@@ -190,12 +261,11 @@ namespace
   // of each quantity's largest entry; the tolerance 1e-12 is well above
   // that and far below any error of the formulas (a wrong term is O(1)).
   void
-  strip_chain_rule()
+  strip_chain_rule(const cosmo::materials::PlateLaw &plate_law, const std::string &name)
   {
-    std::cout << "strip energy: chain rule against nested AD in 16 variables\n";
+    std::cout << "strip energy (" << name << "): chain rule against nested AD in 16 variables\n";
     constexpr int                    N = strip_local_variables;
-    cosmo::materials::NaghdiPlateLaw law;
-    law.thickness = 0.03;
+    const cosmo::materials::PlateLawAt law(plate_law, 0.03);
     std::mt19937                           gen(7);
     std::uniform_real_distribution<double> u(-1, 1);
     double                                 worst[3] = {0, 0, 0};
@@ -240,12 +310,11 @@ namespace
   // floating-point operations; the tolerance is that of the strip's test
   // above.
   void
-  plate_chain_rule()
+  plate_chain_rule(const cosmo::materials::PlateLaw &plate_law, const std::string &name)
   {
-    std::cout << "Cosserat plate energy: chain rule against nested AD in 15 variables\n";
+    std::cout << "Cosserat plate energy (" << name << "): chain rule against nested AD in 15 variables\n";
     constexpr int                    N = plate_local_variables;
-    cosmo::materials::NaghdiPlateLaw law;
-    law.thickness = 0.03;
+    const cosmo::materials::PlateLawAt law(plate_law, 0.03);
     auto model    = cosmo::plugins::Registry<PlateModel>::create("cosserat");
     std::mt19937                           gen(11);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -474,8 +543,12 @@ main()
   exp_log_round_trip();
   exp_derivative();
   helix_against_integration();
-  strip_chain_rule();
-  plate_chain_rule();
+  const cosmo::materials::LinearIsotropicPlateLaw linear;
+  const CoupledQuarticLaw                         coupled;
+  strip_chain_rule(linear, "linear isotropic");
+  strip_chain_rule(coupled, "coupled quartic");
+  plate_chain_rule(linear, "linear isotropic");
+  plate_chain_rule(coupled, "coupled quartic");
   assumed_shear_reduction();
   return cosmo_test::report();
 }

@@ -33,30 +33,11 @@ namespace cosmo
                           "quadrature point of the plate, e.g. '1 - r^2' for a lenticular disc. "
                           "The closed forms assume f = 1.");
         prm.leave_subsection();
-        materials::NaghdiPlateLaw::declare_parameters(prm);
+        materials::declare_plate_law_parameters(prm);
         materials::PlateGrowth::declare_parameters(prm);
         prm.enter_subsection("Rim rod");
-        prm.declare_entry("Stiffnesses", "0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6",
-                          Patterns::List(Patterns::Double(0), 6, 6),
-                          "GA1, GA2, EA, EI1, EI2, GJ of the rim's cross-section (d1 radial, d2 "
-                          "the plate normal, d3 the tangent): shear along d1, d2, extension, "
-                          "bending about d1 (out of plane), about d2 (in plane), torsion. E.g. the "
-                          "diagonal of a rod_cross_section stiffness.");
-        prm.declare_entry("Stiffness file", "", Patterns::Anything(),
-                          "If set: a rod_cross_section summary.json whose 6x6 'stiffness' is "
-                          "the rim's stiffness, couplings included (about the section's origin; "
-                          "its X1 is the rim's radial axis d1, X2 the plate normal d2); replaces "
-                          "'Stiffnesses'. It must be symmetric positive definite. The closed "
-                          "forms use its diagonal.");
-        prm.declare_entry("Natural curvature", "0, 0, 0", Patterns::Anything(),
-                          "Change of the rim's stress-free curvature reached at t = 1 (ramped as "
-                          "t dk) from the rim's own growth through its section: dk1, dk2, dk3 in "
-                          "the rim's frame d1 = e_r, d2 = E3, d3 = -e_theta (dk1 bends the rim "
-                          "out of the plate's plane, dk2 changes its in-plane curvature, dk3 is "
-                          "a natural twist), per unit length.");
-        prm.declare_entry("Growth factor", "1", Patterns::Double(0),
-                          "Axial growth g of the rim at t = 1 (ramped as 1 + t (g - 1)); the "
-                          "stress-free rim is a ring of radius g R.");
+        materials::declare_rod_law_parameters(prm);
+        materials::declare_rod_growth_parameters(prm);
         prm.leave_subsection();
       }
 
@@ -172,6 +153,57 @@ namespace cosmo
                           "d3, the shears nu1, nu2, the twist kappa3 and n1, n2, m3 change sign).");
         prm.leave_subsection();
       }
+
+      /// 'Plate / Radius' and 'Thickness' (section 'Plate' entered): positive, h < R and
+      /// h/R not below what double precision resolves.
+      void
+      check_plate_dimensions(const ParameterHandler &prm, const double radius, const double thickness)
+      {
+        if (!(radius > 0))
+          throw io::InputError("Plate", "Radius", prm.get("Radius"), "must be positive");
+        if (!(thickness > 0) || !(thickness < radius))
+          throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
+                               "must be positive and smaller than the radius " +
+                                 prm.get("Radius"));
+        // The stability test's round-off grows like (R/h)^3 (doc/theory-plate-rod.md
+        // section 9: at h/R = 1e-4 it is 3e-3 to 1 of the threshold, by mesh); below
+        // 1e-5 no digit of a threshold would be significant.
+        if (thickness < 1e-5 * radius)
+          throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
+                               "h/R >= 1e-5 (here " + std::to_string(thickness / radius) +
+                                 "): in double precision the stability of thinner plates cannot "
+                                 "be resolved (doc/theory-plate-rod.md section 9)");
+      }
+
+      /// The diagonal of the 6x6 stiffness K (row-major) into `diagonal`; returns its
+      /// largest coupling |K_ab| / sqrt(|K_aa K_bb|).
+      double
+      diagonal_and_coupling(const std::array<double, 36> &K, std::array<double, 6> &diagonal)
+      {
+        double coupling = 0;
+        for (unsigned int a = 0; a < 6; ++a)
+          {
+            diagonal[a] = K[7 * a];
+            for (unsigned int b = 0; b < 6; ++b)
+              if (a != b)
+                coupling = std::max(coupling,
+                                    std::abs(K[6 * a + b]) / std::sqrt(std::abs(K[7 * a] * K[7 * b])));
+          }
+        return coupling;
+      }
+
+      /// n of 'Mesh / Sector angle' = 180/n degrees (section 'Mesh' entered), an integer >= 1.
+      unsigned int
+      sector_divisor(const ParameterHandler &prm)
+      {
+        const double angle = prm.get_double("Sector angle");
+        const double n     = 180. / angle;
+        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
+          throw io::InputError("Mesh", "Sector angle", prm.get("Sector angle"),
+                               "the sector must be pi/n: 180/n degrees for an integer n >= 1 "
+                               "(180, 90, 60, 45, 36, 30, ...)");
+        return static_cast<unsigned int>(std::round(n));
+      }
     } // namespace
 
     void
@@ -182,59 +214,14 @@ namespace cosmo
       declare_path_and_output(prm);
     }
 
-    namespace
-    {
-      /**
-       * The 6x6 "stiffness" of a rod_cross_section summary.json, row by row;
-       * io::InputError naming 'Rim rod / Stiffness file' if the file is not
-       * one or the matrix is not 6x6 of finite numbers.
-       */
-      std::vector<double>
-      read_section_stiffness(const std::string &file)
-      {
-        std::ifstream in(file);
-        if (!in)
-          throw io::InputError("Rim rod", "Stiffness file", file,
-                               "a readable rod_cross_section summary.json (cannot open it)");
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        std::vector<double> K; // the finite numbers of "stiffness", row by row
-        std::size_t         rows = 0, non_square = 0;
-        try
-          {
-            const io::JSON  summary = io::JSON::parse(buffer.str());
-            const io::JSON *k       = summary.find("stiffness");
-            if (k && k->is_array())
-              for (rows = 0; rows < k->size(); ++rows)
-                {
-                  non_square += k->at(rows).size() != 6;
-                  for (std::size_t b = 0; b < k->at(rows).size(); ++b)
-                    if (std::isfinite(k->at(rows).at(b).as_number()))
-                      K.push_back(k->at(rows).at(b).as_number());
-                }
-          }
-        catch (std::runtime_error &e)
-          {
-            throw io::InputError("Rim rod", "Stiffness file", file,
-                                 "a rod_cross_section summary.json (" + std::string(e.what()) + ")");
-          }
-        if (K.size() != 36 || rows != 6 || non_square > 0)
-          throw io::InputError("Rim rod", "Stiffness file", file,
-                               "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
-                               "finite numbers (found " + std::to_string(K.size()) +
-                                 " numbers in " + std::to_string(rows) + " rows)");
-        return K;
-      }
-    } // namespace
-
     void
     PlateRodProblem::check_rim_stiffness(const std::string &entry, const std::string &text) const
     {
       // The rim against the plate: beyond 1e8 times the plate's own stiffness
       // the coupled Hessian loses every digit of the plate's contribution in
       // double precision (the rigid limit is reached to 1e-8 long before).
-      const double Eh = plate_law.young * thickness;
-      const double D  = plate_law.bending_stiffness();
+      const double Eh = plate_law->young() * thickness;
+      const double D  = plate_law->bending_stiffness(thickness);
       const char * names[6] = {"GA1", "GA2", "EA", "EI1", "EI2", "GJ"};
       for (unsigned int i = 0; i < 6; ++i)
         {
@@ -255,75 +242,6 @@ namespace cosmo
         }
     }
 
-    namespace
-    {
-      /// A rim stiffness from a part-1 summary.json: its diagonal, the
-      /// symmetric part of its couplings, and the largest coupling
-      /// |K_ab| / sqrt(K_aa K_bb).
-      struct RimStiffness
-      {
-        std::array<double, 6>                diagonal{};
-        std::array<std::array<double, 6>, 6> coupling{};
-        double                               largest_coupling = 0;
-      };
-
-      /// 'Rim rod / Stiffness file': io::InputError unless it is a symmetric
-      /// positive definite 6x6 (non-positive diagonals are left to
-      /// check_rim_stiffness(), which names them).
-      RimStiffness
-      read_rim_stiffness(const std::string &file)
-      {
-        const auto   K = read_section_stiffness(file);
-        RimStiffness rim;
-        // The full matrix: its symmetric part (a summary's K is symmetric
-        // to round-off), and how much its couplings weigh.
-        double coupling = 0, asymmetry = 0, scale = 0;
-        for (unsigned int a = 0; a < 6; ++a)
-          {
-            rim.diagonal[a] = K[7 * a];
-            for (unsigned int b = 0; b < 6; ++b)
-              {
-                scale     = std::max(scale, std::abs(K[6 * a + b]));
-                asymmetry = std::max(asymmetry, std::abs(K[6 * a + b] - K[6 * b + a]));
-                rim.coupling[a][b] = a == b ? 0. : 0.5 * (K[6 * a + b] + K[6 * b + a]);
-                if (a != b)
-                  coupling = std::max(coupling, std::abs(K[6 * a + b]) /
-                                                  std::sqrt(std::abs(K[7 * a] * K[7 * b])));
-              }
-          }
-        if (asymmetry > 1e-8 * scale)
-          throw io::InputError("Rim rod", "Stiffness file", file,
-                               "a symmetric 6x6 stiffness (max |K_ab - K_ba| = " +
-                                 io::format_number(asymmetry) + ")");
-        // Positive definite: Cholesky (a stable rim needs it; a failure names the pivot).
-        // (Non-positive diagonals are left to check_rim_stiffness(), which names them.)
-        std::array<std::array<double, 6>, 6> L{};
-        const bool positive_diagonal =
-          std::all_of(rim.diagonal.begin(), rim.diagonal.end(), [](double k) { return k > 0; });
-        for (unsigned int j = 0; positive_diagonal && j < 6; ++j)
-          {
-            double d = K[7 * j];
-            for (unsigned int k = 0; k < j; ++k)
-              d -= L[j][k] * L[j][k];
-            if (!(d > 1e-12 * K[7 * j]))
-              throw io::InputError("Rim rod", "Stiffness file", file,
-                                   "a positive definite 6x6 stiffness (its leading " +
-                                     std::to_string(j + 1) + "x" + std::to_string(j + 1) +
-                                     " block is not)");
-            L[j][j] = std::sqrt(d);
-            for (unsigned int i = j + 1; i < 6; ++i)
-              {
-                double v = 0.5 * (K[6 * i + j] + K[6 * j + i]);
-                for (unsigned int k = 0; k < j; ++k)
-                  v -= L[i][k] * L[j][k];
-                L[i][j] = v / L[j][j];
-              }
-          }
-        rim.largest_coupling = coupling;
-        return rim;
-      }
-    } // namespace
-
     void
     PlateRodProblem::parse_parameters(ParameterHandler &prm)
     {
@@ -331,20 +249,7 @@ namespace cosmo
       prm.enter_subsection("Plate");
       radius    = prm.get_double("Radius");
       thickness = prm.get_double("Thickness");
-      if (!(radius > 0))
-        throw io::InputError("Plate", "Radius", prm.get("Radius"), "must be positive");
-      if (!(thickness > 0) || !(thickness < radius))
-        throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
-                             "must be positive and smaller than the radius " +
-                               prm.get("Radius"));
-      // The stability test's round-off grows like (R/h)^3 (doc/theory-plate-rod.md
-      // section 9: at h/R = 1e-4 it is 3e-3 to 1 of the threshold, by mesh); below
-      // 1e-5 no digit of a threshold would be significant.
-      if (thickness < 1e-5 * radius)
-        throw io::InputError("Plate", "Thickness", prm.get("Thickness"),
-                             "h/R >= 1e-5 (here " + std::to_string(thickness / radius) +
-                               "): in double precision the stability of thinner plates cannot "
-                               "be resolved (doc/theory-plate-rod.md section 9)");
+      check_plate_dimensions(prm, radius, thickness);
       thickness_profile_text = prm.get("Thickness profile");
       thickness_profile =
         thickness_profile_text == "1" ?
@@ -352,30 +257,14 @@ namespace cosmo
           materials::parse_expression_of_position(thickness_profile_text, "Plate",
                                                   "Thickness profile", 1);
       prm.leave_subsection();
-      plate_law.parse_parameters(prm);
-      plate_law.thickness = thickness;
+      plate_law = materials::create_plate_law(prm);
       plate_growth.parse_parameters(prm);
 
       prm.enter_subsection("Rim rod");
-      const auto k = io::get_double_list(prm, "Stiffnesses", 6, "Rim rod");
-      std::copy(k.begin(), k.end(), rod_stiffness.begin());
+      rim_law    = materials::create_rod_law(prm, "Rim rod");
+      rim_growth = materials::create_rod_growth(prm, "Rim rod");
+      stiffness_coupling = diagonal_and_coupling(rim_law->natural_stiffness(), rod_stiffness);
       stiffness_file = prm.get("Stiffness file");
-      if (!stiffness_file.empty())
-        {
-          const RimStiffness r = read_rim_stiffness(stiffness_file);
-          rod_stiffness        = r.diagonal;
-          rod_coupling         = r.coupling;
-          stiffness_coupling   = r.largest_coupling;
-        }
-      {
-        const auto k = io::get_double_list(prm, "Natural curvature", 3, "Rim rod");
-        for (unsigned int i = 0; i < 3; ++i)
-          rod_natural_curvature[i] = k[i];
-      }
-      rod_growth = prm.get_double("Growth factor");
-      if (!(rod_growth > 0))
-        throw io::InputError("Rim rod", "Growth factor", prm.get("Growth factor"),
-                             "must be positive");
       // The stiffnesses in use are the file's if one is given: its entry is named.
       if (stiffness_file.empty())
         check_rim_stiffness("Stiffnesses", prm.get("Stiffnesses"));
@@ -400,15 +289,7 @@ namespace cosmo
 
       prm.enter_subsection("Mesh");
       domain = prm.get("Domain");
-      {
-        const double angle = prm.get_double("Sector angle");
-        const double n     = 180. / angle;
-        if (!(angle > 0) || std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
-          throw io::InputError("Mesh", "Sector angle", prm.get("Sector angle"),
-                               "the sector must be pi/n: 180/n degrees for an integer n >= 1 "
-                               "(180, 90, 60, 45, 36, 30, ...)");
-        sector_n = static_cast<unsigned int>(std::round(n));
-      }
+      sector_n = sector_divisor(prm);
       sector_mesh = prm.get("Sector mesh");
       if (sector_mesh == "mirrored" && domain != "sector")
         throw io::InputError("Mesh", "Sector mesh", sector_mesh,

@@ -23,6 +23,7 @@
 #include <cosmo/materials/growth.h>
 #include <cosmo/materials/plate_growth.h>
 #include <cosmo/materials/plate_law.h>
+#include <cosmo/materials/rod_growth.h>
 #include <cosmo/materials/rod_law.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point_study.h>
@@ -175,10 +176,18 @@ namespace cosmo
       /// The closed-form Kirchhoff thresholds for this plate and rim (small strain).
       analysis::PlateRod
       closed_form_setting() const;
-      /// The rim's law as assembled: the given stiffnesses (a Stiffness file's
-      /// full 6x6), the shear rows scaled by the model's shear factor.
-      materials::QuadraticRodLaw
-      rod_law() const;
+      /// The rim's law ('Rim rod / Law').
+      const materials::RodLaw &
+      rod_law() const
+      {
+        return *rim_law;
+      }
+      /// Where the rim's strains are measured from at X on the rim at load t:
+      /// the discrete ring's reference strains, the rim's growth and, as
+      /// weights on the shears, the square root of the model's shear factor
+      /// (the Kirchhoff penalty: GA1, GA2 times the factor).
+      materials::RodNaturalState
+      rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame, double t) const;
       /// The closed-form thresholds for this problem (summary.json's "closed_form"), the first
       /// of them (NaN if the growth is not uniform and isotropic) and a text for the log.
       io::JSON
@@ -297,16 +306,18 @@ namespace cosmo
       /// 'Model / Deformation = in-plane only': u3, theta1, theta2 held at 0.
       bool                           in_plane_only       = false;
       double                         shear_stabilization = 0.03;
-      materials::NaghdiPlateLaw      plate_law;
+      /// 'Plate material / Law'.
+      std::shared_ptr<const materials::PlateLaw> plate_law;
       materials::PlateGrowth         plate_growth;
+      /// 'Rim rod / Law' and 'Rim rod / Growth kind'.
+      std::shared_ptr<const materials::RodLaw>       rim_law;
+      std::shared_ptr<const materials::RodGrowthLaw> rim_growth;
+      /// The rim law's stiffnesses in the natural state (the closed forms use
+      /// them) and its largest coupling K_ab / sqrt(K_aa K_bb).
       std::array<double, 6>          rod_stiffness{{0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6}};
-      double                         rod_growth = 1;
-      /// 'Rim rod / Natural curvature' (reached at t = 1).
-      std::array<double, 3>          rod_natural_curvature{{0., 0., 0.}};
-      std::string                    stiffness_file;
       double                         stiffness_coupling = 0;
-      /// The rim's off-diagonal stiffnesses (from a Stiffness file; else zero).
-      std::array<std::array<double, 6>, 6> rod_coupling{};
+      /// 'Rim rod / Stiffness file' (empty: not given).
+      std::string                    stiffness_file;
       double                         path_start = 0;
       bool                           stop_at_first_event = false;
 
@@ -416,12 +427,10 @@ namespace cosmo
       double
       thickness_at(const Point<2> &X) const;
       /// The plate law with the thickness at X.
-      materials::NaghdiPlateLaw
+      materials::PlateLawAt
       plate_law_at(const Point<2> &X) const
       {
-        materials::NaghdiPlateLaw law = plate_law;
-        law.thickness                 = thickness_at(X);
-        return law;
+        return materials::PlateLawAt(*plate_law, thickness_at(X));
       }
       /// io::InputError unless the thickness profile and the natural curvature are finite at
       /// every quadrature point of the mesh and the thickness positive there.
@@ -430,7 +439,7 @@ namespace cosmo
       double
       rod_growth_at(double t) const
       {
-        return materials::growth_ramp(t, rod_growth);
+        return rim_growth->factor(t);
       }
       /// io::InputError (entry 'Rim rod / Stiffnesses' = text) unless every rim stiffness is
       /// positive and at most 1e8 times the plate's.

@@ -34,7 +34,7 @@ namespace cosmo
                         "reduced: the transverse shear energy with p Gauss points (against "
                         "shear locking, doc/specification/strip.md); full: p + 1 like the rest.");
       prm.leave_subsection();
-      materials::NaghdiPlateLaw::declare_parameters(prm);
+      materials::declare_plate_law_parameters(prm);
       assembly::ReducedRodProblem::declare_strain_parameters(prm);
       solvers::NewtonSettings::declare_parameters(prm);
       solvers::ContinuationSettings::declare_parameters(prm);
@@ -67,8 +67,7 @@ namespace cosmo
                              "must be smaller than the width " + prm.get("Width") +
                                " (a strip is a plate: h << w)");
       prm.leave_subsection();
-      law.parse_parameters(prm);
-      law.thickness = thickness;
+      plate_law = materials::create_plate_law(prm);
       parse_strain_parameters(prm);
       newton_settings.parse_parameters(prm);
       continuation_settings.parse_parameters(prm);

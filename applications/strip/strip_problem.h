@@ -145,7 +145,8 @@ namespace cosmo
       unsigned int                  n_cells = 40, degree = 2;
       std::string                   mesh_kind = "graded";
       bool                          reduced_shear = true;
-      materials::NaghdiPlateLaw     law;
+      /// The plate law of the strip ('Plate material / Law').
+      std::unique_ptr<materials::PlateLaw> plate_law;
       solvers::NewtonSettings       newton_settings;
       solvers::ContinuationSettings continuation_settings;
       solvers::ArclengthSettings    arclength_settings;

@@ -160,6 +160,111 @@ namespace cosmo
         solver.factorize(A);
         solver.solve(solutions);
       }
+
+      /**
+       * Pass 2 of linear_section_properties(): the bending and mass moments
+       * about the elastic and mass centres into p; the G-weighted Laplacian
+       * into A and the torsion load -int G p . grad v, p = (-X2, X1), into
+       * torsion_rhs.
+       */
+      void
+      add_bending_and_torsion(const DoFHandler<2> &                                  dof_handler,
+                              FEValues<2> &                                          fe_values,
+                              const std::function<RegionModuli(types::material_id)> &moduli,
+                              LinearSectionProperties &                              p,
+                              SparseMatrix<double> &                                 A,
+                              Vector<double> &                                       torsion_rhs)
+      {
+        const unsigned int dpc = fe_values.dofs_per_cell, nq = fe_values.n_quadrature_points;
+        const Point<2> &   xe = p.elastic_centre;
+        std::vector<types::global_dof_index> dofs(dpc);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dofs);
+            const RegionModuli m = moduli(cell->material_id());
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const Point<2> &x  = fe_values.quadrature_point(q);
+                const double    dA = fe_values.JxW(q);
+                const double    X1 = x[0] - xe[0], X2 = x[1] - xe[1];
+                p.EI11 += m.young * X2 * X2 * dA;
+                p.EI22 += m.young * X1 * X1 * dA;
+                p.EI12 += m.young * X1 * X2 * dA;
+                const double Y1 = x[0] - p.mass_centre[0], Y2 = x[1] - p.mass_centre[1];
+                p.mass_moment11 += m.density * Y2 * Y2 * dA;
+                p.mass_moment22 += m.density * Y1 * Y1 * dA;
+                p.mass_moment12 += m.density * Y1 * Y2 * dA;
+                const Tensor<1, 2> rot({-x[1], x[0]});
+                for (unsigned int i = 0; i < dpc; ++i)
+                  {
+                    const Tensor<1, 2> gi = fe_values.shape_grad(i, q);
+                    torsion_rhs(dofs[i]) -= m.shear * (rot * gi) * dA;
+                    for (unsigned int j = 0; j < dpc; ++j)
+                      A.add(dofs[i], dofs[j], m.shear * (gi * fe_values.shape_grad(j, q)) * dA);
+                  }
+              }
+          }
+      }
+
+      /// The integrals of the warping functions that give the shear centres,
+      /// E Gamma and the shear stiffness.
+      struct WarpingIntegrals
+      {
+        double                Iw1 = 0, Iw2 = 0;  // int E X_a omega
+        double                Iw0 = 0, Iww = 0;  // int E omega, int E omega^2
+        std::array<double, 2> moment{{0, 0}};    // int (x tau2 - y tau1) per load
+        FullMatrix<double>    flexibility{2, 2};
+      };
+
+      /**
+       * Pass 3 of linear_section_properties(): the integrals of the torsion
+       * warping solutions[0] and the flexure warpings solutions[1], [2];
+       * GJ is added to p.
+       */
+      WarpingIntegrals
+      warping_integrals(const DoFHandler<2> &                                  dof_handler,
+                        FEValues<2> &                                          fe_values,
+                        const std::function<RegionModuli(types::material_id)> &moduli,
+                        const std::vector<Vector<double>> &                    solutions,
+                        LinearSectionProperties &                              p)
+      {
+        const unsigned int    nq    = fe_values.n_quadrature_points;
+        const Point<2> &      xe    = p.elastic_centre;
+        const Vector<double> &omega = solutions[0];
+        WarpingIntegrals      r;
+        std::vector<double>   w(nq);
+        std::array<std::vector<Tensor<1, 2>>, 3> grads;
+        for (auto &v : grads)
+          v.resize(nq);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            fe_values.reinit(cell);
+            const RegionModuli m = moduli(cell->material_id());
+            fe_values.get_function_values(omega, w);
+            for (unsigned int k = 0; k < 3; ++k)
+              fe_values.get_function_gradients(solutions[k], grads[k]);
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const Point<2> &x  = fe_values.quadrature_point(q);
+                const double    dA = fe_values.JxW(q);
+                const Tensor<1, 2> rot({-x[1], x[0]});
+                p.GJ += m.shear * (grads[0][q] + rot).norm_square() * dA;
+                r.Iw0 += m.young * w[q] * dA;
+                r.Iww += m.young * w[q] * w[q] * dA;
+                r.Iw1 += m.young * (x[0] - xe[0]) * w[q] * dA;
+                r.Iw2 += m.young * (x[1] - xe[1]) * w[q] * dA;
+                for (unsigned int a = 0; a < 2; ++a)
+                  {
+                    const Tensor<1, 2> tau = m.shear * grads[1 + a][q];
+                    r.moment[a] += (x[0] * tau[1] - x[1] * tau[0]) * dA;
+                    for (unsigned int b = 0; b < 2; ++b)
+                      r.flexibility(a, b) += m.shear * (grads[1 + a][q] * grads[1 + b][q]) * dA;
+                  }
+              }
+          }
+        return r;
+      }
     } // namespace
 
     LinearSectionProperties
@@ -178,7 +283,6 @@ namespace cosmo
       FEValues<2>        fe_values(mapping, fe, quadrature,
                             update_values | update_gradients | update_quadrature_points |
                               update_JxW_values);
-      const unsigned int dpc = fe.n_dofs_per_cell(), nq = quadrature.size();
 
       // Pass 1: areas and first and second moments (geometric and E-weighted).
       add_area_moments(dof_handler, fe_values, moduli, p);
@@ -193,34 +297,7 @@ namespace cosmo
       pattern.copy_from(dsp);
       SparseMatrix<double> A(pattern);
       Vector<double>       torsion_rhs(n);
-      std::vector<types::global_dof_index> dofs(dpc);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dofs);
-          const RegionModuli m = moduli(cell->material_id());
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const Point<2> &x  = fe_values.quadrature_point(q);
-              const double    dA = fe_values.JxW(q);
-              const double    X1 = x[0] - xe[0], X2 = x[1] - xe[1];
-              p.EI11 += m.young * X2 * X2 * dA;
-              p.EI22 += m.young * X1 * X1 * dA;
-              p.EI12 += m.young * X1 * X2 * dA;
-              const double Y1 = x[0] - p.mass_centre[0], Y2 = x[1] - p.mass_centre[1];
-              p.mass_moment11 += m.density * Y2 * Y2 * dA;
-              p.mass_moment22 += m.density * Y1 * Y1 * dA;
-              p.mass_moment12 += m.density * Y1 * Y2 * dA;
-              const Tensor<1, 2> rot({-x[1], x[0]});
-              for (unsigned int i = 0; i < dpc; ++i)
-                {
-                  const Tensor<1, 2> gi = fe_values.shape_grad(i, q);
-                  torsion_rhs(dofs[i]) -= m.shear * (rot * gi) * dA;
-                  for (unsigned int j = 0; j < dpc; ++j)
-                    A.add(dofs[i], dofs[j], m.shear * (gi * fe_values.shape_grad(j, q)) * dA);
-                }
-            }
-        }
+      add_bending_and_torsion(dof_handler, fe_values, moduli, p, A, torsion_rhs);
       // Bending energy 1/2 (EI11 k1^2 - 2 EI12 k1 k2 + EI22 k2^2): the
       // stiffness in (kappa1, kappa2) is [[EI11, -EI12], [-EI12, EI22]].
       std::tie(p.principal_angle, p.principal_bending) = principal(p.EI11, -p.EI12, p.EI22);
@@ -233,43 +310,11 @@ namespace cosmo
 
       std::vector<Vector<double>> solutions{torsion_rhs, flexure_rhs[0], flexure_rhs[1]};
       solve_neumann_problems(A, solutions);
-      const Vector<double> &omega = solutions[0];
 
       // Pass 3: integrals of the warping functions.
-      double                  Iw1 = 0, Iw2 = 0; // int E X_a omega
-      double                  Iw0 = 0, Iww = 0; // int E omega, int E omega^2
-      std::array<double, 2>   moment{{0, 0}};   // int (x tau2 - y tau1) per load
-      FullMatrix<double>      flexibility(2, 2);
-      std::vector<double>     w(nq);
-      std::array<std::vector<Tensor<1, 2>>, 3> grads;
-      for (auto &v : grads)
-        v.resize(nq);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          fe_values.reinit(cell);
-          const RegionModuli m = moduli(cell->material_id());
-          fe_values.get_function_values(omega, w);
-          for (unsigned int k = 0; k < 3; ++k)
-            fe_values.get_function_gradients(solutions[k], grads[k]);
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const Point<2> &x  = fe_values.quadrature_point(q);
-              const double    dA = fe_values.JxW(q);
-              const Tensor<1, 2> rot({-x[1], x[0]});
-              p.GJ += m.shear * (grads[0][q] + rot).norm_square() * dA;
-              Iw0 += m.young * w[q] * dA;
-              Iww += m.young * w[q] * w[q] * dA;
-              Iw1 += m.young * (x[0] - xe[0]) * w[q] * dA;
-              Iw2 += m.young * (x[1] - xe[1]) * w[q] * dA;
-              for (unsigned int a = 0; a < 2; ++a)
-                {
-                  const Tensor<1, 2> tau = m.shear * grads[1 + a][q];
-                  moment[a] += (x[0] * tau[1] - x[1] * tau[0]) * dA;
-                  for (unsigned int b = 0; b < 2; ++b)
-                    flexibility(a, b) += m.shear * (grads[1 + a][q] * grads[1 + b][q]) * dA;
-                }
-            }
-        }
+      const WarpingIntegrals wi = warping_integrals(dof_handler, fe_values, moduli, solutions, p);
+      const double           Iw1 = wi.Iw1, Iw2 = wi.Iw2, Iw0 = wi.Iw0, Iww = wi.Iww;
+      const auto &           moment = wi.moment;
       // Trefftz: the warping about the shear centre a, omega - a2 X1 + a1 X2,
       // is orthogonal (E-weighted) to X1 and X2.
       p.shear_centre_trefftz =
@@ -282,7 +327,7 @@ namespace cosmo
       p.EGamma = Iww - Iw0 * Iw0 / p.EA - (S22 * Iw1 * Iw1 - 2 * S12 * Iw1 * Iw2 + S11 * Iw2 * Iw2) / D;
       // The resultant n of the flexure stresses acts at s: s x n = moment.
       p.shear_centre_flexure = Point<2>(moment[1], -moment[0]);
-      p.shear_stiffness.invert(flexibility);
+      p.shear_stiffness.invert(wi.flexibility);
       for (unsigned int a = 0; a < 2; ++a)
         p.shear_factors[a] = p.shear_stiffness(a, a) / p.GA;
       return p;

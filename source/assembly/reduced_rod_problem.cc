@@ -279,6 +279,117 @@ namespace cosmo
       // (the strains' and gauge rows' residuals are computed from whole vectors on every rank)
     }
 
+    namespace
+    {
+      /**
+       * The gauge block C of a distributed system (A is zeroed: adding
+       * sets), on the rows this rank owns, a row per call (entry by entry
+       * took a second per assembly of 250 000 unknowns); the last rank adds
+       * C's own rows. Compresses the matrix.
+       */
+      void
+      add_distributed_gauge_entries(BorderedSystem &                       system,
+                                    const solvers::ReplicatedVectorLayout &field_layout,
+                                    const std::array<Vector<double>, 6> &  constraint_rows,
+                                    const unsigned int                     nf)
+      {
+        constexpr unsigned int n_gauge = ReducedRodProblem::n_gauge;
+        const bool             last    = field_layout.is_last_rank();
+        std::vector<types::global_dof_index> columns;
+        std::vector<double>                  values;
+        for (types::global_dof_index i = 0; i < nf; ++i)
+          if (field_layout.owns(i))
+            {
+              columns.clear();
+              values.clear();
+              for (unsigned int k = 0; k < n_gauge; ++k)
+                if (constraint_rows[k][i] != 0)
+                  {
+                    columns.push_back(nf + k);
+                    values.push_back(constraint_rows[k][i]);
+                  }
+              if (!columns.empty())
+                system.distributed_matrix.add(i, columns.size(), columns.data(), values.data());
+            }
+        if (last)
+          for (unsigned int k = 0; k < n_gauge; ++k)
+            {
+              columns.clear();
+              values.clear();
+              for (types::global_dof_index i = 0; i < nf; ++i)
+                if (constraint_rows[k][i] != 0)
+                  {
+                    columns.push_back(i);
+                    values.push_back(constraint_rows[k][i]);
+                  }
+              system.distributed_matrix.add(nf + k, columns.size(), columns.data(), values.data());
+            }
+        system.distributed_matrix.compress(VectorOperation::add);
+      }
+
+      /**
+       * Sum the ranks' parts of a distributed assembly: the residual R (may
+       * be null), the energy and resultants, and with the `jacobian` the
+       * system's border columns and the block E; the smallest det Fe over
+       * the ranks.
+       */
+      void
+      sum_rank_parts(const solvers::ReplicatedVectorLayout &field_layout,
+                     BorderedSystem &                       system,
+                     Vector<double> *                       R,
+                     const bool                             jacobian,
+                     FullMatrix<double> &                   E,
+                     double &                               energy,
+                     std::array<double, 6> &                resultants,
+                     double &                               min_elastic_J)
+      {
+        if (R)
+          field_layout.sum_parts(*R);
+        std::vector<double> sums = {energy};
+        sums.insert(sums.end(), resultants.begin(), resultants.end());
+        if (jacobian)
+          {
+            for (auto &b : system.border_columns)
+              field_layout.sum_parts(b);
+            sums.insert(sums.end(), E.begin(), E.end());
+          }
+        field_layout.sum(sums);
+        energy = sums[0];
+        for (unsigned int k = 0; k < 6; ++k)
+          resultants[k] = sums[1 + k];
+        if (jacobian)
+          std::copy(sums.begin() + 7, sums.end(), E.begin());
+        std::vector<double> smallest = {-min_elastic_J};
+        field_layout.max(smallest);
+        min_elastic_J = -smallest[0];
+      }
+
+      /// The gauge constraints with their multipliers U[nf + k]: C^T lambda
+      /// into the field rows of R, C U into its gauge rows.
+      void
+      add_gauge_residuals(Vector<double> &                     R,
+                          const Vector<double> &               U,
+                          const std::array<Vector<double>, 6> &constraint_rows,
+                          const unsigned int                   nf)
+      {
+        for (unsigned int k = 0; k < ReducedRodProblem::n_gauge; ++k)
+          {
+            const double lambda_k = U[nf + k];
+            double       cu       = 0;
+            for (unsigned int i = 0; i < nf; ++i)
+              {
+                const double cki = constraint_rows[k][i];
+                if (cki != 0)
+                  {
+                    R[i] += lambda_k * cki;
+                    cu += cki * U[i];
+                  }
+              }
+            R[nf + k] = cu;
+          }
+      }
+    } // namespace
+
     int
     ReducedRodProblem::assemble(const Vector<double> &U,
                                 Vector<double> *      R,
@@ -303,64 +414,12 @@ namespace cosmo
           std::vector<double> flag = {double(status)};
           field_layout.max(flag);
           status = flag[0] != 0 ? 1 : 0;
-          const bool last = field_layout.is_last_rank();
           if (jacobian)
-            {
-              // C (A is zeroed: adding sets), on the rows this rank owns, a row
-              // per call (entry by entry took a second per assembly of 250 000
-              // unknowns).
-              std::vector<types::global_dof_index> columns;
-              std::vector<double>                  values;
-              for (types::global_dof_index i = 0; i < nf; ++i)
-                if (field_layout.owns(i))
-                  {
-                    columns.clear();
-                    values.clear();
-                    for (unsigned int k = 0; k < n_gauge; ++k)
-                      if (constraint_rows[k][i] != 0)
-                        {
-                          columns.push_back(nf + k);
-                          values.push_back(constraint_rows[k][i]);
-                        }
-                    if (!columns.empty())
-                      system->distributed_matrix.add(i, columns.size(), columns.data(), values.data());
-                  }
-              if (last)
-                for (unsigned int k = 0; k < n_gauge; ++k)
-                  {
-                    columns.clear();
-                    values.clear();
-                    for (types::global_dof_index i = 0; i < nf; ++i)
-                      if (constraint_rows[k][i] != 0)
-                        {
-                          columns.push_back(i);
-                          values.push_back(constraint_rows[k][i]);
-                        }
-                    system->distributed_matrix.add(nf + k, columns.size(), columns.data(), values.data());
-                  }
-              system->distributed_matrix.compress(VectorOperation::add);
-            }
+            add_distributed_gauge_entries(*system, field_layout, constraint_rows, nf);
           if (status != 0)
             return 1;
-          if (R)
-            field_layout.sum_parts(*R);
-          std::vector<double> sums = {integrals.energy};
-          sums.insert(sums.end(), integrals.resultants.begin(), integrals.resultants.end());
-          if (jacobian)
-            {
-              for (auto &b : system->border_columns)
-                field_layout.sum_parts(b);
-              sums.insert(sums.end(), E.begin(), E.end());
-            }
-          field_layout.sum(sums);
-          integrals.energy = sums[0];
-          for (unsigned int k = 0; k < 6; ++k)
-            integrals.resultants[k] = sums[1 + k];
-          if (jacobian)
-            std::copy(sums.begin() + 7, sums.end(), E.begin());
-          std::vector<double> smallest = {-integrals.min_elastic_J};
-          field_layout.max(smallest);
-          integrals.min_elastic_J = -smallest[0];
+          sum_rank_parts(field_layout, *system, R, jacobian, E, integrals.energy,
+                         integrals.resultants, integrals.min_elastic_J);
         }
       if (status != 0)
         return 1; // recoverable: Newton's line search or the driver cuts back
@@ -368,21 +427,7 @@ namespace cosmo
       // Gauge constraints with their multipliers, and the strain rows.
       if (R)
         {
-          for (unsigned int k = 0; k < n_gauge; ++k)
-            {
-              const double lambda_k = U[nf + k];
-              double       cu       = 0;
-              for (unsigned int i = 0; i < nf; ++i)
-                {
-                  const double cki = constraint_rows[k][i];
-                  if (cki != 0)
-                    {
-                      (*R)[i] += lambda_k * cki;
-                      cu += cki * U[i];
-                    }
-                }
-              (*R)[nf + k] = cu;
-            }
+          add_gauge_residuals(*R, U, constraint_rows, nf);
           const auto eP = prescribed_strains_at(load_parameter);
           const auto nP = resultants_at(load_parameter);
           for (unsigned int k = 0; k < n_strains; ++k)

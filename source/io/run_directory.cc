@@ -162,84 +162,93 @@ namespace cosmo
         throw Interrupted(signal);
     }
 
-    void
-    claim_run_directory(const std::string &directory, const bool created, const bool resume)
+    namespace
     {
-      const std::string key = canonical(directory);
-      if (claimed().count(key))
-        return;
-      const fs::path dir(key);
-      std::error_code lock_ec;
-      const bool      had_lock = fs::exists(dir / lock_name, lock_ec);
-      const int      fd = ::open((dir / lock_name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-      if (fd < 0)
-        throw InputError("Output", "Output directory", directory,
-                         "a directory where this run can write (cannot create its lock file: " +
-                           std::string(std::strerror(errno)) + ")");
-      if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+      /**
+       * Lock `dir` against other runs (the lock file holds this run's pid,
+       * for the message of a second run): a claim with the lock's file
+       * descriptor and what a rollback restores. `directory` is the name
+       * the user gave, for the messages.
+       */
+      Claimed
+      lock_run_directory(const fs::path &dir, const std::string &directory)
+      {
+        std::error_code lock_ec;
+        const bool      had_lock = fs::exists(dir / lock_name, lock_ec);
+        const int      fd = ::open((dir / lock_name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd < 0)
+          throw InputError("Output", "Output directory", directory,
+                           "a directory where this run can write (cannot create its lock file: " +
+                             std::string(std::strerror(errno)) + ")");
+        if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+          {
+            char    buffer[64] = {0};
+            ssize_t n          = ::pread(fd, buffer, sizeof(buffer) - 1, 0);
+            ::close(fd);
+            std::string pid = n > 0 ? std::string(buffer, n) : std::string("?");
+            pid.erase(std::remove(pid.begin(), pid.end(), '\n'), pid.end());
+            throw InputError("Output", "Output directory", directory,
+                             "a directory no other run is writing to: the run with pid " + pid +
+                               " is writing there now (wait for it, or choose another directory)");
+          }
+        std::string old_lock;
         {
           char    buffer[64] = {0};
           ssize_t n          = ::pread(fd, buffer, sizeof(buffer) - 1, 0);
-          ::close(fd);
-          std::string pid = n > 0 ? std::string(buffer, n) : std::string("?");
-          pid.erase(std::remove(pid.begin(), pid.end(), '\n'), pid.end());
-          throw InputError("Output", "Output directory", directory,
-                           "a directory no other run is writing to: the run with pid " + pid +
-                             " is writing there now (wait for it, or choose another directory)");
+          if (n > 0)
+            old_lock.assign(buffer, n);
         }
-      std::string old_lock;
-      {
-        char    buffer[64] = {0};
-        ssize_t n          = ::pread(fd, buffer, sizeof(buffer) - 1, 0);
-        if (n > 0)
-          old_lock.assign(buffer, n);
+        const std::string pid = std::to_string(::getpid()) + "\n";
+        if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0)
+          { /* the pid is only for the message of a second run */
+          }
+        Claimed c;
+        c.lock_fd  = fd;
+        c.had_lock = had_lock;
+        c.old_lock = old_lock;
+        return c;
       }
-      const std::string pid = std::to_string(::getpid()) + "\n";
-      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0)
-        { /* the pid is only for the message of a second run */
-        }
-      Claimed c;
-      c.lock_fd = fd;
-      c.created = created;
-      c.had_lock = had_lock;
-      c.old_lock = old_lock;
-      if (resume)
-        {
-          // The run goes on: its files stay, its manifest grows.
-          c.resumed = true;
-          // A killed run may have left the file it was writing half done.
-          std::error_code ec;
-          for (const auto &e : fs::directory_iterator(dir, ec))
-            if (e.is_regular_file() && e.path().filename().string().find(".tmp.") != std::string::npos)
-              fs::remove(e.path(), ec);
-          std::ifstream manifest(dir / manifest_name);
-          std::string   line;
-          while (std::getline(manifest, line))
-            if (!line.empty() && std::find(c.written.begin(), c.written.end(), line) == c.written.end())
-              c.written.push_back(line);
-          claimed()[key] = c;
-          return;
-        }
 
-      // The earlier run's files into previous/ (replacing an older previous/).
-      std::error_code          ec;
-      std::vector<std::string> earlier;
-      std::ifstream            manifest(dir / manifest_name);
-      if (manifest)
-        {
-          std::string line;
-          while (std::getline(manifest, line))
-            if (!line.empty() && std::find(earlier.begin(), earlier.end(), line) == earlier.end())
-              earlier.push_back(line);
-        }
-      else
-        for (const auto &e : fs::directory_iterator(dir, ec))
-          if (is_legacy_output(e))
-            earlier.push_back(e.path().filename().string());
-      // A temporary file is a write a killed run never completed (each file
-      // is written under a temporary name and renamed): removed, not kept
-      // in previous/ as if it were a result.
+      /// Append the lines of a manifest not yet in `lines` (each file once, in order).
+      void
+      append_manifest_lines(std::istream &manifest, std::vector<std::string> &lines)
       {
+        std::string line;
+        while (std::getline(manifest, line))
+          if (!line.empty() && std::find(lines.begin(), lines.end(), line) == lines.end())
+            lines.push_back(line);
+      }
+
+      /// A resumed run: its files stay, and the manifest's list goes on into c.written.
+      void
+      resume_claim(const fs::path &dir, Claimed &c)
+      {
+        // A killed run may have left the file it was writing half done.
+        std::error_code ec;
+        for (const auto &e : fs::directory_iterator(dir, ec))
+          if (e.is_regular_file() && e.path().filename().string().find(".tmp.") != std::string::npos)
+            fs::remove(e.path(), ec);
+        std::ifstream manifest(dir / manifest_name);
+        append_manifest_lines(manifest, c.written);
+      }
+
+      /// The earlier run's files in `dir`: its manifest's, or (a run from
+      /// before manifests) its outputs by name; unfinished files removed.
+      std::vector<std::string>
+      earlier_outputs(const fs::path &dir)
+      {
+        std::error_code          ec;
+        std::vector<std::string> earlier;
+        std::ifstream            manifest(dir / manifest_name);
+        if (manifest)
+          append_manifest_lines(manifest, earlier);
+        else
+          for (const auto &e : fs::directory_iterator(dir, ec))
+            if (is_legacy_output(e))
+              earlier.push_back(e.path().filename().string());
+        // A temporary file is a write a killed run never completed (each file
+        // is written under a temporary name and renamed): removed, not kept
+        // in previous/ as if it were a result.
         std::vector<fs::path> unfinished;
         for (const auto &e : fs::directory_iterator(dir, ec))
           if (e.is_regular_file() && e.path().filename().string().find(".tmp") != std::string::npos)
@@ -250,29 +259,59 @@ namespace cosmo
             earlier.erase(std::remove(earlier.begin(), earlier.end(), f.filename().string()),
                           earlier.end());
           }
+        return earlier;
       }
-      // Stashes of older previous/ directories left by runs that ended
-      // without a result are obsolete.
-      for (const auto &e : fs::directory_iterator(dir, ec))
-        if (e.path().filename().string().rfind(".cosmo-previous-", 0) == 0)
-          fs::remove_all(e.path(), ec);
-      if (!earlier.empty())
+
+      /// Move the `earlier` files (and their manifest) into dir/previous/,
+      /// the older previous/ aside into c.stash.
+      void
+      move_into_previous(const fs::path &dir, const std::vector<std::string> &earlier, Claimed &c)
+      {
+        std::error_code ec;
+        // Stashes of older previous/ directories left by runs that ended
+        // without a result are obsolete.
+        for (const auto &e : fs::directory_iterator(dir, ec))
+          if (e.path().filename().string().rfind(".cosmo-previous-", 0) == 0)
+            fs::remove_all(e.path(), ec);
+        if (earlier.empty())
+          return;
+        const fs::path previous = dir / "previous";
+        // The older previous/ is kept aside until this run writes a
+        // result: a run rejected before that puts everything back.
+        if (fs::exists(previous, ec))
+          {
+            c.stash = ".cosmo-previous-" + std::to_string(::getpid());
+            fs::rename(previous, dir / c.stash, ec);
+            if (ec)
+              fs::remove_all(previous, ec);
+          }
+        for (const auto &f : earlier)
+          move_into(dir, f, previous);
+        move_into(dir, manifest_name, previous);
+        c.had_previous = true;
+      }
+    } // namespace
+
+    void
+    claim_run_directory(const std::string &directory, const bool created, const bool resume)
+    {
+      const std::string key = canonical(directory);
+      if (claimed().count(key))
+        return;
+      const fs::path dir(key);
+      Claimed        c = lock_run_directory(dir, directory);
+      c.created        = created;
+      if (resume)
         {
-          const fs::path previous = dir / "previous";
-          // The older previous/ is kept aside until this run writes a
-          // result: a run rejected before that puts everything back.
-          if (fs::exists(previous, ec))
-            {
-              c.stash = ".cosmo-previous-" + std::to_string(::getpid());
-              fs::rename(previous, dir / c.stash, ec);
-              if (ec)
-                fs::remove_all(previous, ec);
-            }
-          for (const auto &f : earlier)
-            move_into(dir, f, previous);
-          move_into(dir, manifest_name, previous);
-          c.had_previous = true;
+          // The run goes on: its files stay, its manifest grows.
+          c.resumed = true;
+          resume_claim(dir, c);
+          claimed()[key] = c;
+          return;
         }
+
+      // The earlier run's files into previous/ (replacing an older previous/).
+      move_into_previous(dir, earlier_outputs(dir), c);
       // A fresh manifest; a directory inside another run's (a study's
       // point) is one of that run's outputs.
       std::ofstream(dir / manifest_name, std::ios::trunc);

@@ -123,27 +123,21 @@ namespace cosmo
             }
         }
 
-        // The law in the measures.
-        const materials::NaghdiPlateLaw &law = *energy.law;
+        // The law in the measures (its own derivatives), times the factor.
         std::array<double, n_measures>              ws;
         std::array<double, n_measures * n_measures> wss;
-        materials::internal::differentiate<n_measures>(
-          s,
-          [&](const auto &x) {
-            auto strains = strains_of(x);
-            for (unsigned int k = 0; k < 3; ++k)
-              strains.bending[k] -= energy.natural_curvature[k];
-            // A Number, not an expression template of temporaries.
-            using Number = std::decay_t<decltype(x[0])>;
-            Number w     = energy.membrane_bending ? law.membrane_bending_energy(strains) :
-                                                     law.shear_energy(strains);
+        for (unsigned int k = 0; k < 3; ++k)
+          s[3 + k] -= energy.natural_curvature[k];
+        energy.law->derivatives(s,
+                                energy.membrane_bending ? materials::PlatePart::membrane_and_bending :
+                                                          materials::PlatePart::transverse_shear,
+                                with_hessian, W, ws, wss);
+        W *= energy.factor;
+        for (auto &w : ws)
+          w *= energy.factor;
+        if (with_hessian)
+          for (auto &w : wss)
             w *= energy.factor;
-            return w;
-          },
-          with_hessian,
-          W,
-          ws,
-          wss);
 
         // w_V = s_V^T w_s.
         wV.fill(0.);

@@ -77,7 +77,7 @@ namespace cosmo
     void
     strip_energy_derivatives(const std::array<double, strip_local_variables> &z,
                              const double                                    eta,
-                             const materials::NaghdiPlateLaw &               law,
+                             const materials::PlateLawAt &               law,
                              const bool                                      membrane_bending,
                              const bool                                      with_hessian,
                              double &                                        W,

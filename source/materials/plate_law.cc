@@ -3,36 +3,50 @@
 
 namespace cosmo
 {
+  namespace plugins
+  {
+    template class Registry<materials::PlateLaw>;
+  } // namespace plugins
+
   namespace materials
   {
-    void
-    NaghdiPlateLaw::declare_parameters(ParameterHandler &prm)
+    PlateStrains<double>
+    PlateLawAt::resultants(const PlateStrains<double> &s) const
     {
-      prm.enter_subsection("Plate material");
-      prm.declare_entry("Young's modulus", "1", Patterns::Double(0),
-                        "E of the plate (units of stress).");
-      prm.declare_entry("Poisson's ratio", "0.3", Patterns::Double(-0.999, 0.49999),
-                        "Poisson's ratio v of the plate.");
-      prm.declare_entry("Shear correction factor", "0.833333333333333", Patterns::Double(0),
-                        "ks of the transverse shear energy ks G h/2 |gamma|^2 (5/6).");
-      prm.leave_subsection();
+      std::array<double, plate_measures>                  dW, sum{};
+      std::array<double, plate_measures * plate_measures> ddW;
+      double                                              W = 0;
+      for (const PlatePart part : {PlatePart::membrane_and_bending, PlatePart::transverse_shear})
+        {
+          derivatives(measures_of(s), part, false, W, dW, ddW);
+          for (unsigned int k = 0; k < plate_measures; ++k)
+            sum[k] += dW[k];
+        }
+      // dW/de_12 counts the pair 12, 21: the tensor component is half of it.
+      return {{{sum[0], sum[1], 0.5 * sum[2]}}, {{sum[3], sum[4], 0.5 * sum[5]}}, {{sum[6], sum[7]}}};
     }
 
     void
-    NaghdiPlateLaw::parse_parameters(ParameterHandler &prm)
+    declare_plate_law_parameters(ParameterHandler &prm)
+    {
+      using Laws = plugins::Registry<PlateLaw>;
+      prm.enter_subsection("Plate material");
+      prm.declare_entry("Law", "linear isotropic", Patterns::Selection(Laws::names()),
+                        "The plate's law, an energy per unit area in its membrane, bending "
+                        "and shear strains (the registered laws, source/materials/plate_laws/). " +
+                          Laws::documentation());
+      Laws::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+    std::unique_ptr<PlateLaw>
+    create_plate_law(ParameterHandler &prm)
     {
       prm.enter_subsection("Plate material");
-      young        = prm.get_double("Young's modulus");
-      poisson      = prm.get_double("Poisson's ratio");
-      shear_factor = prm.get_double("Shear correction factor");
-      if (!(young > 0 && young <= 1e100))
-        throw io::InputError("Plate material", "Young's modulus", prm.get("Young's modulus"),
-                             "must be positive and at most 1e100 (its products with itself "
-                             "and the lengths must stay finite in double precision)");
-      if (!(shear_factor > 0))
-        throw io::InputError("Plate material", "Shear correction factor",
-                             prm.get("Shear correction factor"), "must be positive");
+      auto law = plugins::Registry<PlateLaw>::create(prm.get("Law"));
+      law->parse_parameters(prm);
       prm.leave_subsection();
+      return law;
     }
   } // namespace materials
 } // namespace cosmo

@@ -844,71 +844,123 @@ namespace cosmo
       return false;
     }
 
-    bool
-    ArclengthContinuation::locate_events(BifurcationProblem &      problem,
-                                         const State &             s,
-                                         const double              ds,
-                                         const State &             next,
-                                         const unsigned int        branch,
-                                         const bool                may_switch,
-                                         std::vector<EventRecord> &events,
-                                         std::vector<State> &      switches)
+    namespace
     {
-      using Kind = BifurcationProblem::Event::Kind;
-      // Which end of the bracket the problem's factorization belongs to:
-      // analyse(next) was the last factorization.
+      /// Which end of the detection bracket the problem's factorization belongs to.
       enum class Factorized
       {
         lo,
         hi,
         none
       };
-      Factorized factorized = Factorized::hi;
-      double     sigma_from = 0;
-      std::vector<Vector<double>> modes_of_this_step;
-      State      from       = s;
-      // Two crossings inside one step are two events: after the first,
-      // look again between it and next.
-      while (s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != from.n_negative)
+
+      /**
+       * The crossings of the stability count on one step, from s to next (a
+       * step of length ds along s's tangent), located one after the other
+       * (ArclengthContinuation::locate_events): the bracket of the crossing
+       * at hand and what the pieces of its location share. The driver's
+       * private members come in as references, its private functions as
+       * callables (say, its arclength dot product, point_on_step along s).
+       */
+      template <typename State>
+      struct StepCrossings
+      {
+        using Kind = BifurcationProblem::Event::Kind;
+        /// The driver's say(), dot() and point_on_step(problem, s, ...).
+        using Say         = std::function<void(const std::string &)>;
+        using Dot         = std::function<double(const Vector<double> &, const Vector<double> &)>;
+        using PointOnStep = std::function<bool(double, double, State &, double &)>;
+
+        StepCrossings(BifurcationProblem &     problem,
+                      const State &            s,
+                      const double             ds,
+                      const State &            next,
+                      const unsigned int       branch,
+                      const ArclengthSettings &settings,
+                      const double             newton_tolerance,
+                      const Vector<double> &   mask,
+                      unsigned int &           factorizations,
+                      Say                      say,
+                      Dot                      dot,
+                      PointOnStep              point_on_step)
+          : problem(problem)
+          , s(s)
+          , ds(ds)
+          , next(next)
+          , branch(branch)
+          , settings(settings)
+          , newton_tolerance(newton_tolerance)
+          , mask(mask)
+          , factorizations(factorizations)
+          , say(std::move(say))
+          , dot(std::move(dot))
+          , point_on_step(std::move(point_on_step))
+          , from(s)
+        {}
+
+        /// Whether the count changes between the last event located (or s) and next.
+        bool
+        count_changes() const
         {
-          const unsigned int factorizations_at_detection = factorizations;
-          double             sigma_lo = sigma_from, sigma_hi = ds;
-          State              lo = from, hi = next;
+          return s.n_negative >= 0 && next.n_negative >= 0 && next.n_negative != from.n_negative;
+        }
+
+        /// Halve the bracket by the count at a point inside it
+        /// (bisection_failed where none converges).
+        void
+        bisect_once()
+        {
+          State  mid;
+          double sigma = 0;
+          if (!point_on_step(sigma_lo, sigma_hi, mid, sigma))
+            {
+              bisection_failed = true;
+              return;
+            }
+          if (mid.n_negative == lo.n_negative)
+            {
+              sigma_lo   = sigma;
+              lo         = mid;
+              factorized = Factorized::lo;
+            }
+          else
+            {
+              sigma_hi   = sigma;
+              hi         = mid;
+              factorized = Factorized::hi;
+            }
+        }
+
+        /// The bracket from the last event located (or s) to next, narrowed
+        /// to the next crossing.
+        void
+        isolate_crossing()
+        {
+          sigma_lo = sigma_from;
+          sigma_hi = ds;
+          lo       = from;
+          hi       = next;
 
           // Isolate one crossing: bisect the count until it changes by one
           // across the bracket (keeping the first crossing).
-          bool bisection_failed = false;
-          auto bisect_once      = [&]() {
-            State  mid;
-            double sigma = 0;
-            if (!point_on_step(problem, s, sigma_lo, sigma_hi, mid, sigma))
-              {
-                bisection_failed = true;
-                return;
-              }
-            if (mid.n_negative == lo.n_negative)
-              {
-                sigma_lo   = sigma;
-                lo         = mid;
-                factorized = Factorized::lo;
-              }
-            else
-              {
-                sigma_hi   = sigma;
-                hi         = mid;
-                factorized = Factorized::hi;
-              }
-          };
+          bisection_failed = false;
           // A double crossing of a problem with a reflection may be a double
           // eigenvalue (D_n symmetry): it is located in the reflection's
           // fixed-point space, where it is simple, rather than bisected.
           Vector<double> probe(s.U.size());
-          const bool     has_reflection = problem.project_to_fixed_point_space(probe);
+          has_reflection = problem.project_to_fixed_point_space(probe);
           while (std::abs(hi.n_negative - lo.n_negative) > 1 &&
                  !(has_reflection && std::abs(hi.n_negative - lo.n_negative) == 2) &&
                  sigma_hi - sigma_lo > settings.event_tolerance && !bisection_failed)
             bisect_once();
+        }
 
+        /// The event the bracket holds, as detected: its kind, counts and
+        /// bracket; and whether it is a double eigenvalue to be located in
+        /// the reflection's fixed-point space (project).
+        EventRecord
+        detected_event()
+        {
           EventRecord record;
           auto &      e       = record.event;
           e.kind              = (lo.tlambda * hi.tlambda < 0) ? Kind::fold : Kind::branch_point;
@@ -919,17 +971,25 @@ namespace cosmo
           e.lambda_lo         = lo.lambda;
           e.lambda_hi         = hi.lambda;
           e.arclength         = sigma_hi - sigma_lo;
-          Vector<double> phi;
 
-          // Locate a simple crossing by Newton on the augmented system, from
-          // the end of the bracket that is factorized. The crossing lies
-          // strictly inside the bracket; a Newton point outside it is another
-          // critical point nearby (two crossings close together): halve the
-          // bracket by the count and try again from its new end.
-          const bool symmetric_double = has_reflection && e.multiplicity == 2;
-          std::function<void(Vector<double> &)> project;
+          symmetric_double = has_reflection && e.multiplicity == 2;
+          project          = nullptr;
           if (symmetric_double)
-            project = [&problem](Vector<double> &v) { problem.project_to_fixed_point_space(v); };
+            project = [&problem = problem](Vector<double> &v) {
+              problem.project_to_fixed_point_space(v);
+            };
+          return record;
+        }
+
+        /// Locate a simple crossing by Newton on the augmented system, from
+        /// the end of the bracket that is factorized. The crossing lies
+        /// strictly inside the bracket; a Newton point outside it is another
+        /// critical point nearby (two crossings close together): halve the
+        /// bracket by the count and try again from its new end.
+        void
+        locate_by_newton(EventRecord &record, Vector<double> &phi)
+        {
+          const auto &e = record.event;
           if (settings.newton_location && (e.multiplicity == 1 || symmetric_double))
             for (unsigned int attempt = 0; attempt < 4 && !e.located_by_newton; ++attempt)
               {
@@ -939,88 +999,120 @@ namespace cosmo
                     if (bisection_failed)
                       break;
                   }
-                const State &start = (factorized == Factorized::lo) ? lo : hi;
-                problem.set_load_parameter(start.lambda);
-                if (factorized == Factorized::none)
-                  {
-                    ++factorizations;
-                    if (problem.setup_jacobian(start.U) != 0)
-                      {
-                        e.message = "the Jacobian cannot be set up at the detection bracket";
-                        break;
-                      }
-                  }
-                // The border: the mode of the crossing eigenvalue, i.e. the
-                // one nearest zero with the sign the crossing gives it at
-                // this end (negative past a loss of stability), orthogonal to
-                // the modes located earlier in this step.
-                const bool     count_rises = hi.n_negative > lo.n_negative;
-                const bool     at_hi       = (&start == &hi);
-                const double   wanted_sign = (count_rises == at_hi) ? -1. : 1.;
-                Vector<double> border;
-                // (a double eigenvalue: in the fixed-point space of the
-                // reflection, where its symmetric representative is simple)
-                crossing_mode(problem, mask, wanted_sign, modes_of_this_step, border, project);
-                // Newton stops once the error left is below a tenth of the
-                // point's round-off resolution, as a critical curve's points
-                // do (doc/theory-continuation.md 7): iterating further only
-                // moves t inside its scatter, and costs a factorization each.
-                CriticalPointSettings location;
-                location.resolution_fraction = 0.1;
-                const CriticalPoint cp = locate_critical_point(
-                  problem, e.kind == Kind::fold, start.U, start.lambda, border, mask, s.tU,
-                  s.tlambda, true, std::abs(hi.lambda - lo.lambda), newton.relative_tolerance,
-                  location, project);
-                factorizations += cp.factorizations;
-                factorized = Factorized::none;
-                // Its arclength along the step's tangent.
-                Vector<double> dU = cp.U;
-                dU -= s.U;
-                const double sigma  = dot(s.tU, dU) + s.tlambda * (cp.lambda - s.lambda);
-                const double margin = 1e-6 * (sigma_hi - sigma_lo);
-                if (cp.converged && sigma >= sigma_lo - margin && sigma <= sigma_hi + margin)
-                  {
-                    take_location(cp, record);
-                    phi = cp.mode;
-                  }
-                else
-                  {
-                    std::ostringstream m;
-                    if (cp.converged)
-                      m << std::setprecision(10) << "Newton found the critical point at t = "
-                        << cp.lambda << ", outside the detection bracket [" << lo.lambda << ", "
-                        << hi.lambda << "]";
-                    else
-                      m << "Newton on the augmented system failed: " << cp.message;
-                    e.message = m.str();
-                    say("  event location: " + e.message +
-                        (attempt + 1 < 4 ? "; halving the bracket" : ""));
-                  }
+                if (!newton_from_factorized_end(record, phi, attempt))
+                  break;
               }
-          if (settings.newton_location && !e.located_by_newton)
-            say("  event location: falling back to bisection of the stability count");
+        }
 
-          if (!e.located_by_newton)
+        /// One attempt of locate_by_newton(); false if the Jacobian cannot be
+        /// set up at the end it starts from.
+        bool
+        newton_from_factorized_end(EventRecord &      record,
+                                   Vector<double> &   phi,
+                                   const unsigned int attempt)
+        {
+          auto &       e     = record.event;
+          const State &start = (factorized == Factorized::lo) ? lo : hi;
+          problem.set_load_parameter(start.lambda);
+          if (factorized == Factorized::none)
             {
-              while (sigma_hi - sigma_lo > settings.event_tolerance && !bisection_failed)
-                bisect_once();
-              e.lambda    = 0.5 * (lo.lambda + hi.lambda);
-              e.precision = 0.5 * std::abs(hi.lambda - lo.lambda);
-              e.arclength = sigma_hi - sigma_lo;
-              record.state.assign(lo.U.begin(), lo.U.end());
-              // The mode: inverse iteration with J at the event (nearly
-              // singular there), on the mode unknowns only.
-              if (e.kind == Kind::branch_point)
+              ++factorizations;
+              if (problem.setup_jacobian(start.U) != 0)
                 {
-                  problem.set_load_parameter(lo.lambda);
-                  ++factorizations;
-                  AssertThrow(problem.setup_jacobian(lo.U) == 0,
-                              ExcMessage("the Jacobian cannot be set up at a located event"));
-                  e.eigenvalue = smallest_eigenvalue(problem, mask, phi);
+                  e.message = "the Jacobian cannot be set up at the detection bracket";
+                  return false;
                 }
             }
-          e.factorizations = factorizations - factorizations_at_detection;
-          Vector<double> U_event(record.state.begin(), record.state.end());
+          // The border: the mode of the crossing eigenvalue, i.e. the
+          // one nearest zero with the sign the crossing gives it at
+          // this end (negative past a loss of stability), orthogonal to
+          // the modes located earlier in this step.
+          const bool     count_rises = hi.n_negative > lo.n_negative;
+          const bool     at_hi       = (&start == &hi);
+          const double   wanted_sign = (count_rises == at_hi) ? -1. : 1.;
+          Vector<double> border;
+          // (a double eigenvalue: in the fixed-point space of the
+          // reflection, where its symmetric representative is simple)
+          crossing_mode(problem, mask, wanted_sign, modes_of_this_step, border, project);
+          // Newton stops once the error left is below a tenth of the
+          // point's round-off resolution, as a critical curve's points
+          // do (doc/theory-continuation.md 7): iterating further only
+          // moves t inside its scatter, and costs a factorization each.
+          CriticalPointSettings location;
+          location.resolution_fraction = 0.1;
+          const CriticalPoint cp = locate_critical_point(
+            problem, e.kind == Kind::fold, start.U, start.lambda, border, mask, s.tU, s.tlambda,
+            true, std::abs(hi.lambda - lo.lambda), newton_tolerance, location, project);
+          factorizations += cp.factorizations;
+          factorized = Factorized::none;
+          take_if_inside_bracket(cp, record, phi, attempt);
+          return true;
+        }
+
+        /// The point Newton located, taken if it lies in the bracket;
+        /// otherwise e.message says why not.
+        void
+        take_if_inside_bracket(const CriticalPoint &cp,
+                               EventRecord &        record,
+                               Vector<double> &     phi,
+                               const unsigned int   attempt)
+        {
+          auto &e = record.event;
+          // Its arclength along the step's tangent.
+          Vector<double> dU = cp.U;
+          dU -= s.U;
+          const double sigma  = dot(s.tU, dU) + s.tlambda * (cp.lambda - s.lambda);
+          const double margin = 1e-6 * (sigma_hi - sigma_lo);
+          if (cp.converged && sigma >= sigma_lo - margin && sigma <= sigma_hi + margin)
+            {
+              take_location(cp, record);
+              phi = cp.mode;
+            }
+          else
+            {
+              std::ostringstream m;
+              if (cp.converged)
+                m << std::setprecision(10) << "Newton found the critical point at t = "
+                  << cp.lambda << ", outside the detection bracket [" << lo.lambda << ", "
+                  << hi.lambda << "]";
+              else
+                m << "Newton on the augmented system failed: " << cp.message;
+              e.message = m.str();
+              say("  event location: " + e.message +
+                  (attempt + 1 < 4 ? "; halving the bracket" : ""));
+            }
+        }
+
+        /// Bisection of the count to the event tolerance: lambda in the
+        /// middle of the bracket, the state at its lower end.
+        void
+        locate_by_bisection(EventRecord &record, Vector<double> &phi)
+        {
+          auto &e = record.event;
+          while (sigma_hi - sigma_lo > settings.event_tolerance && !bisection_failed)
+            bisect_once();
+          e.lambda    = 0.5 * (lo.lambda + hi.lambda);
+          e.precision = 0.5 * std::abs(hi.lambda - lo.lambda);
+          e.arclength = sigma_hi - sigma_lo;
+          record.state.assign(lo.U.begin(), lo.U.end());
+          // The mode: inverse iteration with J at the event (nearly
+          // singular there), on the mode unknowns only.
+          if (e.kind == Kind::branch_point)
+            {
+              problem.set_load_parameter(lo.lambda);
+              ++factorizations;
+              AssertThrow(problem.setup_jacobian(lo.U) == 0,
+                          ExcMessage("the Jacobian cannot be set up at a located event"));
+              e.eigenvalue = smallest_eigenvalue(problem, mask, phi);
+            }
+        }
+
+        /// The mode completed (and kept, for the crossings later in this
+        /// step), a branch point's made unit; the event reported.
+        void
+        report(EventRecord &record, Vector<double> &phi, const Vector<double> &U_event)
+        {
+          const auto &e = record.event;
           if (phi.size())
             {
               problem.complete_mode(phi);
@@ -1028,40 +1120,23 @@ namespace cosmo
             }
           if (e.kind == Kind::branch_point && phi.size())
             {
-              phi /= std::sqrt(norm2(phi)); // unit in the arclength norm
+              phi /= std::sqrt(dot(phi, phi)); // unit in the arclength norm
               record.mode.assign(phi.begin(), phi.end());
             }
           problem.set_load_parameter(e.lambda);
           report_located_event(problem, e, U_event, record.mode.size() ? &phi : nullptr);
+        }
 
-          std::ostringstream m;
-          m << std::setprecision(12) << "  " << e.name() << " on branch " << branch
-            << " at t = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
-            << " -> " << e.n_negative_after << "; ";
-          if (e.located_by_newton)
-            {
-              m << "Newton on the augmented system: " << e.newton_iterations
-                << " iterations, |d lambda| " << std::setprecision(2) << e.precision;
-              if (e.resolution >= 0)
-                m << " (round-off resolution " << e.resolution << ")";
-              m << ", residual " << e.residual_norm;
-              if (poorly_resolved(e))
-                m << "; WARNING: " << poorly_resolved_text;
-            }
-          else
-            m << "bisection of the count to arclength " << std::setprecision(3) << e.arclength
-              << (e.arclength > 2 * settings.event_tolerance ?
-                    ", NOT refined to the tolerance: the corrector failed inside the step" :
-                    "");
-          m << "; " << e.factorizations << " factorizations)";
-          if (e.multiplicity > 1 && symmetric_double && e.located_by_newton)
-            m << " -- a double eigenvalue: located and switched onto its symmetric "
-                 "representative, in the fixed-point space of the problem's reflection";
-          else if (e.multiplicity > 1)
-            m << " -- a multiple eigenvalue (" << e.multiplicity
-              << " cross at once): not switched here; a symmetry-reduced domain makes it simple";
-          say(m.str());
-
+        /// At a simple branch point, where switching is allowed: the starts
+        /// of the branches along +phi (and -phi), queued.
+        void
+        queue_switches(const EventRecord &   record,
+                       const Vector<double> &phi,
+                       const Vector<double> &U_event,
+                       const bool            may_switch,
+                       std::vector<State> &  switches) const
+        {
+          const auto &e = record.event;
           if (e.kind == Kind::branch_point && may_switch && phi.size() &&
               (e.multiplicity == 1 || (symmetric_double && e.located_by_newton)))
             for (const double sign : settings.both_directions ? std::vector<double>{1., -1.} :
@@ -1078,16 +1153,134 @@ namespace cosmo
                 start.sign    = sign;
                 switches.push_back(start);
               }
-          events.push_back(record);
-          if (settings.stop_at_first_event)
-            return true;
+        }
+
+        /// After an event: false if it was the last crossing of this step
+        /// (or the bracket did not shrink); else the next bracket starts
+        /// at its upper end.
+        bool
+        move_past_event()
+        {
           if (sigma_hi >= ds || hi.n_negative == next.n_negative || bisection_failed)
-            break; // the last crossing of this step (or the bracket did not shrink)
+            return false;
           sigma_from = sigma_hi;
           from       = hi;
           // (the last factorization is of wherever this event's location
           // ended, not of the next bracket's ends)
           factorized = Factorized::none;
+          return true;
+        }
+
+        BifurcationProblem &     problem;
+        const State &            s;
+        const double             ds;
+        const State &            next;
+        const unsigned int       branch;
+        const ArclengthSettings &settings;
+        const double             newton_tolerance;
+        const Vector<double> &   mask;
+        unsigned int &           factorizations;
+        const Say                say;
+        const Dot                dot;
+        const PointOnStep        point_on_step;
+
+        // Which end of the bracket the problem's factorization belongs to:
+        // analyse(next) was the last factorization.
+        Factorized                  factorized = Factorized::hi;
+        double                      sigma_from = 0;
+        std::vector<Vector<double>> modes_of_this_step;
+        State                       from;
+
+        // The bracket of the crossing at hand.
+        double sigma_lo = 0, sigma_hi = 0;
+        State  lo, hi;
+        bool   bisection_failed = false;
+        bool   has_reflection   = false;
+        bool   symmetric_double = false;
+        std::function<void(Vector<double> &)> project;
+      };
+
+      /// The line the log gets about a located event.
+      std::string
+      event_summary(const BifurcationProblem::Event &e,
+                    const unsigned int               branch,
+                    const bool                       symmetric_double,
+                    const double                     event_tolerance)
+      {
+        std::ostringstream m;
+        m << std::setprecision(12) << "  " << e.name() << " on branch " << branch
+          << " at t = " << e.lambda << " (negative eigenvalues " << e.n_negative_before
+          << " -> " << e.n_negative_after << "; ";
+        if (e.located_by_newton)
+          {
+            m << "Newton on the augmented system: " << e.newton_iterations
+              << " iterations, |d lambda| " << std::setprecision(2) << e.precision;
+            if (e.resolution >= 0)
+              m << " (round-off resolution " << e.resolution << ")";
+            m << ", residual " << e.residual_norm;
+            if (poorly_resolved(e))
+              m << "; WARNING: " << poorly_resolved_text;
+          }
+        else
+          m << "bisection of the count to arclength " << std::setprecision(3) << e.arclength
+            << (e.arclength > 2 * event_tolerance ?
+                  ", NOT refined to the tolerance: the corrector failed inside the step" :
+                  "");
+        m << "; " << e.factorizations << " factorizations)";
+        if (e.multiplicity > 1 && symmetric_double && e.located_by_newton)
+          m << " -- a double eigenvalue: located and switched onto its symmetric "
+               "representative, in the fixed-point space of the problem's reflection";
+        else if (e.multiplicity > 1)
+          m << " -- a multiple eigenvalue (" << e.multiplicity
+            << " cross at once): not switched here; a symmetry-reduced domain makes it simple";
+        return m.str();
+      }
+    } // namespace
+
+    bool
+    ArclengthContinuation::locate_events(BifurcationProblem &      problem,
+                                         const State &             s,
+                                         const double              ds,
+                                         const State &             next,
+                                         const unsigned int        branch,
+                                         const bool                may_switch,
+                                         std::vector<EventRecord> &events,
+                                         std::vector<State> &      switches)
+    {
+      StepCrossings<State> crossings(
+        problem, s, ds, next, branch, settings, newton.relative_tolerance, mask, factorizations,
+        [this](const std::string &m) { say(m); },
+        [this](const Vector<double> &a, const Vector<double> &b) { return dot(a, b); },
+        [this, &problem, &s](const double sigma_lo, const double sigma_hi, State &mid,
+                             double &sigma) {
+          return point_on_step(problem, s, sigma_lo, sigma_hi, mid, sigma);
+        });
+      // Two crossings inside one step are two events: after the first,
+      // look again between it and next.
+      while (crossings.count_changes())
+        {
+          const unsigned int factorizations_at_detection = factorizations;
+          crossings.isolate_crossing();
+          EventRecord    record = crossings.detected_event();
+          auto &         e      = record.event;
+          Vector<double> phi;
+
+          crossings.locate_by_newton(record, phi);
+          if (settings.newton_location && !e.located_by_newton)
+            say("  event location: falling back to bisection of the stability count");
+          if (!e.located_by_newton)
+            crossings.locate_by_bisection(record, phi);
+          e.factorizations = factorizations - factorizations_at_detection;
+          Vector<double> U_event(record.state.begin(), record.state.end());
+          crossings.report(record, phi, U_event);
+          say(event_summary(e, branch, crossings.symmetric_double, settings.event_tolerance));
+
+          crossings.queue_switches(record, phi, U_event, may_switch, switches);
+          events.push_back(record);
+          if (settings.stop_at_first_event)
+            return true;
+          if (!crossings.move_past_event())
+            break; // the last crossing of this step (or the bracket did not shrink)
         }
       return false;
     }
@@ -1250,6 +1443,103 @@ namespace cosmo
       return record;
     }
 
+    namespace
+    {
+      /// A branch's first converged state (the starting point, or the first
+      /// point of a switched branch) reported as a step.
+      void
+      report_first_state(BifurcationProblem &  problem,
+                         const Vector<double> &U,
+                         const double          t,
+                         const NewtonResult &  r,
+                         const int             n_negative,
+                         const unsigned int    step,
+                         const unsigned int    branch,
+                         const bool            factorized_at_predictor)
+      {
+        StepReport report;
+        report.step                    = step;
+        report.t                       = t;
+        report.newton_iterations       = r.iterations;
+        report.residual_norm           = r.residual_norm;
+        report.branch                  = branch;
+        report.n_negative              = n_negative;
+        report.factorized_at_predictor = factorized_at_predictor;
+        problem.set_load_parameter(t);
+        report_converged_step(problem, U, report);
+      }
+
+      /**
+       * Whether the branch from the switch start (first: its first point)
+       * is the mirror image of the one along +phi from the same branch
+       * point: then the line saying so, else "". plus_lambda: the first
+       * point of the +phi branch of each branch point switched at (by the
+       * branch it leaves and its lambda), recorded here, to recognize the
+       * -phi branch as its mirror image.
+       */
+      template <typename State>
+      std::string
+      mirror_image_message(const State &                                       start,
+                           const State &                                       first,
+                           std::map<std::pair<unsigned int, double>, double> &plus_lambda,
+                           const ArclengthSettings &                           settings)
+      {
+        const auto key = std::make_pair(start.branch, start.lambda);
+        if (start.sign > 0)
+          plus_lambda[key] = first.lambda;
+        else if (start.sign < 0 && plus_lambda.count(key) && !settings.follow_mirror_images)
+          {
+            // The halves of a symmetric pitchfork start at the same lambda
+            // (lambda - lambda* is even in the amplitude); a generic branch
+            // point's differ at first order.
+            const double d = std::abs(first.lambda - plus_lambda[key]);
+            const double scale = std::max(std::abs(first.lambda - start.lambda),
+                                          std::abs(plus_lambda[key] - start.lambda));
+            if (d <= 1e-6 * scale + 1e-14 * (1 + std::abs(start.lambda)))
+              {
+                std::ostringstream m;
+                m << std::setprecision(10) << "  the branch along -phi from t = "
+                  << start.lambda << " (branch " << start.branch
+                  << ") is the mirror image of the one along +phi (their first points agree in "
+                     "lambda to "
+                  << std::setprecision(2) << d
+                  << "): followed once ('Follow mirror images = true' follows both)";
+                return m.str();
+              }
+          }
+        return "";
+      }
+
+      /**
+       * The branches switched to from the branch of switches[q] (queued from
+       * switches[queued] on) come next (depth first): a secondary
+       * bifurcation is followed before the first branch's later branch
+       * points.
+       */
+      template <typename State>
+      void
+      queue_depth_first(std::vector<State> &switches, const std::size_t q, const std::size_t queued)
+      {
+        std::rotate(switches.begin() + q + 1, switches.begin() + queued, switches.end());
+      }
+
+      /// Branches that ended before their target (incomplete): the run fails.
+      void
+      fail_if_incomplete(const std::vector<std::string> &incomplete)
+      {
+        if (!incomplete.empty())
+          {
+            // Every branch followed so far has been reported (its steps and
+            // events are in the output); the run still did not do what it was
+            // asked: it fails (exit 2, "status": "failed").
+            std::string m = "the path did not reach its target: " + incomplete[0];
+            if (incomplete.size() > 1)
+              m += " (and " + std::to_string(incomplete.size() - 1) + " more, in the log)";
+            throw io::RunFailure(m);
+          }
+      }
+    } // namespace
+
     std::vector<EventRecord>
     ArclengthContinuation::run(BifurcationProblem &problem, Vector<double> &U, const double lambda)
     {
@@ -1257,12 +1547,8 @@ namespace cosmo
       stopped = false;
       std::vector<EventRecord> &events   = at.events;
       std::vector<State> &      switches = at.switches; // grows while branches are followed
-      // The first point of the +phi branch of each branch point switched at
-      // (by the branch it leaves and its lambda), to recognize the -phi
-      // branch as its mirror image.
-      auto &       plus_lambda = at.plus_lambda;
-      unsigned int branch      = 1;
-      std::size_t  q0          = 0;
+      unsigned int              branch   = 1;
+      std::size_t               q0       = 0;
       if (!resume)
         {
           // The starting point: converge it at fixed lambda, analyse, report.
@@ -1274,15 +1560,7 @@ namespace cosmo
           analyse(problem, s, nullptr, settings.direction);
           at = Progress();
           incomplete.clear();
-          {
-            StepReport report;
-            report.t                 = lambda;
-            report.newton_iterations = r0.iterations;
-            report.residual_norm     = r0.residual_norm;
-            report.n_negative        = s.n_negative;
-            problem.set_load_parameter(lambda);
-            report_converged_step(problem, s.U, report);
-          }
+          report_first_state(problem, s.U, lambda, r0, s.n_negative, 0, 0, false);
           at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
           follow(problem, s, 0, at.may_switch, events, switches, at.step, settings.initial_step,
                  0);
@@ -1294,8 +1572,7 @@ namespace cosmo
           follow(problem, at.s, at.branch, at.may_switch, events, switches, at.step, at.ds, at.k);
           if (at.q != Progress::no_switch)
             {
-              std::rotate(switches.begin() + at.q + 1, switches.begin() + at.queued,
-                          switches.end());
+              queue_depth_first(switches, at.q, at.queued);
               branch = at.branch + 1;
               q0     = at.q + 1;
             }
@@ -1337,42 +1614,14 @@ namespace cosmo
               ++branch;
               continue;
             }
-          const auto key = std::make_pair(start.branch, start.lambda);
-          if (start.sign > 0)
-            plus_lambda[key] = first.lambda;
-          else if (start.sign < 0 && plus_lambda.count(key) && !settings.follow_mirror_images)
+          const std::string mirror = mirror_image_message(start, first, at.plus_lambda, settings);
+          if (!mirror.empty())
             {
-              // The halves of a symmetric pitchfork start at the same lambda
-              // (lambda - lambda* is even in the amplitude); a generic branch
-              // point's differ at first order.
-              const double d = std::abs(first.lambda - plus_lambda[key]);
-              const double scale = std::max(std::abs(first.lambda - start.lambda),
-                                            std::abs(plus_lambda[key] - start.lambda));
-              if (d <= 1e-6 * scale + 1e-14 * (1 + std::abs(start.lambda)))
-                {
-                  std::ostringstream m;
-                  m << std::setprecision(10) << "  the branch along -phi from t = "
-                    << start.lambda << " (branch " << start.branch
-                    << ") is the mirror image of the one along +phi (their first points agree in "
-                       "lambda to "
-                    << std::setprecision(2) << d
-                    << "): followed once ('Follow mirror images = true' follows both)";
-                  say(m.str());
-                  continue;
-                }
+              say(mirror);
+              continue;
             }
-          {
-            StepReport report;
-            report.step              = ++step;
-            report.t                 = first.lambda;
-            report.newton_iterations = r.iterations;
-            report.residual_norm     = r.residual_norm;
-            report.branch            = branch;
-            report.n_negative        = first.n_negative;
-            report.factorized_at_predictor = first.factorized_at_predictor;
-            problem.set_load_parameter(first.lambda);
-            report_converged_step(problem, first.U, report);
-          }
+          report_first_state(problem, first.U, first.lambda, r, first.n_negative, ++step, branch,
+                             first.factorized_at_predictor);
           say("  following branch " + std::to_string(branch) + " (depth " +
               std::to_string(first.depth) + ", from branch " + std::to_string(start.branch) +
               ") from t = " + std::to_string(first.lambda));
@@ -1383,22 +1632,10 @@ namespace cosmo
           at.may_switch = settings.switch_branches && first.depth < settings.maximum_depth;
           follow(problem, first, branch, at.may_switch, events, switches, step,
                  settings.initial_step, 0);
-          // The branches switched to from this one come next (depth first):
-          // a secondary bifurcation is followed before the first branch's
-          // later branch points.
-          std::rotate(switches.begin() + q + 1, switches.begin() + queued, switches.end());
+          queue_depth_first(switches, q, queued);
           ++branch;
         }
-      if (!incomplete.empty())
-        {
-          // Every branch followed so far has been reported (its steps and
-          // events are in the output); the run still did not do what it was
-          // asked: it fails (exit 2, "status": "failed").
-          std::string m = "the path did not reach its target: " + incomplete[0];
-          if (incomplete.size() > 1)
-            m += " (and " + std::to_string(incomplete.size() - 1) + " more, in the log)";
-          throw io::RunFailure(m);
-        }
+      fail_if_incomplete(incomplete);
       return events;
     }
   } // namespace solvers

@@ -104,14 +104,84 @@ namespace cosmo
       resume         = true;
     }
 
+    namespace
+    {
+      /// Step 0: the starting state must be converged too (it usually is exact).
+      void
+      converge_starting_state(ContinuationProblem &       problem,
+                              Vector<double> &            U,
+                              const NewtonSettings &      newton,
+                              const ContinuationSettings &settings,
+                              const double                t,
+                              StepReport &                report)
+      {
+        const NewtonResult r     = newton_solve(problem, U, newton);
+        report.step              = 0;
+        report.t                 = t;
+        report.newton_iterations = r.iterations;
+        report.residual_norm     = r.residual_norm;
+        report.final             = (t >= settings.target);
+        report_converged_step(problem, U, report);
+      }
+
+      /// A run that needs more than the allowed number of steps ends.
+      void
+      check_step_limit(const unsigned int step, const ContinuationSettings &settings, const double t)
+      {
+        if (step >= settings.maximum_steps)
+          throw io::RunFailure("the target t = " + std::to_string(settings.target) +
+                               " was not reached in " +
+                               std::to_string(settings.maximum_steps) +
+                               " steps (last converged t = " + std::to_string(t) + ")");
+      }
+
+      /// Secant predictor from the last two converged states (U at t,
+      /// U_previous a step dt_previous before); on the first step the
+      /// problem's own guess.
+      Vector<double>
+      secant_predictor(ContinuationProblem & problem,
+                       const Vector<double> &U,
+                       const Vector<double> &U_previous,
+                       const double          t,
+                       const double          t_new,
+                       const double          dt_previous,
+                       const unsigned int    step)
+      {
+        Vector<double> U_trial = U;
+        if (dt_previous > 0)
+          U_trial.add((t_new - t) / dt_previous, U, -(t_new - t) / dt_previous, U_previous);
+        else if (step == 0)
+          problem.first_step_guess(t_new, U_trial);
+        return U_trial;
+      }
+
+      /// After the step from t to t_new failed (`what`): halve dt, saying so
+      /// through `progress`; below the minimum step the run ends.
+      void
+      cut_back(double &                                        dt,
+               const double                                    t,
+               const double                                    t_new,
+               const char *                                    what,
+               const ContinuationSettings &                    settings,
+               const std::function<void(const std::string &)> &progress)
+      {
+        std::ostringstream s;
+        s << "  step to t = " << t_new << " failed (" << what << "); cutting back to "
+          << dt / 2;
+        if (progress)
+          progress(s.str());
+        dt /= 2;
+        if (dt < settings.minimum_step)
+          throw io::RunFailure("continuation stalled at t = " + std::to_string(t) +
+                               ": the step fell below the minimum " +
+                               std::to_string(settings.minimum_step) +
+                               " (last failure: " + what + ")");
+      }
+    } // namespace
+
     unsigned int
     NaturalParameterContinuation::run(ContinuationProblem &problem, Vector<double> &U)
     {
-      auto say = [&](const std::string &s) {
-        if (progress)
-          progress(s);
-      };
-
       double         t = settings.start;
       StepReport     report;
       Vector<double> U_previous = U;
@@ -144,16 +214,7 @@ namespace cosmo
       else
         {
           problem.set_load_parameter(t);
-          // Step 0: the starting state must be converged too (it usually is exact).
-          {
-            const NewtonResult r     = newton_solve(problem, U, newton);
-            report.step              = 0;
-            report.t                 = t;
-            report.newton_iterations = r.iterations;
-            report.residual_norm     = r.residual_norm;
-            report.final             = (t >= settings.target);
-            report_converged_step(problem, U, report);
-          }
+          converge_starting_state(problem, U, newton, settings, t, report);
           U_previous = U;
           save_point();
         }
@@ -161,20 +222,12 @@ namespace cosmo
       while (t < settings.target - 1e-14)
         {
           io::check_interrupt(); // between steps: the last converged state is written
-          if (step >= settings.maximum_steps)
-            throw io::RunFailure("the target t = " + std::to_string(settings.target) +
-                                 " was not reached in " +
-                                 std::to_string(settings.maximum_steps) +
-                                 " steps (last converged t = " + std::to_string(t) + ")");
+          check_step_limit(step, settings, t);
           dt                 = std::min(dt, settings.target - t);
           const double t_new = (settings.target - (t + dt) < 1e-12) ? settings.target : t + dt;
 
-          // Secant predictor from the last two converged states.
-          Vector<double> U_trial = U;
-          if (dt_previous > 0)
-            U_trial.add((t_new - t) / dt_previous, U, -(t_new - t) / dt_previous, U_previous);
-          else if (step == 0)
-            problem.first_step_guess(t_new, U_trial);
+          Vector<double> U_trial =
+            secant_predictor(problem, U, U_previous, t, t_new, dt_previous, step);
 
           problem.set_load_parameter(t_new);
           try
@@ -202,16 +255,7 @@ namespace cosmo
             {
               ++cutbacks;
               problem.set_load_parameter(t);
-              std::ostringstream s;
-              s << "  step to t = " << t_new << " failed (" << e.what() << "); cutting back to "
-                << dt / 2;
-              say(s.str());
-              dt /= 2;
-              if (dt < settings.minimum_step)
-                throw io::RunFailure("continuation stalled at t = " + std::to_string(t) +
-                                     ": the step fell below the minimum " +
-                                     std::to_string(settings.minimum_step) +
-                                     " (last failure: " + e.what() + ")");
+              cut_back(dt, t, t_new, e.what(), settings, progress);
             }
         }
       return step;

@@ -33,69 +33,116 @@ namespace cosmo
       return s;
     }
 
-    CriticalPoint
-    locate_critical_point(BifurcationProblem &         problem,
-                          const bool                   fold,
-                          const Vector<double> &       U0,
-                          const double                 lambda0,
-                          const Vector<double> &       border,
-                          const Vector<double> &       mask,
-                          const Vector<double> &       tU,
-                          const double                 tlambda,
-                          const bool                   factorized,
-                          const double                 lambda_scale,
-                          const double                 residual_tolerance,
-                          const CriticalPointSettings &settings,
-                          const std::function<void(Vector<double> &)> &project)
+    namespace
     {
-      const unsigned int n = problem.n_unknowns();
-      CriticalPoint      cp;
-      cp.U       = U0;
-      cp.lambda  = lambda0;
+      /// The border: the mode estimate on the mode unknowns, unit length (and
+      /// in the fixed-point space, if project is given). False if the
+      /// estimate vanishes on the mode unknowns.
+      bool
+      unit_border(const Vector<double> &                       border,
+                  const Vector<double> &                       mask,
+                  const std::function<void(Vector<double> &)> &project,
+                  Vector<double> &                             b)
+      {
+        b = border;
+        b.scale(mask);
+        const double bn = std::sqrt(b * b);
+        if (!(bn > 0))
+          return false;
+        b /= bn;
+        if (project)
+          {
+            project(b);
+            b /= std::sqrt(b * b);
+          }
+        return true;
+      }
 
-      // The border: the mode estimate on the mode unknowns, unit length.
-      Vector<double> b = border;
-      b.scale(mask);
-      const double bn = std::sqrt(b * b);
-      if (!(bn > 0))
+      /**
+       * Newton on the minimally augmented system (locate_critical_point):
+       * the iterate (in cp), the border b and the vectors the pieces of one
+       * iteration share, each piece named for what it computes. A piece that
+       * fails says why in cp.message and returns false.
+       */
+      struct CriticalPointNewton
+      {
+        CriticalPointNewton(BifurcationProblem &                         problem,
+                            const bool                                   fold,
+                            const Vector<double> &                       U0,
+                            const double                                 lambda0,
+                            const Vector<double> &                       b,
+                            const Vector<double> &                       mask,
+                            const Vector<double> &                       tU,
+                            const double                                 tlambda,
+                            const double                                 lambda_scale,
+                            const double                                 residual_tolerance,
+                            const CriticalPointSettings &                settings,
+                            const std::function<void(Vector<double> &)> &project,
+                            CriticalPoint &                              cp)
+          : problem(problem)
+          , fold(fold)
+          , U0(U0)
+          , lambda0(lambda0)
+          , b(b)
+          , mask(mask)
+          , lambda_scale(lambda_scale)
+          , residual_tolerance(residual_tolerance)
+          , settings(settings)
+          , project(project)
+          , cp(cp)
+          , U(cp.U)
+          , lambda(cp.lambda)
+          , mu(cp.unfolding)
+          // Branch points: keep (U, lambda) on the old branch's tangent along b.
+          , beta_t((!fold && tlambda != 0) ? (b * tU) / tlambda : 0.)
+          , n(problem.n_unknowns())
+          , R(n)
+          , R0(n)
+          , Rl(n)
+          , y(n)
+          , a(n)
+          , z(n)
+          , v(n)
+          , gU(n)
+          , Rp(n)
+          , Rm(n)
+          , Upv(n)
+          , Umv(n)
+          , last_dU(n)
+          , U_scale(problem.unknowns_scale(U0))
+        {}
+
+        /// Says why Newton stopped; false.
+        bool
+        fail(const std::string &why)
         {
-          cp.message = "no mode estimate to border the Jacobian with";
+          cp.message = why;
+          return false;
+        }
+
+        /// The iterate where Newton stopped, with the load parameter at it.
+        CriticalPoint
+        stopped()
+        {
+          problem.set_load_parameter(lambda);
           return cp;
         }
-      b /= bn;
-      if (project)
+
+        /// Newton has failed when the iteration cap is reached.
+        bool
+        below_iteration_limit(const unsigned int it)
         {
-          project(b);
-          b /= std::sqrt(b * b);
-        }
-      // Branch points: keep (U, lambda) on the old branch's tangent along b.
-      const double beta_t = (!fold && tlambda != 0) ? (b * tU) / tlambda : 0.;
-
-      Vector<double> &U      = cp.U;
-      double &        lambda = cp.lambda;
-      double &        mu     = cp.unfolding;
-      Vector<double>  R(n), R0(n), Rl(n), y(n), a(n), z(n), v(n), gU(n), Rp(n), Rm(n), Upv(n),
-        Umv(n);
-      double          previous_update = INFINITY;
-      Vector<double>  last_dU(n);
-      double          last_d_lambda = 0;
-      bool            nudged        = false;
-      const double    U_scale         = problem.unknowns_scale(U0);
-
-      auto fail = [&](const std::string &why) {
-        cp.message = why;
-        problem.set_load_parameter(lambda);
-        return cp;
-      };
-
-      double previous_g = INFINITY;
-      for (unsigned int it = 0;; ++it)
-        {
-          // (before the factorization the iterate would cost)
-          io::check_interrupt();
           if (it == settings.max_iterations)
             return fail("no convergence in " + std::to_string(settings.max_iterations) +
                         " Newton iterations");
+          return true;
+        }
+
+        /// J at the iterate (the caller's factorization at the first one if
+        /// factorized).
+        bool
+        factorize(const unsigned int it, const bool factorized)
+        {
           problem.set_load_parameter(lambda);
           if (it > 0 || !factorized)
             {
@@ -116,6 +163,14 @@ namespace cosmo
                     return fail("the Jacobian cannot be set up at a Newton iterate");
                 }
             }
+          return true;
+        }
+
+        /// R, and the test function g and the mode v of the bordered system
+        /// at the iterate, as cp reports them.
+        bool
+        bordered_test_function(const unsigned int it)
+        {
           // R0 = R(U, lambda); R = R0 + mu b, the first equation of the
           // branch-point system (R = R0 for a fold).
           if (problem.residual(U, R0) != 0)
@@ -130,11 +185,11 @@ namespace cosmo
             return fail("a solve with the Jacobian failed");
           if (project)
             project(y);
-          const double beta = b * y;
+          beta = b * y;
           if (!std::isfinite(beta) || beta == 0)
             return fail("the bordered system is singular (the border is orthogonal to the mode)");
-          const double g = -1. / beta;
-          v              = y;
+          g = -1. / beta;
+          v = y;
           v /= beta;
           cp.test_function = g;
           const double vv  = masked_dot(v, v, mask);
@@ -143,13 +198,19 @@ namespace cosmo
           cp.mode.scale(mask);
           cp.mode /= std::sqrt(vv);
           cp.iterations = it;
+          return true;
+        }
 
+        /// g_U, and eps, the difference step along v.
+        bool
+        test_function_gradient()
+        {
           // Derivatives of g by central differences of R along v.
           const double vmax = masked_max(v, mask);
           // The difference step: 1e-4 of the size at which the problem is
           // nonlinear (~eps^(1/4): truncation and round-off balanced).
-          const double eps = 1e-4 * U_scale / vmax;
-          Upv              = U;
+          eps = 1e-4 * U_scale / vmax;
+          Upv = U;
           Upv.add(eps, v);
           Umv = U;
           Umv.add(-eps, v);
@@ -161,10 +222,24 @@ namespace cosmo
           gU.add(-2., R0);
           gU += Rm;
           gU *= -1. / (eps * eps);
+          return true;
+        }
+
+        /// a = J^-1 R and z = J^-1 R_lambda, for the block elimination.
+        bool
+        solves_for_elimination()
+        {
           if (problem.load_derivative(U, lambda, Rl) != 0)
             return fail("dR/dlambda cannot be evaluated at a Newton iterate");
           if (problem.solve_with_jacobian(R, a) != 0 || problem.solve_with_jacobian(Rl, z) != 0)
             return fail("a solve with the Jacobian failed");
+          return true;
+        }
+
+        /// A11, the derivative of g along the branch, by central differences.
+        bool
+        derivative_along_branch()
+        {
           // dg/dlambda along the branch, A11 = g_lambda - g_U.z, as one
           // directional difference of -v.J v along (-z, 1): exact also where
           // lambda acts through prescribed unknowns (rows of R that are
@@ -190,10 +265,17 @@ namespace cosmo
           problem.set_load_parameter(lambda);
           if (status != 0)
             return fail("the residual cannot be evaluated near a Newton iterate");
-          const double A11 = -(vJv_plus - vJv_minus) / (2 * delta);
+          A11 = -(vJv_plus - vJv_minus) / (2 * delta);
+          return true;
+        }
+
+        /// The Newton updates d_lambda and d_mu, and dg_dlambda.
+        bool
+        block_elimination()
+        {
           // Block elimination with the factorization of J. dg_dlambda: dg/dlambda
           // along the branch, for the resolution (below).
-          double d_lambda = 0, d_mu = 0, dg_dlambda = A11;
+          d_lambda = 0, d_mu = 0, dg_dlambda = A11;
           if (fold)
             {
               const double denominator = A11;
@@ -223,6 +305,13 @@ namespace cosmo
               // points.)
               dg_dlambda = det / A22;
             }
+          return true;
+        }
+
+        /// cp.resolution, then the step to the next iterate.
+        bool
+        take_update()
+        {
           // The resolution: a perturbation dJ of the factorization moves g by
           // -v.dJ v; componentwise |dJ| <~ eps |J|, so |delta g| <~ eps
           // |v|.|J||v|, and lambda moves by that over dg/dlambda along the
@@ -244,13 +333,26 @@ namespace cosmo
           last_d_lambda = d_lambda;
           lambda += d_lambda;
           mu += d_mu;
+          return true;
+        }
+
+        /// COSMO_DEBUG_CRITICAL_POINT: the iteration's figures on stderr.
+        void
+        print_iteration(const unsigned int it) const
+        {
           if (std::getenv("COSMO_DEBUG_CRITICAL_POINT"))
             std::cerr << std::setprecision(15) << "    [critical point] it " << it << " lambda "
                       << lambda << " d_lambda " << d_lambda << " g " << g << " dg/dlambda "
                       << dg_dlambda << " A11 " << A11 << " gU.a " << gU * a << " gU.y "
                       << gU * y << " |R| " << cp.residual_norm << " mu " << mu << " eps " << eps
                       << "\n";
+        }
 
+        /// Whether the update just taken ends the iteration (cp.lambda_update
+        /// its precision).
+        bool
+        update_accepted()
+        {
           // Accepted when one of three holds (doc/theory-continuation.md 3):
           // - tiny: the update is below the tolerance;
           // - floor: after an update below the round-off level (at least the
@@ -284,20 +386,98 @@ namespace cosmo
                              contracted ? left_after : update;
           previous_g = g;
           previous_update = std::abs(d_lambda);
-          if (tiny || floor || contracted)
+          return tiny || floor || contracted;
+        }
+
+        /// The residual at the accepted iterate: cp.converged if it is
+        /// below the tolerance.
+        bool
+        check_located_point(const unsigned int it)
+        {
+          problem.set_load_parameter(lambda);
+          if (problem.residual(U, R) != 0)
+            return fail("the residual cannot be evaluated at the located point");
+          if (!fold)
+            R.add(mu, b);
+          cp.residual_norm = scaled_residual_norm(problem, R);
+          cp.iterations    = it + 1;
+          if (cp.residual_norm <= residual_tolerance)
+            cp.converged = true;
+          return true;
+        }
+
+        BifurcationProblem &                         problem;
+        const bool                                   fold;
+        const Vector<double> &                       U0;
+        const double                                 lambda0;
+        const Vector<double> &                       b;
+        const Vector<double> &                       mask;
+        const double                                 lambda_scale;
+        const double                                 residual_tolerance;
+        const CriticalPointSettings &                settings;
+        const std::function<void(Vector<double> &)> &project;
+        CriticalPoint &                              cp;
+        Vector<double> &                             U;
+        double &                                     lambda;
+        double &                                     mu;
+        const double                                 beta_t;
+        const unsigned int                           n;
+        Vector<double>                               R, R0, Rl, y, a, z, v, gU, Rp, Rm, Upv, Umv;
+        double                                       previous_update = INFINITY;
+        Vector<double>                               last_dU;
+        double                                       last_d_lambda = 0;
+        bool                                         nudged        = false;
+        const double                                 U_scale;
+        double                                       previous_g = INFINITY;
+        // The current iteration's: b.y, g, the difference step, the Jacobian
+        // of (g, F3) in lambda (and mu), the updates.
+        double beta = 0, g = 0, eps = 0, A11 = 0, d_lambda = 0, d_mu = 0, dg_dlambda = 0;
+      };
+    } // namespace
+
+    CriticalPoint
+    locate_critical_point(BifurcationProblem &         problem,
+                          const bool                   fold,
+                          const Vector<double> &       U0,
+                          const double                 lambda0,
+                          const Vector<double> &       border,
+                          const Vector<double> &       mask,
+                          const Vector<double> &       tU,
+                          const double                 tlambda,
+                          const bool                   factorized,
+                          const double                 lambda_scale,
+                          const double                 residual_tolerance,
+                          const CriticalPointSettings &settings,
+                          const std::function<void(Vector<double> &)> &project)
+    {
+      CriticalPoint cp;
+      cp.U      = U0;
+      cp.lambda = lambda0;
+
+      Vector<double> b;
+      if (!unit_border(border, mask, project, b))
+        {
+          cp.message = "no mode estimate to border the Jacobian with";
+          return cp;
+        }
+      CriticalPointNewton newton(problem, fold, U0, lambda0, b, mask, tU, tlambda, lambda_scale,
+                                 residual_tolerance, settings, project, cp);
+      for (unsigned int it = 0;; ++it)
+        {
+          // (before the factorization the iterate would cost)
+          io::check_interrupt();
+          if (!newton.below_iteration_limit(it) || !newton.factorize(it, factorized) ||
+              !newton.bordered_test_function(it) || !newton.test_function_gradient() ||
+              !newton.solves_for_elimination() || !newton.derivative_along_branch() ||
+              !newton.block_elimination() || !newton.take_update())
+            return newton.stopped();
+          newton.print_iteration(it);
+          if (newton.update_accepted())
             {
-              problem.set_load_parameter(lambda);
-              if (problem.residual(U, R) != 0)
-                return fail("the residual cannot be evaluated at the located point");
-              if (!fold)
-                R.add(mu, b);
-              cp.residual_norm = scaled_residual_norm(problem, R);
-              cp.iterations    = it + 1;
-              if (cp.residual_norm <= residual_tolerance)
-                {
-                  cp.converged = true;
-                  return cp;
-                }
+              if (!newton.check_located_point(it))
+                return newton.stopped();
+              if (cp.converged)
+                return cp;
             }
         }
     }

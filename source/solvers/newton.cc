@@ -133,6 +133,175 @@ namespace cosmo
       return m;
     }
 
+    namespace
+    {
+      /// Exact Newton: a new Jacobian at every iteration, and no cap on the
+      /// step length (KINSOL's default cap truncates steps on large systems).
+      SUNDIALS::KINSOL<Vector<double>>::AdditionalData
+      exact_newton_data(const NewtonSettings &settings)
+      {
+        using AdditionalData = SUNDIALS::KINSOL<Vector<double>>::AdditionalData;
+        AdditionalData data;
+        data.strategy                      = AdditionalData::linesearch;
+        data.maximum_non_linear_iterations = settings.max_iterations;
+        data.function_tolerance            = settings.relative_tolerance;
+        data.step_tolerance                = 1e-15;
+        data.maximum_setup_calls           = 1;
+        data.maximum_newton_step           = 1e12;
+        return data;
+      }
+
+      /**
+       * The residuals and Jacobian solves KINSOL asks of the system, with
+       * what saves assemblies: the residual of the guess newton_solve has
+       * already evaluated, the last one KINSOL evaluated (that of the final
+       * iterate, which the check after the solve would otherwise assemble
+       * again), and J p for the difference quotient after an exact solve.
+       */
+      struct KinsolEvaluations
+      {
+        KinsolEvaluations(NonlinearSystem &system, NewtonResult &result)
+          : system(system)
+          , result(result)
+        {}
+
+        /// Whether u is (bitwise) the point of the residual kept in last_r.
+        bool
+        is_last(const Vector<double> &u) const
+        {
+          return last_status >= 0 && same_point(u, last_u);
+        }
+
+        /// The guess U first: true (and result set) if it passes the
+        /// stopping test; otherwise its residual is KINSOL's first.
+        bool
+        guess_converged(const Vector<double> &U, const double tolerance)
+        {
+          last_status = system.residual(U, last_r);
+          io::check_interrupt();
+          last_u = U;
+          if (last_status == 0)
+            {
+              const double norm = scaled_residual_norm(system, last_r);
+              if (std::isfinite(norm) && norm <= tolerance)
+                {
+                  result.iterations    = 0;
+                  result.residual_norm = norm;
+                  return true;
+                }
+            }
+          first_call = true;
+          return false;
+        }
+
+        /// R(u) for KINSOL, assembled only where it is not known already.
+        int
+        residual(const Vector<double> &u, Vector<double> &r)
+        {
+          // SIGINT/SIGTERM: end this solve now (an unrecoverable error for
+          // KINSOL), then report the interruption after it, not a failure.
+          if (io::pending_signal() != 0)
+            return -1;
+          if (first_call)
+            {
+              first_call = false;
+              if (is_last(u))
+                {
+                  r = last_r;
+                  return last_status;
+                }
+            }
+          // Right after a solve, KINSOL approximates J p by the difference
+          // quotient (R(u + sigma p) - R(u)) / sigma (kinLsDQJtimes: the
+          // deal.II 9.4 wrapper offers no J p of its own). For an exact solve
+          // J p = b: return R(u) + sigma b, the quotient is then J p itself,
+          // without an assembly.
+          if (jp_pending)
+            {
+              jp_pending = false;
+              double sigma = 0;
+              if (dq_point_of(u, last_u, solved_p, sigma))
+                {
+                  r = last_r;
+                  r.add(sigma, solved_rhs);
+                  ++result.exact_jacobian_products;
+                  return last_status;
+                }
+            }
+          last_status = system.residual(u, r);
+          last_u      = u;
+          last_r      = r;
+          return last_status;
+        }
+
+        /// exact_jp: keep the solve for the residual KINSOL asks next.
+        int
+        solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst, const bool exact_jp)
+        {
+          const int status = system.solve_with_jacobian(rhs, dst);
+          jp_pending       = status == 0 && exact_jp && last_status == 0 && system.solves_exactly();
+          if (jp_pending)
+            {
+              solved_rhs = rhs;
+              solved_p   = dst;
+            }
+          return status;
+        }
+
+        NonlinearSystem &system;
+        NewtonResult &   result;
+        // The last residual KINSOL evaluated, kept: it is that of the final
+        // iterate, which the check after the solve would otherwise assemble
+        // again.
+        Vector<double> last_u, last_r;
+        int            last_status = -1;
+        // The last Newton solve J p = b, for the residual KINSOL asks next.
+        Vector<double> solved_rhs, solved_p;
+        bool           jp_pending = false;
+        // The guess's residual is still to be handed to KINSOL.
+        bool first_call = false;
+      };
+
+      /**
+       * kinsol.solve(U). KINSOL's own messages (a failed line search, ...)
+       * go with this solve's outcome into the log, not to the terminal's
+       * stderr: returned as " (KINSOL said: ...)", or "" if none. Where
+       * KINSOL stops with an error, U is reset to U0 and NewtonFailure
+       * thrown (or the error passed on, see below).
+       */
+      std::string
+      solve_capturing_messages(SUNDIALS::KINSOL<Vector<double>> &kinsol,
+                               Vector<double> &                  U,
+                               const Vector<double> &            U0,
+                               NewtonResult &                    result)
+      {
+        io::StderrCapture kinsol_messages;
+        auto              said = [&kinsol_messages]() {
+          const std::string text = kinsol_messages.release();
+          return text.empty() ? text : " (KINSOL said: " + text + ")";
+        };
+        try
+          {
+            result.iterations = kinsol.solve(U);
+          }
+        catch (std::exception &e)
+          {
+            const std::string messages = said();
+            U = U0;
+            // Ranks in lockstep (a distributed mesh): an error not every rank
+            // raised (one rank's memory, say) ends this rank, and so all of them
+            // (MPI_Abort), rather than wait in the check after the solve for
+            // the others, which wait in the residual's collective calls.
+            if (io::interrupts_are_collective() && !is_driver_failure(e) &&
+                dynamic_cast<const SUNDIALS::KINSOL<Vector<double>>::ExcKINSOLError *>(&e) == nullptr)
+              throw;
+            io::check_interrupt();
+            throw NewtonFailure(std::string("KINSOL stopped: ") + e.what() + messages);
+          }
+        return said();
+      }
+    } // namespace
+
     NewtonResult
     newton_solve(NonlinearSystem &      system,
                  Vector<double> &       U,
@@ -143,131 +312,29 @@ namespace cosmo
       Vector<double> weights;
       system.residual_weights(weights);
 
-      SUNDIALS::KINSOL<Vector<double>>::AdditionalData data;
-      // Exact Newton: a new Jacobian at every iteration, and no cap on the
-      // step length (KINSOL's default cap truncates steps on large systems).
-      data.strategy                      = SUNDIALS::KINSOL<Vector<double>>::AdditionalData::linesearch;
-      data.maximum_non_linear_iterations = settings.max_iterations;
-      data.function_tolerance            = settings.relative_tolerance;
-      data.step_tolerance                = 1e-15;
-      data.maximum_setup_calls           = 1;
-      data.maximum_newton_step           = 1e12;
-
-      SUNDIALS::KINSOL<Vector<double>> kinsol(data);
+      SUNDIALS::KINSOL<Vector<double>> kinsol(exact_newton_data(settings));
       const unsigned int                n = system.n_unknowns();
       kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
       kinsol.get_function_scaling = [&]() -> Vector<double> & { return weights; };
-      // The last residual KINSOL evaluated, kept: it is that of the final
-      // iterate, which the check below would otherwise assemble again.
-      Vector<double> last_u, last_r;
-      int            last_status = -1;
-      // The last Newton solve J p = b, for the residual KINSOL asks next.
-      Vector<double> solved_rhs, solved_p;
-      bool           jp_pending = false;
-
-      // Whether u is (bitwise) the point of the residual kept in last_r.
-      auto is_last = [&](const Vector<double> &u) {
-        return last_status >= 0 && same_point(u, last_u);
-      };
+      KinsolEvaluations evaluations(system, result);
 
       // take_guess: the guess first, taken if it passes the stopping test;
       // otherwise its residual is KINSOL's first.
-      bool first_call = false;
-      if (take_guess)
-        {
-          last_status = system.residual(U, last_r);
-          io::check_interrupt();
-          last_u = U;
-          if (last_status == 0)
-            {
-              const double norm = scaled_residual_norm(system, last_r);
-              if (std::isfinite(norm) && norm <= settings.relative_tolerance)
-                {
-                  result.iterations    = 0;
-                  result.residual_norm = norm;
-                  return result;
-                }
-            }
-          first_call = true;
-        }
-      kinsol.residual      = [&](const Vector<double> &u, Vector<double> &r) {
-        // SIGINT/SIGTERM: end this solve now (an unrecoverable error for
-        // KINSOL), then report the interruption below, not a failure.
-        if (io::pending_signal() != 0)
-          return -1;
-        if (first_call)
-          {
-            first_call = false;
-            if (is_last(u))
-              {
-                r = last_r;
-                return last_status;
-              }
-          }
-        // Right after a solve, KINSOL approximates J p by the difference
-        // quotient (R(u + sigma p) - R(u)) / sigma (kinLsDQJtimes: the
-        // deal.II 9.4 wrapper offers no J p of its own). For an exact solve
-        // J p = b: return R(u) + sigma b, the quotient is then J p itself,
-        // without an assembly.
-        if (jp_pending)
-          {
-            jp_pending = false;
-            double sigma = 0;
-            if (dq_point_of(u, last_u, solved_p, sigma))
-              {
-                r = last_r;
-                r.add(sigma, solved_rhs);
-                ++result.exact_jacobian_products;
-                return last_status;
-              }
-          }
-        last_status = system.residual(u, r);
-        last_u      = u;
-        last_r      = r;
-        return last_status;
+      if (take_guess && evaluations.guess_converged(U, settings.relative_tolerance))
+        return result;
+      kinsol.residual = [&](const Vector<double> &u, Vector<double> &r) {
+        return evaluations.residual(u, r);
       };
       kinsol.setup_jacobian = [&](const Vector<double> &u, const Vector<double> &) {
         return system.setup_jacobian(u);
       };
       static const bool exact_jp = std::getenv("COSMO_DQ_JP") == nullptr; // to measure against
       kinsol.solve_with_jacobian = [&](const Vector<double> &rhs, Vector<double> &dst, double) {
-        const int status = system.solve_with_jacobian(rhs, dst);
-        jp_pending       = status == 0 && exact_jp && last_status == 0 && system.solves_exactly();
-        if (jp_pending)
-          {
-            solved_rhs = rhs;
-            solved_p   = dst;
-          }
-        return status;
+        return evaluations.solve_with_jacobian(rhs, dst, exact_jp);
       };
 
-      Vector<double> U0 = U;
-      // KINSOL's own messages (a failed line search, ...) go with this
-      // solve's outcome into the log, not to the terminal's stderr.
-      io::StderrCapture kinsol_messages;
-      auto              said = [&kinsol_messages]() {
-        const std::string text = kinsol_messages.release();
-        return text.empty() ? text : " (KINSOL said: " + text + ")";
-      };
-      try
-        {
-          result.iterations = kinsol.solve(U);
-        }
-      catch (std::exception &e)
-        {
-          const std::string messages = said();
-          U = U0;
-          // Ranks in lockstep (a distributed mesh): an error not every rank
-          // raised (one rank's memory, say) ends this rank, and so all of them
-          // (MPI_Abort), rather than wait in the check below for the others,
-          // which wait in the residual's collective calls.
-          if (io::interrupts_are_collective() && !is_driver_failure(e) &&
-              dynamic_cast<const SUNDIALS::KINSOL<Vector<double>>::ExcKINSOLError *>(&e) == nullptr)
-            throw;
-          io::check_interrupt();
-          throw NewtonFailure(std::string("KINSOL stopped: ") + e.what() + messages);
-        }
-      const std::string messages = said();
+      Vector<double>    U0       = U;
+      const std::string messages = solve_capturing_messages(kinsol, U, U0, result);
 
       // A signal ends the solve with an error KINSOL does not report in
       // Release: whatever U is now, it is an interruption, not a failure
@@ -275,7 +342,9 @@ namespace cosmo
       io::check_interrupt();
       // KINSOL reports failure only through (Debug-mode) assertions: check.
       Vector<double> R(n);
-      const int      status = is_last(U) ? (R = last_r, last_status) : system.residual(U, R);
+      const int      status = evaluations.is_last(U) ?
+                                (R = evaluations.last_r, evaluations.last_status) :
+                                system.residual(U, R);
       result.residual_norm = (status == 0) ? scaled_residual_norm(system, R) : INFINITY;
       if (status != 0 || !std::isfinite(result.residual_norm) ||
           result.residual_norm > settings.relative_tolerance)

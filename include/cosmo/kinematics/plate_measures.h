@@ -29,7 +29,7 @@ namespace cosmo
       /// Which part of the plate law, with which factor and natural curvature.
       struct Energy
       {
-        const materials::NaghdiPlateLaw *law = nullptr;
+        const materials::PlateLawAt *law = nullptr;
         /// Membrane and bending (true), or the transverse shear (false).
         bool membrane_bending = true;
         /// Factor on the energy (det G; for the shear also the model's shear scale).

@@ -102,7 +102,7 @@ namespace cosmo
       virtual bool
       plate_energy_derivatives(const std::array<double, plate_local_variables> &,
                                const PlateGrowthAtPoint &,
-                               const materials::NaghdiPlateLaw &,
+                               const materials::PlateLawAt &,
                                bool /*membrane_bending*/,
                                double /*shear_scale*/,
                                bool /*with_hessian*/,
@@ -198,7 +198,7 @@ namespace cosmo
     Number
     plate_energy(const std::array<Number, plate_local_variables> &z,
                  const PlateGrowthAtPoint &                      g,
-                 const materials::NaghdiPlateLaw &               law,
+                 const materials::PlateLawAt &               law,
                  const PlateModel &                              model,
                  const bool                                      membrane_bending,
                  const double                                    shear_scale)
@@ -239,7 +239,7 @@ namespace cosmo
     assumed_shear_energy(const std::array<Number, 2> &     e,
                          const Tensor<2, 2> &              inverse_jacobian,
                          const PlateGrowthAtPoint &        g,
-                         const materials::NaghdiPlateLaw & law,
+                         const materials::PlateLawAt & law,
                          const double                      shear_scale)
     {
       std::array<Number, 2> gamma;
@@ -260,29 +260,27 @@ namespace cosmo
     }
 
     /**
-     * Rim rod energy per reference length: the quadratic law with axial
-     * growth. The law's reference curvature is the discrete ring's
-     * (rim_reference_strains); natural_curvature (the rim's own growth
-     * through its section, ramped by the caller) is added to the stress-free
-     * curvature only, not to the ring's geometry.
+     * Rim rod energy per reference length: the rod law with axial growth
+     * (materials/rod_law.h). The natural state's reference curvature is the
+     * discrete ring's (rim_reference_strains); natural_curvature (the rim's
+     * own growth through its section, ramped by the caller) is added to the
+     * stress-free curvature only, not to the ring's geometry.
      */
     template <typename Number>
     Number
     rim_rod_energy(const std::array<Number, rim_local_variables> &z,
                    const RimFrame &                              f,
-                   const materials::QuadraticRodLaw &            law,
-                   const double                                  growth,
+                   const materials::RodLaw &                     law,
+                   const materials::RodNaturalState &            ring,
                    const PlateModel &                            model,
                    const std::array<double, 3> &natural_curvature = {{0., 0., 0.}})
     {
       const std::array<double, 3> kappa0 = {
-        {law.reference_strains[3], law.reference_strains[4], law.reference_strains[5]}};
-      if (natural_curvature == std::array<double, 3>{{0., 0., 0.}})
-        return law.energy(model.rim_strains(z, f, kappa0), growth);
-      auto stress_free = law;
+        {ring.reference_strains[3], ring.reference_strains[4], ring.reference_strains[5]}};
+      auto stress_free = ring;
       for (unsigned int k = 0; k < 3; ++k)
         stress_free.reference_strains[3 + k] += natural_curvature[k];
-      return stress_free.energy(model.rim_strains(z, f, kappa0), growth);
+      return materials::grown_rod_energy(law, model.rim_strains(z, f, kappa0), stress_free);
     }
   } // namespace kinematics
 

@@ -92,7 +92,7 @@ namespace cosmo
       Number
       strip_energy(const std::array<Number, strip_local_variables> &z,
                    const double                       eta,
-                   const materials::NaghdiPlateLaw &  law,
+                   const materials::PlateLawAt &  law,
                    const bool                         membrane_bending)
       {
         using V = std::array<Number, 3>;
@@ -128,7 +128,7 @@ namespace cosmo
     void
     strip_energy_derivatives(const std::array<double, strip_local_variables> &z,
                              double                                          eta,
-                             const materials::NaghdiPlateLaw &               law,
+                             const materials::PlateLawAt &               law,
                              bool                                            membrane_bending,
                              bool                                            with_hessian,
                              double &                                        W,

@@ -1,116 +1,154 @@
 #ifndef cosmo_materials_rod_law_h
 #define cosmo_materials_rod_law_h
 
-#include <algorithm>
+#include <deal.II/base/parameter_handler.h>
+
+#include <cosmo/base/plugins.h>
+#include <cosmo/materials/plate_law.h>
+
 #include <array>
-#include <cmath>
+#include <memory>
+#include <string>
+#include <type_traits>
 
 /**
- * A special Cosserat rod with a quadratic law in its six strains and axial
- * growth (doc/specification/plate-rod.md): with reference strains (nu0, kappa0) and growth g,
- * the stress-free rod has strains g nu0 and kappa0 (a ring of radius R grows
- * to radius g R: the curvature per reference length stays 1/R), and the
- * energy per reference length is
+ * A special Cosserat rod's law and its axial growth
+ * (doc/specification/plate-rod.md): with reference strains (nu0, kappa0) and
+ * growth g, the stress-free rod has strains g nu0 and kappa0 (a ring of
+ * radius R grows to radius g R: the curvature per reference length stays
+ * 1/R), and the energy per reference length is
  *
- *   g psi(nu/g - nu0, kappa/g - kappa0/g),
- *   psi(a, b) = 1/2 (GA1 a1^2 + GA2 a2^2 + EA a3^2 + EI1 b1^2 + EI2 b2^2 + GJ b3^2)
- *               + sum_{i<j} K_ij e_i e_j   (e = (a, b); couplings, zero by default).
+ *   g psi(e),  e = (nu/g - nu0, (kappa - kappa0)/g)
  *
- * The stiffnesses may be given or taken from a part-1 computation of the
- * rod's cross-section (its full 6x6 stiffness at the natural state: the
- * couplings of an eccentric or unsymmetric section, e.g. shear-twist about
- * a shear centre off the reference line). Templated on the number type for Sacado.
+ * in the elastic strains e (shear 1, 2, extension, bending 1, 2, twist),
+ * zero in the natural state. psi is the law, a registered RodLaw; the growth
+ * map is the rod's kinematics (grown_rod_energy()), the same for every law.
  */
 namespace cosmo
 {
   namespace materials
   {
-    struct QuadraticRodLaw
+    using namespace dealii;
+
+    /**
+     * A rod law: psi(e), the energy per unit length of the stress-free rod
+     * in the six elastic strains e. Implementations register themselves by
+     * name (COSMO_REGISTER_PLUGIN), one file each in
+     * source/materials/rod_laws/; the names are the values of 'Rim rod /
+     * Law' (doc/cookbook.md, "Add a rod law"). The law gives its value,
+     * gradient (the resultants) and Hessian (the tangent stiffness) at a
+     * state; grown_rod_energy() evaluates it on Sacado numbers through its
+     * second-order Taylor expansion there.
+     */
+    class RodLaw
     {
-      /// GA1, GA2, EA, EI1, EI2, GJ in the order of the strains.
-      std::array<double, 6> stiffness{{1, 1, 1, 1, 1, 1}};
-      std::array<double, 6> reference_strains{{0, 0, 1, 0, 0, 0}};
-      /// Off-diagonal stiffnesses K_ij, i < j (set both halves with
-      /// set_coupling(); the diagonal is `stiffness`).
-      std::array<std::array<double, 6>, 6> coupling{};
+    public:
+      virtual ~RodLaw() = default;
+      /// Reads its entries in `section` (entered; named in its errors).
+      virtual void
+      parse_parameters(ParameterHandler &prm, const std::string &section) = 0;
+      /// psi(e), its gradient dW and, with_hessian, its Hessian ddW (6 x 6, row-major).
+      virtual void
+      energy_derivatives(const std::array<double, 6> &e,
+                         bool                         with_hessian,
+                         double &                     W,
+                         std::array<double, 6> &      dW,
+                         std::array<double, 36> &     ddW) const = 0;
+      /// A line for the log: what the law is and where its numbers come from.
+      virtual std::string
+      description() const = 0;
 
-      void
-      set_coupling(const unsigned int i, const unsigned int j, const double value)
-      {
-        if (i != j)
-          coupling[i][j] = coupling[j][i] = value;
-      }
-
-      /// Whether any coupling is non-zero.
-      bool
-      coupled() const
-      {
-        for (unsigned int i = 0; i < 6; ++i)
-          for (unsigned int j = 0; j < 6; ++j)
-            if (i != j && coupling[i][j] != 0)
-              return true;
-        return false;
-      }
-
-      /// Scale strain k's stiffness row and column by f (K -> D K D with
-      /// D_kk = sqrt(f)): the diagonal by f, its couplings by sqrt(f), which
-      /// keeps K positive definite (the Kirchhoff penalty on GA1, GA2).
-      void
-      scale_strain(const unsigned int k, const double f)
-      {
-        stiffness[k] *= f;
-        for (unsigned int j = 0; j < 6; ++j)
-          if (j != k)
-            {
-              coupling[k][j] *= std::sqrt(f);
-              coupling[j][k] *= std::sqrt(f);
-            }
-      }
-
-      template <typename Number>
-      Number
-      energy(const std::array<Number, 6> &strains, const double growth) const
-      {
-        Number                W = 0. * strains[0];
-        std::array<Number, 6> e;
-        for (unsigned int k = 0; k < 6; ++k)
-          {
-            // nu/g - nu0 (k < 3); kappa/g - kappa0/g (k >= 3)
-            e[k] = k < 3 ? Number(strains[k] / growth - reference_strains[k]) :
-                           Number((strains[k] - reference_strains[k]) / growth);
-            W += 0.5 * stiffness[k] * e[k] * e[k];
-          }
-        for (unsigned int i = 0; i < 6; ++i)
-          for (unsigned int j = i + 1; j < 6; ++j)
-            if (coupling[i][j] != 0)
-              W += coupling[i][j] * e[i] * e[j];
-        return growth * W;
-      }
-
-      /**
-       * The resultants (n, m) = dW/d(nu, kappa) of energy(): r = K e with
-       * e_k = strain_k / g - e0_k (nu), (strain_k - e0_k) / g (kappa), e.g.
-       * uncoupled n_k = K_k (e_k / g - e0_k), m_k = K_k (e_k - e0_k) / g. The
-       * output writes these; nothing re-derives the law.
-       */
-      std::array<double, 6>
-      resultants(const std::array<double, 6> &strains, const double growth) const
-      {
-        std::array<double, 6> e, r;
-        for (unsigned int k = 0; k < 6; ++k)
-          e[k] = k < 3 ? strains[k] / growth - reference_strains[k] :
-                         (strains[k] - reference_strains[k]) / growth;
-        for (unsigned int i = 0; i < 6; ++i)
-          {
-            r[i] = stiffness[i] * e[i];
-            for (unsigned int j = 0; j < 6; ++j)
-              if (j != i)
-                r[i] += coupling[std::min(i, j)][std::max(i, j)] * e[j];
-          }
-        return r;
-      }
+      /// The tangent stiffness in the natural state (e = 0), 6 x 6 row-major:
+      /// the small-strain stiffnesses of the closed forms and the checks.
+      std::array<double, 36>
+      natural_stiffness() const;
     };
+
+    /**
+     * Where a rod's strains are measured from at a point: the reference
+     * strains (nu0, kappa0), the axial growth g and a weight on each
+     * elastic strain (psi(w e): the stiffness K -> D K D with D = diag(w),
+     * the Kirchhoff penalty on the shears).
+     */
+    struct RodNaturalState
+    {
+      std::array<double, 6> reference_strains{{0, 0, 1, 0, 0, 0}};
+      double                growth = 1;
+      std::array<double, 6> weights{{1, 1, 1, 1, 1, 1}};
+    };
+
+    /// The weighted elastic strains w_k e_k, e = (nu/g - nu0, (kappa - kappa0)/g).
+    template <typename Number>
+    std::array<Number, 6>
+    elastic_rod_strains(const std::array<Number, 6> &strains, const RodNaturalState &n)
+    {
+      std::array<Number, 6> e;
+      for (unsigned int k = 0; k < 6; ++k)
+        e[k] = n.weights[k] * (k < 3 ? Number(strains[k] / n.growth - n.reference_strains[k]) :
+                                       Number((strains[k] - n.reference_strains[k]) / n.growth));
+      return e;
+    }
+
+    /**
+     * g psi(e) of the strains (nu, kappa), on Sacado numbers through the
+     * law's second-order Taylor expansion at their value (value, gradient
+     * and Hessian there are the law's; exact for a quadratic law).
+     */
+    template <typename Number>
+    Number
+    grown_rod_energy(const RodLaw &law, const std::array<Number, 6> &strains, const RodNaturalState &n)
+    {
+      const auto             e = elastic_rod_strains(strains, n);
+      std::array<double, 6>  e0, dW;
+      std::array<double, 36> ddW;
+      for (unsigned int k = 0; k < 6; ++k)
+        e0[k] = value_of(e[k]);
+      double W = 0;
+      if constexpr (std::is_same_v<Number, double>)
+        {
+          law.energy_derivatives(e0, false, W, dW, ddW);
+          return n.growth * W;
+        }
+      else
+        {
+          law.energy_derivatives(e0, true, W, dW, ddW);
+          std::array<Number, 6> de;
+          Number                w = 0. * e[0] + W;
+          for (unsigned int k = 0; k < 6; ++k)
+            {
+              de[k] = e[k] - e0[k];
+              if (dW[k] != 0)
+                w += dW[k] * de[k];
+            }
+          for (unsigned int k = 0; k < 6; ++k)
+            for (unsigned int l = k; l < 6; ++l)
+              if (const double h = ddW[6 * k + l]; h != 0)
+                w += (k == l ? 0.5 * h : h) * de[k] * de[l];
+          return n.growth * w;
+        }
+    }
+
+    /**
+     * The resultants (n, m) = d(g psi)/d(nu, kappa) = w_k dpsi/de_k (the
+     * growth's 1/g and g cancel). The output writes these.
+     */
+    std::array<double, 6>
+    grown_rod_resultants(const RodLaw &law, const std::array<double, 6> &strains, const RodNaturalState &n);
+
+    /// The entry 'Law' (the registered rod laws) and every law's entries, in
+    /// the entered section.
+    void
+    declare_rod_law_parameters(ParameterHandler &prm);
+    /// The law selected in the entered section `section`'s 'Law', its entries read.
+    std::unique_ptr<RodLaw>
+    create_rod_law(ParameterHandler &prm, const std::string &section);
   } // namespace materials
+
+  namespace plugins
+  {
+    // One registry of rod laws per process (instantiated in source/materials/rod_law.cc).
+    extern template class Registry<materials::RodLaw>;
+  } // namespace plugins
 } // namespace cosmo
 
 #endif

@@ -21,7 +21,7 @@ namespace cosmo
       void
       exact_plate_energy_derivatives(const std::array<double, plate_local_variables> &z,
                                      const PlateGrowthAtPoint &                      g,
-                                     const materials::NaghdiPlateLaw &               law,
+                                     const materials::PlateLawAt &               law,
                                      bool                                            membrane_bending,
                                      double                                          shear_scale,
                                      bool                                            with_hessian,
@@ -62,7 +62,7 @@ namespace cosmo
       bool
       plate_energy_derivatives(const std::array<double, plate_local_variables> &z,
                                const PlateGrowthAtPoint &                      g,
-                               const materials::NaghdiPlateLaw &               law,
+                               const materials::PlateLawAt &               law,
                                const bool                                      membrane_bending,
                                const double                                    shear_scale,
                                const bool                                      with_hessian,

@@ -1,0 +1,280 @@
+// The VTU files of part 1: the section (stresses, growth), the surface layers, the rod piece.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <cosmo/io/vtu_patches.h>
+#include <cosmo/kinematics/helix.h>
+#include <cosmo/kinematics/section.h>
+
+#include "cross_section_problem.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    namespace
+    {
+      /// Stresses and growth at output points of the deformed section.
+      class SectionPostprocessor : public DataPostprocessor<2>
+      {
+      public:
+        SectionPostprocessor(const materials::MaterialLibrary &materials,
+                             const std::array<double, 6> &     strains,
+                             const double                      t)
+          : materials(materials)
+          , nu({strains[0], strains[1], strains[2]})
+          , kappa({strains[3], strains[4], strains[5]})
+          , t(t)
+        {}
+
+        std::vector<std::string>
+        get_names() const override
+        {
+          return {"position", "position", "position", "traction_E3", "traction_E3",
+                  "traction_E3", "von_Mises_stress", "mean_stress", "growth_J",
+                  "elastic_J", "energy_density", "region"};
+        }
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        get_data_component_interpretation() const override
+        {
+          std::vector<DataComponentInterpretation::DataComponentInterpretation> v(
+            12, DataComponentInterpretation::component_is_scalar);
+          for (unsigned int k = 0; k < 6; ++k)
+            v[k] = DataComponentInterpretation::component_is_part_of_vector;
+          return v;
+        }
+        UpdateFlags
+        get_needed_update_flags() const override
+        {
+          return update_values | update_gradients | update_quadrature_points;
+        }
+        void
+        evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
+                              std::vector<Vector<double>> &             out) const override
+        {
+          const auto  cell     = in.template get_cell<2>();
+          const auto &material = materials.material(cell->material_id());
+          for (unsigned int p = 0; p < out.size(); ++p)
+            {
+              const Point<2> &X = in.evaluation_points[p];
+              const Tensor<1, 3> w = kinematics::section_placement(
+                X, Tensor<1, 3>({in.solution_values[p][0], in.solution_values[p][1],
+                                 in.solution_values[p][2]}));
+              Tensor<2, 3> grad_u;
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 2; ++j)
+                  grad_u[i][j] = in.solution_gradients[p][i][j];
+              const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, nu, kappa);
+              const Tensor<2, 3>           Fg = material.growth.value(X, t);
+              materials::EnergyDerivatives d;
+              material.evaluate(F, Fg, false, d);
+              Tensor<2, 3> P;
+              for (unsigned int a = 0; a < 9; ++a)
+                P[a / 3][a % 3] = d.P[a];
+              const double       J     = determinant(F);
+              const Tensor<2, 3> sigma = (J > 0 ? 1. / J : 0.) * P * transpose(F);
+              const double       mean  = trace(sigma) / 3;
+              Tensor<2, 3>       dev   = sigma;
+              for (unsigned int i = 0; i < 3; ++i)
+                dev[i][i] -= mean;
+              for (unsigned int i = 0; i < 3; ++i)
+                out[p][i] = w[i];
+              for (unsigned int i = 0; i < 3; ++i)
+                out[p][3 + i] = P[i][2];
+              out[p][6]  = std::sqrt(1.5 * scalar_product(dev, dev));
+              out[p][7]  = mean;
+              out[p][8]  = determinant(Fg);
+              out[p][9]  = J / determinant(Fg);
+              out[p][10] = d.energy;
+              out[p][11] = cell->material_id();
+            }
+        }
+
+      private:
+        const materials::MaterialLibrary &materials;
+        const Tensor<1, 3>                nu, kappa;
+        const double                      t;
+      };
+    } // namespace
+
+    void
+    CrossSectionProblem::write_vtu(const unsigned int step, const double t)
+    {
+      const std::string name = "solution-" + Utilities::int_to_string(step, 4);
+      {
+        Vector<double> u(solution.begin(), solution.begin() + n_u());
+        SectionPostprocessor post(materials, strains_of(solution), t);
+        DataOut<2>           data_out;
+        data_out.attach_dof_handler(dof_handler);
+        std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
+          3, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(u, std::vector<std::string>(3, "displacement"),
+                                 DataOut<2>::type_dof_data, interp);
+        data_out.add_data_vector(u, post);
+        data_out.build_patches(*mapping, degree, DataOut<2>::curved_inner_cells);
+
+        // deal.II groups vector components of 2D output in pairs, but the
+        // section's fields (displacement, position, traction) are 3-vectors:
+        // lift the patches into 3D space (points (X1, X2, 0)), where VTU
+        // vectors have three components and ParaView can warp the section
+        // by the displacement.
+        io::VTUPatches<2> vtu({{"displacement", 3}, {"position", 3}, {"traction_E3", 3},
+                               {"von_Mises_stress", 1}, {"mean_stress", 1}, {"growth_J", 1},
+                               {"elastic_J", 1}, {"energy_density", 1}},
+                              {"region"});
+        // The columns of DataOut's patches: the displacement, then the
+        // postprocessor's; its last one, the region, becomes integer cell data.
+        const unsigned int n_data = vtu.n_columns();
+        for (const auto &p2 : data_out.get_patches())
+          {
+            AssertThrow(p2.data.n_rows() >= n_data, ExcInternalError()); // fields as declared above
+            vtu.begin_patch(p2.n_subdivisions);
+            vtu.set_cell_value(0, static_cast<int>(std::lround(p2.data(n_data, 0))));
+            const unsigned int n_points = p2.data.n_cols();
+            const unsigned int np       = p2.n_subdivisions + 1;
+            for (unsigned int k = 0; k < n_points; ++k)
+              {
+                for (unsigned int r = 0; r < n_data; ++r)
+                  vtu.set_value(r, k, p2.data(r, k));
+                Point<2> x;
+                if (p2.points_are_available)
+                  x = Point<2>(p2.data(n_data + 1, k), p2.data(n_data + 2, k));
+                else
+                  {
+                    const double xi = double(k % np) / p2.n_subdivisions,
+                                 eta = double(k / np) / p2.n_subdivisions;
+                    x = (1 - xi) * (1 - eta) * p2.vertices[0] + xi * (1 - eta) * p2.vertices[1] +
+                        (1 - xi) * eta * p2.vertices[2] + xi * eta * p2.vertices[3];
+                  }
+                vtu.set_position(k, Point<3>(x[0], x[1], 0));
+              }
+            vtu.end_patch();
+          }
+        vtu.set_time(load_parameter);
+        pvd->add(t, vtu.write_output(output_directory, name, distributed_mesh));
+      }
+      pvd_rod->add(t, write_rod_piece("rod-" + Utilities::int_to_string(step, 4)));
+      // (a distributed mesh: every rank writes its piece, with or without faces of its own)
+      if (pvd_surface && (!surface_faces.empty() || distributed_mesh))
+        pvd_surface->add(t, write_surface_layers("surface-" + Utilities::int_to_string(step, 4), t));
+    }
+
+    std::string
+    CrossSectionProblem::write_surface_layers(const std::string &name, const double t) const
+    {
+      // The layers as polylines on the reference boundary (points (X1, X2, 0),
+      // with the displacement to warp by), with their growth and stress.
+      const auto         e = strains_of(solution);
+      const Tensor<1, 3> nu({e[0], e[1], e[2]}), kappa({e[3], e[4], e[5]});
+      const unsigned int p = degree;
+      std::vector<Point<1>> unit_points;
+      for (unsigned int i = 0; i <= p; ++i)
+        unit_points.emplace_back(double(i) / p);
+      const Quadrature<1> points(unit_points);
+      FEFaceValues<2>     ffv(*mapping, *fe, points,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_normal_vectors);
+      Vector<double>                   u(solution.begin(), solution.begin() + n_u());
+      std::vector<Vector<double>>      u_values(p + 1, Vector<double>(3));
+      std::vector<std::vector<Tensor<1, 2>>> u_grads(p + 1, std::vector<Tensor<1, 2>>(3));
+      io::VTUPatches<1> vtu({{"displacement", 3}, {"growth_T", 1}, {"growth_3", 1},
+                             {"stress_TT", 1}, {"stress_33", 1}, {"stress_T3", 1}, {"layer", 1}});
+      for (const auto &sf : surface_faces)
+        {
+          const auto &layer = surface_layers.layers()[sf.layer];
+          ffv.reinit(sf.cell, sf.face);
+          ffv.get_function_values(u, u_values);
+          ffv.get_function_gradients(u, u_grads);
+          vtu.begin_patch(p);
+          for (unsigned int k = 0; k <= p; ++k)
+            {
+              const Point<2> &   X  = ffv.quadrature_point(k);
+              const Tensor<1, 2> &N = ffv.normal_vector(k);
+              const Tensor<1, 2> T = kinematics::boundary_tangent(N);
+              Tensor<1, 3>       du_dS;
+              for (unsigned int c = 0; c < 3; ++c)
+                du_dS[c] = u_grads[k][c] * T;
+              const Tensor<1, 3> w  = kinematics::section_placement(
+                X, Tensor<1, 3>({u_values[k][0], u_values[k][1], u_values[k][2]}));
+              const auto         g  = layer.growth(X, t);
+              const auto         S  = layer.stress(
+                kinematics::surface_deformation_gradient(w, du_dS, T, nu, kappa), g, t);
+              vtu.set_values(k, {u_values[k][0], u_values[k][1], u_values[k][2], g[0], g[1], S[0],
+                                 S[1], S[2], double(sf.layer + 1)});
+              vtu.set_position(k, Point<3>(X[0], X[1], 0));
+            }
+          vtu.end_patch();
+        }
+      vtu.set_time(load_parameter);
+      return vtu.write_output(output_directory, name, distributed_mesh);
+    }
+
+    std::string
+    CrossSectionProblem::write_rod_piece(const std::string &name) const
+    {
+      // A short piece of the rod in 3D: the deformed section swept along the
+      // helix, x(X1, X2, X3) = r(X3) + R(X3) w(X1, X2).
+      const auto                e = strains_of(solution);
+      const kinematics::RodStrains strains(e);
+      const double              D = section_properties.diameter;
+      double                    L = rod_piece_length;
+      if (L == 0)
+        {
+          const double k = strains.kappa.norm();
+          L              = (k > 0) ? std::min(2 * M_PI / k, 10 * D) : 3 * D;
+        }
+      const unsigned int p  = degree;
+      const unsigned int np = p + 1;
+      std::vector<Point<2>> unit_points;
+      for (unsigned int j = 0; j < np; ++j)
+        for (unsigned int i = 0; i < np; ++i)
+          unit_points.emplace_back(double(i) / p, double(j) / p);
+      const Quadrature<2> points(unit_points);
+      FEValues<2>         fev(*mapping, *fe, points, update_values | update_quadrature_points);
+      Vector<double>              u(solution.begin(), solution.begin() + n_u());
+      std::vector<Vector<double>> u_values(unit_points.size(), Vector<double>(3));
+
+      io::VTUPatches<3>  vtu({{"arc_length", 1}, {"displacement", 3}}, {"region"});
+      const unsigned int n_slices = rod_piece_slices;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(u, u_values);
+          for (unsigned int s = 0; s < n_slices; ++s)
+            {
+              vtu.begin_patch(p);
+              vtu.set_cell_value(0, cell->material_id());
+              for (unsigned int k = 0; k < np; ++k)
+                {
+                  const double                     X3 = L * (s + double(k) / p) / n_slices;
+                  const kinematics::HelixPlacement helix(strains, X3);
+                  for (unsigned int ij = 0; ij < np * np; ++ij)
+                    {
+                      const Tensor<1, 3> w = kinematics::section_placement(
+                        fev.quadrature_point(ij),
+                        Tensor<1, 3>({u_values[ij][0], u_values[ij][1], u_values[ij][2]}));
+                      const unsigned int pt = k * np * np + ij;
+                      // Reference points (X1, X2, X3) of the straight rod; Warp
+                      // By Vector by the displacement gives the rod on its helix.
+                      const Point<2>     X  = fev.quadrature_point(ij);
+                      const Tensor<1, 3> x  = helix.place(w);
+                      vtu.set_values(pt, {X3, x[0] - X[0], x[1] - X[1], x[2] - X3});
+                      vtu.set_position(pt, Point<3>(X[0], X[1], X3));
+                    }
+                }
+              vtu.end_patch();
+            }
+        }
+      vtu.set_time(load_parameter);
+      return vtu.write_output(output_directory, name, distributed_mesh);
+    }
+  } // namespace rod
+} // namespace cosmo
