@@ -3,38 +3,19 @@
 // translation unit of part 3.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/manifold_lib.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <cosmo/solvers/run_start.h>
 #include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/assembly/assumed_shear.h>
 #include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
-#include <cosmo/geometry/mirror_dofs.h>
-#include <cosmo/io/resources.h>
-#include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/ranks.h>
-#include <cosmo/io/run_directory.h>
-#include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
-
-#include <cosmo/materials/growth_admissibility.h>
 
 #include "plate_rod_problem.h"
 
-#include <chrono>
-#include <fstream>
 #include <cmath>
-#include <iomanip>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace cosmo
@@ -255,21 +236,6 @@ namespace cosmo
       const double                           shear_scale;
       const bool                             jacobian;
     };
-
-    materials::RodNaturalState
-    PlateRodProblem::rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame,
-                                       const double t) const
-    {
-      materials::RodNaturalState n;
-      n.reference_strains = kinematics::rim_reference_strains(X, frame);
-      n.growth            = rod_growth_at(t);
-      // The model's factor f on the shear stiffnesses GA1, GA2 (the Kirchhoff
-      // penalty) as the weight sqrt(f) on the shear strains: K -> D K D, the
-      // couplings by sqrt(f), which keeps K positive definite.
-      for (const unsigned int k : {0u, 1u})
-        n.weights[k] = std::sqrt(model->shear_scale());
-      return n;
-    }
 
     // The transverse shear of one cell with assumed covariant strains (fev_full reinit on it):
     // the energy E = sum_q W_q(e(q)) JxW_q, e(q) = sum_k N_qk e_k, depends on the DoFs through

@@ -47,6 +47,21 @@ namespace cosmo
       dof_handler.clear();
     }
 
+    materials::RodNaturalState
+    PlateRodProblem::rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame,
+                                       const double t) const
+    {
+      materials::RodNaturalState n;
+      n.reference_strains = kinematics::rim_reference_strains(X, frame);
+      n.growth            = rod_growth_at(t);
+      // The model's factor f on the shear stiffnesses GA1, GA2 (the Kirchhoff
+      // penalty) as the weight sqrt(f) on the shear strains: K -> D K D, the
+      // couplings by sqrt(f), which keeps K positive definite.
+      for (const unsigned int k : {0u, 1u})
+        n.weights[k] = std::sqrt(model->shear_scale());
+      return n;
+    }
+
     kinematics::PlateGrowthAtPoint
     PlateRodProblem::growth_at(const Point<2> &X, const double t) const
     {
