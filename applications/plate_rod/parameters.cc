@@ -207,7 +207,7 @@ namespace cosmo
     } // namespace
 
     void
-    PlateRodProblem::declare_parameters(ParameterHandler &prm)
+    PlateRodParameters::declare_parameters(ParameterHandler &prm)
     {
       declare_plate_and_rim(prm);
       declare_model_and_mesh(prm);
@@ -215,7 +215,7 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::check_rim_stiffness(const std::string &entry, const std::string &text) const
+    PlateRodParameters::check_rim_stiffness(const std::string &entry, const std::string &text) const
     {
       // The rim against the plate: beyond 1e8 times the plate's own stiffness
       // the coupled Hessian loses every digit of the plate's contribution in
@@ -243,9 +243,8 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::parse_parameters(ParameterHandler &prm)
+    PlateRodParameters::parse_parameters(ParameterHandler &prm)
     {
-      residuals.clear();
       prm.enter_subsection("Plate");
       radius    = prm.get_double("Radius");
       thickness = prm.get_double("Thickness");
@@ -319,6 +318,12 @@ namespace cosmo
       sector_as_full_disc = prm.get_bool("Sector as full disc");
       prm.leave_subsection();
 
+    }
+    void
+    PlateRodProblem::parse_parameters(ParameterHandler &prm)
+    {
+      residuals.clear();
+      PlateRodParameters::parse_parameters(prm);
     }
   } // namespace plate_rod
 } // namespace cosmo

@@ -48,7 +48,7 @@ namespace cosmo
     }
 
     materials::RodNaturalState
-    PlateRodProblem::rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame,
+    PlateRodParameters::rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame,
                                        const double t) const
     {
       materials::RodNaturalState n;
@@ -63,7 +63,7 @@ namespace cosmo
     }
 
     kinematics::PlateGrowthAtPoint
-    PlateRodProblem::growth_at(const Point<2> &X, const double t) const
+    PlateRodParameters::growth_at(const Point<2> &X, const double t) const
     {
       auto g              = kinematics::PlateGrowthAtPoint::of(plate_growth.value(X, t));
       g.natural_curvature = plate_growth.natural_curvature(X, t);
@@ -71,7 +71,7 @@ namespace cosmo
     }
 
     double
-    PlateRodProblem::thickness_at(const Point<2> &X) const
+    PlateRodParameters::thickness_at(const Point<2> &X) const
     {
       return thickness_profile ? thickness * thickness_profile->value(Point<3>(X[0], X[1], X.norm())) :
                                  thickness;
@@ -241,7 +241,7 @@ namespace cosmo
     }
 
     double
-    PlateRodProblem::mismatch(const double t) const
+    PlateRodParameters::mismatch(const double t) const
     {
       // Uniform isotropic plate growth only: g_r = g_t independent of r.
       const auto g0 = plate_growth.factors(0, t);

@@ -25,6 +25,8 @@
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/materials/rod_growth.h>
 #include <cosmo/materials/rod_law.h>
+
+#include "parameters.h"
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/solvers/replicated_vector.h>
@@ -71,14 +73,18 @@ namespace cosmo
       double              constraint_violation = 0; ///< PlateRodProblem::constraint_violation
     };
 
-    class PlateRodProblem : public solvers::BifurcationProblem
+    /**
+     * The problem on the parameters it was parsed from (parameters.h): the
+     * run's configuration is a PlateRodParameters, parsed once; the problem
+     * adds the discretization, the state and the run's records.
+     */
+    class PlateRodProblem : public solvers::BifurcationProblem, public PlateRodParameters
     {
     public:
       PlateRodProblem();
       ~PlateRodProblem() override;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// PlateRodParameters::parse_parameters, the residual cache cleared.
       void
       parse_parameters(ParameterHandler &prm);
 
@@ -173,29 +179,6 @@ namespace cosmo
       /// Diagnostics of a state (energies, deflections, rim Fourier amplitudes).
       PlateRodState
       analyse(const Vector<double> &U, unsigned int n_modes = PlateRodProblem::n_modes) const;
-      /// The closed-form Kirchhoff thresholds for this plate and rim (small strain).
-      analysis::PlateRod
-      closed_form_setting() const;
-      /// The rim's law ('Rim rod / Law').
-      const materials::RodLaw &
-      rod_law() const
-      {
-        return *rim_law;
-      }
-      /// Where the rim's strains are measured from at X on the rim at load t:
-      /// the discrete ring's reference strains, the rim's growth and, as
-      /// weights on the shears, the square root of the model's shear factor
-      /// (the Kirchhoff penalty: GA1, GA2 times the factor).
-      materials::RodNaturalState
-      rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame, double t) const;
-      /// The closed-form thresholds for this problem (summary.json's "closed_form"), the first
-      /// of them (NaN if the growth is not uniform and isotropic) and a text for the log.
-      io::JSON
-      closed_forms(double &first_mismatch, std::string &text) const;
-      /// Mismatch Delta = plate growth strain - rod growth strain at load parameter t (uniform
-      /// isotropic plate growth only; NaN otherwise).
-      double
-      mismatch(double t) const;
 
       const Vector<double> &
       current_solution() const
@@ -280,46 +263,6 @@ namespace cosmo
       }
 
     private:
-      // Parameters
-      double                         radius = 1, thickness = 0.01;
-      /// 'Plate / Thickness profile': h(X) = thickness f(x, y, r); null when f = 1.
-      std::shared_ptr<FunctionParser<3>> thickness_profile;
-      std::string                        thickness_profile_text = "1";
-      std::string                    domain = "full disc";
-      unsigned int                   sector_n = 2; ///< sector angle pi / sector_n
-      std::string                    sector_mesh = "stretched"; ///< 'Mesh / Sector mesh'
-      bool                           sector_as_full_disc = false; ///< plate VTUs: the sector's 2 n images
-      unsigned int                   refinements = 3, degree = 2;
-      /// 'Mesh / Distributed': the mesh divided over the MPI ranks (doc/parallel-runs.md).
-      bool                           distributed_mesh = false;
-      /// The registered plate model named by 'Model / Model' (kinematics/plate_model.h).
-      std::unique_ptr<kinematics::PlateModel> model;
-      /// 'Model / Shear integration' (assumed strain: assembly/assumed_shear.h).
-      enum class ShearIntegration
-      {
-        assumed_strain, ///< tied on the edges and by interior moments (the default)
-        interior_tying, ///< tied at interior Gauss points (MITC9 of Bucalem and Bathe)
-        stabilized,
-        reduced
-      };
-      ShearIntegration               shear_integration = ShearIntegration::assumed_strain;
-      /// 'Model / Deformation = in-plane only': u3, theta1, theta2 held at 0.
-      bool                           in_plane_only       = false;
-      double                         shear_stabilization = 0.03;
-      /// 'Plate material / Law'.
-      std::shared_ptr<const materials::PlateLaw> plate_law;
-      materials::PlateGrowth         plate_growth;
-      /// 'Rim rod / Law' and 'Rim rod / Growth kind'.
-      std::shared_ptr<const materials::RodLaw>       rim_law;
-      std::shared_ptr<const materials::RodGrowthLaw> rim_growth;
-      /// The rim law's stiffnesses in the natural state (the closed forms use
-      /// them) and its largest coupling K_ab / sqrt(K_aa K_bb).
-      std::array<double, 6>          rod_stiffness{{0.1, 0.1, 0.1, 1e-6, 1e-6, 1e-6}};
-      double                         stiffness_coupling = 0;
-      /// 'Rim rod / Stiffness file' (empty: not given).
-      std::string                    stiffness_file;
-      double                         path_start = 0;
-      bool                           stop_at_first_event = false;
 
     public:
       /**
@@ -346,9 +289,6 @@ namespace cosmo
       make_reflection();
       void
       locate_from_guess();
-      solvers::NewtonSettings        newton_settings;
-      solvers::ArclengthSettings     arclength_settings;
-      std::string                    output_directory;
       bool                           write_output = false;
       double                         load_parameter = 0;
 
@@ -421,30 +361,10 @@ namespace cosmo
                   const DoFHandler<2>::active_cell_iterator &cell,
                   Scratch &                                    sc,
                   assembly::CellContribution &                 c) const;
-      kinematics::PlateGrowthAtPoint
-      growth_at(const Point<2> &X, double t) const;
-      /// The plate's thickness at X ('Thickness' times 'Thickness profile').
-      double
-      thickness_at(const Point<2> &X) const;
-      /// The plate law with the thickness at X.
-      materials::PlateLawAt
-      plate_law_at(const Point<2> &X) const
-      {
-        return materials::PlateLawAt(*plate_law, thickness_at(X));
-      }
       /// io::InputError unless the thickness profile and the natural curvature are finite at
       /// every quadrature point of the mesh and the thickness positive there.
       void
       check_plate_fields() const;
-      double
-      rod_growth_at(double t) const
-      {
-        return rim_growth->factor(t);
-      }
-      /// io::InputError (entry 'Rim rod / Stiffnesses' = text) unless every rim stiffness is
-      /// positive and at most 1e8 times the plate's.
-      void
-      check_rim_stiffness(const std::string &entry, const std::string &text) const;
       void
       say(const std::string &line) const
       {

@@ -149,7 +149,7 @@ namespace cosmo
     }
 
     analysis::PlateRod
-    PlateRodProblem::closed_form_setting() const
+    PlateRodParameters::closed_form_setting() const
     {
       analysis::PlateRod p;
       p.radius    = radius;
@@ -326,7 +326,7 @@ namespace cosmo
     }
 
     io::JSON
-    PlateRodProblem::closed_forms(double &first_mismatch, std::string &text) const
+    PlateRodParameters::closed_forms(double &first_mismatch, std::string &text) const
     {
       io::JSON     closed = io::JSON::object();
       const double Delta1 = mismatch(1.);
