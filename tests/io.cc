@@ -1,11 +1,14 @@
 // Unit tests of the parameter sweep (io/parameter_sweep.h): values from a
 // list or a range, the template substitution (a negative value is
 // parenthesized inside an expression, not in a list or alone), and the
-// checks that the swept entry exists and accepts every value; the JSON
-// reader against the writer (io/output.h).
+// checks that the swept entry exists and accepts every value; a study
+// point's parameters as a copy (io/parameter_copy.h) that leaves the
+// study's handler as it was; the JSON reader against the writer
+// (io/output.h).
 #include <deal.II/base/parameter_handler.h>
 
 #include <cosmo/io/output.h>
+#include <cosmo/io/parameter_copy.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_record.h>
@@ -62,6 +65,64 @@ namespace
 int
 main()
 {
+  {
+    // A study's point k: a copy of the study's parameters, its value set in
+    // the copy (prepare_point), the study's handler unchanged.
+    ParameterHandler prm;
+    auto declare_all = [](ParameterHandler &p) {
+      declare(p);
+      p.enter_subsection("Output");
+      p.declare_entry("Output directory", "out", Patterns::Anything());
+      p.leave_subsection();
+    };
+    cosmo::io::declare_application_parameters(prm, declare_all);
+    const std::string text = "subsection Parameter sweep\n set Entry = Material 1/Growth factor\n"
+                             " set Values = 0.5, 0.75\n set Template = 1 + {}*x\nend\n"
+                             "subsection Material 1\n set Poisson's ratio = 0.25\nend\n"
+                             "set Strains = 0, 0, 1.5, 0, 0.125, 0\nsubsection Output\n set Output directory = study\nend\n";
+    prm.parse_input_from_string(text);
+    cosmo::io::ParameterSweep s;
+    s.parse_parameters(prm);
+    const auto copy = cosmo::io::copy_parameters(prm, declare_all);
+    bool same = true;
+    copy->enter_subsection("Material 1");
+    prm.enter_subsection("Material 1");
+    same &= copy->get("Poisson's ratio") == prm.get("Poisson's ratio");
+    same &= copy->get("Growth factor") == prm.get("Growth factor");
+    copy->leave_subsection();
+    prm.leave_subsection();
+    same &= copy->get("Strains") == prm.get("Strains");
+    copy->enter_subsection("Output");
+    same &= copy->get("Output directory") == "study";
+    copy->leave_subsection();
+    check("copy: every value of the original", same);
+    s.prepare_point(*copy, 1, "study/point-01");
+    copy->enter_subsection("Material 1");
+    prm.enter_subsection("Material 1");
+    check("copy: the point's value set in the copy", copy->get("Growth factor") == "1 + 0.75*x");
+    check("copy: the original's value unchanged", prm.get("Growth factor") == "1");
+    copy->leave_subsection();
+    prm.leave_subsection();
+    copy->enter_subsection("Output");
+    prm.enter_subsection("Output");
+    check("copy: the original's output directory unchanged",
+          prm.get("Output directory") == "study" && copy->get("Output directory") == "study/point-01");
+    copy->leave_subsection();
+    prm.leave_subsection();
+    prm.enter_subsection("Parameter sweep");
+    check("copy: the original's sweep unchanged", prm.get("Entry") == "Material 1/Growth factor");
+    prm.leave_subsection();
+    bool refused = false;
+    try
+      {
+        cosmo::io::copy_parameters(prm, {});
+      }
+    catch (std::logic_error &)
+      {
+        refused = true;
+      }
+    check("copy: no declarations is refused", refused);
+  }
   {
     ParameterHandler prm;
     const auto       s = sweep("subsection Parameter sweep\n set Entry = Material 1/Growth factor\n"

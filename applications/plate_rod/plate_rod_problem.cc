@@ -428,6 +428,7 @@ namespace cosmo
           study.make_run = [](ParameterHandler &p) {
             return std::make_unique<solvers::CriticalPointRunOf<PlateRodProblem>>(p);
           };
+          study.declare_parameters = &PlateRodProblem::declare_parameters;
           return solvers::run_critical_point_study(prm, options, sweep, study);
         }
       PlateRodProblem problem;

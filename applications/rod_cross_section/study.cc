@@ -6,6 +6,8 @@
 #include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
 
+#include <cosmo/io/parameter_copy.h>
+
 #include "cross_section_problem.h"
 
 #include <sstream>
@@ -142,6 +144,7 @@ namespace cosmo
           study.make_run        = [](ParameterHandler &p) {
             return std::make_unique<solvers::CriticalPointRunOf<CrossSectionProblem>>(p);
           };
+          study.declare_parameters = &CrossSectionProblem::declare_parameters;
           return solvers::run_critical_point_study(prm, options, sweep, study);
         }
 
@@ -163,8 +166,10 @@ namespace cosmo
              ", sweep of '" + sweep.entry() + "' over " + std::to_string(sweep.size()) + " values");
       loop.run(*log, [&](const unsigned int k) {
         const std::string directory = io::ParameterSweep::point_directory(loop.shared_directory(), k);
-        sweep.prepare_point(prm, k, directory);
-        return sweep_point(prm, options, sweep, k, directory);
+        // Each value on its own copy of the parameters: the handler stays as given.
+        const auto point = io::copy_parameters(prm, &CrossSectionProblem::declare_parameters);
+        sweep.prepare_point(*point, k, directory);
+        return sweep_point(*point, options, sweep, k, directory);
       });
     }
   } // namespace rod

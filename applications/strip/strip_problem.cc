@@ -403,6 +403,7 @@ namespace cosmo
       study.make_run = [](ParameterHandler &p) {
         return std::make_unique<solvers::CriticalPointRunOf<StripProblem>>(p);
       };
+      study.declare_parameters = &StripProblem::declare_parameters;
       solvers::run_critical_point_study(prm, options, sweep, study);
     }
   } // namespace strip

@@ -47,6 +47,32 @@ namespace cosmo
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      /// The text of the entry at `path` ("Section/.../Entry"); empty if there is none
+      /// (apply() then names the entry in its error).
+      std::string
+      entry_text(ParameterHandler &prm, const std::string &path)
+      {
+        const auto   parts = Utilities::split_string_list(path, '/');
+        unsigned int depth = 0;
+        std::string  text;
+        try
+          {
+            for (unsigned int i = 0; i + 1 < parts.size(); ++i, ++depth)
+              prm.enter_subsection(parts[i]);
+            if (!parts.empty())
+              text = prm.get(parts.back());
+          }
+        catch (ExceptionBase &)
+          {
+          }
+        for (; depth > 0; --depth)
+          prm.leave_subsection();
+        return text;
+      }
+    } // namespace
+
     void
     ParameterSweep::set_entry(ParameterHandler & prm,
                               const std::string &path,
@@ -108,10 +134,13 @@ namespace cosmo
         throw InputError("Parameter sweep", "Template", template_text,
                          "a text containing '{}' where the value goes (or empty)");
       // Fail now, not after the first points have run: the entry must exist
-      // and accept every value. (This leaves the last value in `prm`; each
-      // point sets its own before it is parsed.)
+      // and accept every value. The entry's own text is put back: the study
+      // runs each value on a copy of the parameters (io/parameter_copy.h),
+      // and the handler stays as the file gave it.
+      const std::string original = entry_text(prm, entry_path);
       for (unsigned int k = 0; k < values.size(); ++k)
         apply(prm, k);
+      set_entry(prm, entry_path, original, "Parameter sweep", "Entry");
     }
 
     std::string

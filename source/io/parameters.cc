@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/parameter_copy.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/postprocessors.h>
 #include <cosmo/io/shared_libraries.h>
@@ -421,9 +422,7 @@ namespace cosmo
       RunOptions                     options;
       // The library's entries of every application, then its own.
       auto declare_all = [&declare](ParameterHandler &prm) {
-        declare_shared_libraries_entry(prm);
-        declare(prm);
-        Postprocessors::declare_parameters(prm);
+        declare_application_parameters(prm, declare);
       };
       try
         {

@@ -7,6 +7,7 @@
 #include <cosmo/solvers/critical_curve.h>
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/io/point_loop.h>
+#include <cosmo/io/parameter_copy.h>
 #include <cosmo/solvers/critical_point_study.h>
 
 #include <algorithm>
@@ -75,7 +76,28 @@ namespace cosmo
         return Vector<double>(v.begin(), v.end());
       }
 
-      /// A point's run writes into `directory`; its parameters.prm reproduces it alone.
+      /**
+       * The parameters of value k: a copy of the study's (io/parameter_copy.h)
+       * with the swept entry set, the output into `directory` (its
+       * parameters.prm reproduces the point alone) and, on the library's path
+       * sections, each path stopped at its first critical point. The study's
+       * own handler is never written to.
+       */
+      std::unique_ptr<ParameterHandler>
+      point_parameters(const ParameterHandler &  prm,
+                       const io::ParameterSweep &sweep,
+                       const CriticalPointStudy &study,
+                       const unsigned int        k,
+                       const std::string &       directory)
+      {
+        auto point = io::copy_parameters(prm, study.declare_parameters);
+        if (study.arclength_sections)
+          io::ParameterSweep::set_entry(*point, "Arclength continuation/Stop at first event",
+                                        "true", "Arclength continuation", "Stop at first event");
+        sweep.prepare_point(*point, k, directory);
+        return point;
+      }
+
       /// The critical load of the new mode continued back to an earlier value.
       struct ContinuedBack
       {
@@ -93,8 +115,8 @@ namespace cosmo
                     const io::RunOptions &    options,
                     const CriticalPointStudy &study)
       {
-        sweep.prepare_point(prm, k, directory);
-        auto run = study.make_run(prm);
+        const auto point = point_parameters(prm, sweep, study, k, directory);
+        auto       run   = study.make_run(*point);
         run->start_from_critical_point(g);
         ContinuedBack back;
         // (an auxiliary run: the point's postprocessors are the point's own)
@@ -102,7 +124,7 @@ namespace cosmo
         auxiliary.postprocessors.reset();
         try
           {
-            run->run(auxiliary, prm);
+            run->run(auxiliary, *point);
           }
         catch (io::RunFailure &e)
           {
@@ -219,6 +241,8 @@ namespace cosmo
 
       private:
         ParameterHandler &                              prm;
+        /// The running value's own parameters (point_parameters).
+        std::unique_ptr<ParameterHandler>               point_prm;
         const io::ParameterSweep &                      sweep;
         const CriticalPointStudy &                      study;
         std::function<void(const std::string &)>        log;
@@ -259,7 +283,7 @@ namespace cosmo
       std::unique_ptr<CriticalPointRun>
       StudyPoints::solve(const unsigned int k, Found &f)
       {
-        auto          run = study.make_run(prm);
+        auto          run = study.make_run(*point_prm);
         CriticalGuess g;
         unsigned int  order = 0;
         if (curve && predictor.predict(sweep.value(k), g.U, g.t, g.mode, &order))
@@ -268,7 +292,7 @@ namespace cosmo
             run->start_from_critical_point(g);
             try
               {
-                run->run(quiet, prm);
+                run->run(quiet, *point_prm);
                 f.converged = 1;
                 f.continued = 1;
               }
@@ -280,13 +304,13 @@ namespace cosmo
                   if (x.event.located_by_newton && other_negative_modes(x.event) > 0)
                     f.previous_mode_t = x.event.lambda;
                 f.factorizations += run->factorizations();
-                run = study.make_run(prm);
+                run = study.make_run(*point_prm);
               }
           }
         if (f.continued == 0)
           try
             {
-              run->run(quiet, prm);
+              run->run(quiet, *point_prm);
               f.converged = 1;
             }
           catch (io::RunFailure &e)
@@ -347,8 +371,8 @@ namespace cosmo
         io::PointLoop::Point p;
         try
           {
-            sweep.prepare_point(prm, k, directory);
-            quiet          = io::PointLoop::point_options(options, prm);
+            point_prm      = point_parameters(prm, sweep, study, k, directory);
+            quiet          = io::PointLoop::point_options(options, *point_prm);
             const auto run = solve(k, f);
             io::PointLoop::finish_point(quiet, directory);
             if (const EventRecord *e = first_critical_point(run->located_events()))
@@ -470,8 +494,7 @@ namespace cosmo
                                  "arclength in a study of critical points (section Parameter "
                                  "sweep): each value's path is followed to its first critical "
                                  "point");
-          io::ParameterSweep::set_entry(prm, "Arclength continuation/Stop at first event", "true",
-                                        "Arclength continuation", "Stop at first event");
+          // (each value's copy of the parameters stops at the first event: point_parameters)
         }
       const bool              curve = sweep.critical_curve();
       io::PointLoop::Description d;

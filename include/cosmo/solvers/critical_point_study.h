@@ -172,6 +172,9 @@ namespace cosmo
       bool arclength_sections = true;
       /// A run of the problem that prm describes (parsed; InputError if refused).
       std::function<std::unique_ptr<CriticalPointRun>(ParameterHandler &)> make_run;
+      /// The application's own declarations (its declare_parameters): each
+      /// value runs on a copy of the study's parameters (io/parameter_copy.h).
+      std::function<void(ParameterHandler &)> declare_parameters;
     };
 
     /**
