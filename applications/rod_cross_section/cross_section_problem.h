@@ -23,6 +23,8 @@
 #include <cosmo/materials/surface_layer.h>
 #include <cosmo/solvers/continuation.h>
 
+#include "parameters.h"
+
 #include <array>
 #include <limits>
 #include <memory>
@@ -46,14 +48,18 @@ namespace cosmo
 
     using CrossSectionState = assembly::ReducedRodState;
 
-    class CrossSectionProblem : public assembly::ReducedRodProblem
+    /**
+     * The problem on the parameters it was parsed from (parameters.h), with
+     * the rod strains of its reduced-rod base; it adds the discretization,
+     * the state and the run's records.
+     */
+    class CrossSectionProblem : public assembly::ReducedRodProblem, public CrossSectionParameters
     {
     public:
       CrossSectionProblem();
       ~CrossSectionProblem() override;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// CrossSectionParameters::parse_parameters, then the rod strains and the table.
       void
       parse_parameters(ParameterHandler &prm);
 
@@ -143,32 +149,16 @@ namespace cosmo
       classify_critical_mode(const Vector<double> &mode) const override;
 
     private:
-      // Parameters
-      geometry::CrossSectionGeometry geometry;
-      materials::MaterialLibrary     materials;
-      materials::SurfaceLayerLibrary surface_layers;
-      unsigned int                   degree = 2;
-      solvers::NewtonSettings        newton_settings;
-      solvers::ContinuationSettings  continuation_settings;
-      solvers::ArclengthSettings     arclength_settings;
-      std::string                    linear_solver_name;
-      unsigned int                   coarse_start_levels = 0;
-      std::string                    parameters_text; // the run's parameters, for a coarser copy
+      /// The run writes its files (run()); programmatic use does not.
+      bool                           write_output = false;
       bool                           quiet = false;   // a coarser copy says nothing
       std::string                    coarse_start_report; // Newton iterations per coarser mesh
-      std::string                    output_directory;
-      bool                           write_output = false;
-      std::string                    vtu_frequency;
-      double                         rod_piece_length = 0; // 0: automatic
-      unsigned int                   rod_piece_slices = 24;
-      bool                           stiffness_every_step = true;
       assembly::ConstitutiveTable    table;
 
       // Discretization (with 'Finite element / Distributed' the mesh is divided
       // over the ranks: each assembles its own cells, the bordered system's A
       // is distributed by rows, the drivers' vectors are whole on every rank;
       // doc/parallel-runs.md)
-      bool                                    distributed_mesh = false;
       geometry::MeshOfRanks<2>                triangulation;
       std::unique_ptr<FESystem<2>>            fe;
       std::unique_ptr<MappingQ<2>>            mapping;

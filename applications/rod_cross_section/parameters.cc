@@ -17,7 +17,7 @@ namespace cosmo
   namespace rod
   {
     void
-    CrossSectionProblem::declare_parameters(ParameterHandler &prm)
+    CrossSectionParameters::declare_parameters(ParameterHandler &prm)
     {
       geometry::CrossSectionGeometry::declare_parameters(prm);
       materials::MaterialLibrary::declare_parameters(prm);
@@ -90,6 +90,15 @@ namespace cosmo
     void
     CrossSectionProblem::parse_parameters(ParameterHandler &prm)
     {
+      CrossSectionParameters::parse_parameters(prm);
+      parse_strain_parameters(prm);
+      table.parse_parameters(prm);
+      table.check_axes(strain_is_free);
+    }
+
+    void
+    CrossSectionParameters::parse_parameters(ParameterHandler &prm)
+    {
       geometry.parse_parameters(prm);
       materials.parse_parameters(prm);
       surface_layers.parse_parameters(prm);
@@ -98,8 +107,6 @@ namespace cosmo
       degree           = prm.get_integer("Polynomial degree");
       distributed_mesh = prm.get_bool("Distributed");
       prm.leave_subsection();
-
-      parse_strain_parameters(prm);
 
       newton_settings.parse_parameters(prm);
       prm.enter_subsection("Nonlinear solver");
@@ -118,8 +125,6 @@ namespace cosmo
       prm.leave_subsection();
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
-      table.parse_parameters(prm);
-      table.check_axes(strain_is_free);
 
       prm.enter_subsection("Output");
       output_directory     = prm.get("Output directory");

@@ -16,7 +16,7 @@ namespace cosmo
   namespace strip
   {
     void
-    StripProblem::declare_parameters(ParameterHandler &prm)
+    StripParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Strip");
       prm.declare_entry("Width", "1", Patterns::Double(0), "Width w of the strip (length unit).");
@@ -51,6 +51,15 @@ namespace cosmo
     void
     StripProblem::parse_parameters(ParameterHandler &prm)
     {
+      StripParameters::parse_parameters(prm);
+      parse_strain_parameters(prm);
+      table.parse_parameters(prm);
+      table.check_axes(strain_is_free);
+    }
+
+    void
+    StripParameters::parse_parameters(ParameterHandler &prm)
+    {
       prm.enter_subsection("Strip");
       strip_width   = prm.get_double("Width");
       thickness     = prm.get_double("Thickness");
@@ -68,12 +77,9 @@ namespace cosmo
                                " (a strip is a plate: h << w)");
       prm.leave_subsection();
       plate_law = materials::create_plate_law(prm);
-      parse_strain_parameters(prm);
       newton_settings.parse_parameters(prm);
       continuation_settings.parse_parameters(prm);
       arclength_settings.parse_parameters(prm);
-      table.parse_parameters(prm);
-      table.check_axes(strain_is_free);
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       prm.leave_subsection();

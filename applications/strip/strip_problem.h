@@ -14,6 +14,8 @@
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/solvers/continuation.h>
 
+#include "parameters.h"
+
 #include <memory>
 #include <string>
 
@@ -42,14 +44,18 @@ namespace cosmo
   {
     using namespace dealii;
 
-    class StripProblem : public assembly::ReducedRodProblem
+    /**
+     * The problem on the parameters it was parsed from (parameters.h), with
+     * the rod strains of its reduced-rod base; it adds the discretization,
+     * the state and the run's records.
+     */
+    class StripProblem : public assembly::ReducedRodProblem, public StripParameters
     {
     public:
       StripProblem();
       ~StripProblem() override;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// StripParameters::parse_parameters, then the rod strains and the table.
       void
       parse_parameters(ParameterHandler &prm);
 
@@ -140,19 +146,8 @@ namespace cosmo
       table_description(const ParameterHandler &prm) const;
 
     private:
-      // Parameters
-      double                        strip_width = 1, thickness = 0.01;
-      unsigned int                  n_cells = 40, degree = 2;
-      std::string                   mesh_kind = "graded";
-      bool                          reduced_shear = true;
-      /// The plate law of the strip ('Plate material / Law').
-      std::unique_ptr<materials::PlateLaw> plate_law;
-      solvers::NewtonSettings       newton_settings;
-      solvers::ContinuationSettings continuation_settings;
-      solvers::ArclengthSettings    arclength_settings;
       assembly::ConstitutiveTable   table;
-      std::string                   linear_solver_name = "MUMPS";
-      std::string                   output_directory;
+      /// The run writes its files (run()); programmatic use does not.
       bool                          write_output = false;
 
       // Discretization
