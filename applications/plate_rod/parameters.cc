@@ -263,9 +263,12 @@ namespace cosmo
       rim_law    = materials::create_rod_law(prm, "Rim rod");
       rim_growth = materials::create_rod_growth(prm, "Rim rod");
       stiffness_coupling = diagonal_and_coupling(rim_law->natural_stiffness(), rod_stiffness);
-      stiffness_file = prm.get("Stiffness file");
-      // The stiffnesses in use are the file's if one is given: its entry is named.
-      if (stiffness_file.empty())
+      // The stiffnesses in use are named by the quadratic law's entry they
+      // come from (the file's if one is given), by 'Law' for another law.
+      stiffness_file = prm.get("Law") == "quadratic" ? prm.get("Stiffness file") : "";
+      if (prm.get("Law") != "quadratic")
+        check_rim_stiffness("Law", prm.get("Law"));
+      else if (stiffness_file.empty())
         check_rim_stiffness("Stiffnesses", prm.get("Stiffnesses"));
       else
         check_rim_stiffness("Stiffness file", stiffness_file);

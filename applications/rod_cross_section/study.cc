@@ -148,6 +148,9 @@ namespace cosmo
           return solvers::run_critical_point_study(prm, options, sweep, study);
         }
 
+      // Each value runs on a copy of the parameters: one now, before the
+      // directory is opened, so that a copy that cannot be made ends here.
+      (void)io::copy_parameters(prm, &CrossSectionProblem::declare_parameters);
       io::PointLoop::Description d;
       d.application     = "rod_cross_section";
       d.checkpoint_kind = "rod_cross_section sweep";

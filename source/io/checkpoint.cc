@@ -14,7 +14,10 @@ namespace cosmo
     namespace
     {
       const std::string magic          = "cosmo checkpoint\n";
-      const std::uint64_t format_version = 1;
+      // 2: the study's parameters are the file's (each point runs on a copy),
+      // and plate_rod and strip have the law entries (Plate material / Law,
+      // Rim rod / Law, Growth kind): a checkpoint of version 1 is refused.
+      const std::uint64_t format_version = 2;
 
       std::string
       trim(const std::string &s)

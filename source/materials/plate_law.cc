@@ -13,8 +13,8 @@ namespace cosmo
     PlateStrains<double>
     PlateLawAt::resultants(const PlateStrains<double> &s) const
     {
-      std::array<double, plate_measures>                  dW, sum{};
-      std::array<double, plate_measures * plate_measures> ddW;
+      std::array<double, plate_measures>                  dW{}, sum{};
+      std::array<double, plate_measures * plate_measures> ddW{};
       double                                              W = 0;
       for (const PlatePart part : {PlatePart::membrane_and_bending, PlatePart::transverse_shear})
         {

@@ -13,8 +13,8 @@ namespace cosmo
     RodLaw::natural_stiffness() const
     {
       double                 W = 0;
-      std::array<double, 6>  dW;
-      std::array<double, 36> K;
+      std::array<double, 6>  dW{};
+      std::array<double, 36> K{};
       energy_derivatives(std::array<double, 6>{}, true, W, dW, K);
       return K;
     }
@@ -23,8 +23,8 @@ namespace cosmo
     grown_rod_resultants(const RodLaw &law, const std::array<double, 6> &strains, const RodNaturalState &n)
     {
       double                 W = 0;
-      std::array<double, 6>  dW;
-      std::array<double, 36> ddW;
+      std::array<double, 6>  dW{};
+      std::array<double, 36> ddW{};
       law.energy_derivatives(elastic_rod_strains(strains, n), false, W, dW, ddW);
       // d(g psi)/dnu_k = g psi_k w_k / g, d(g psi)/dkappa_k = g psi_k w_k / g.
       for (unsigned int k = 0; k < 6; ++k)

@@ -496,6 +496,10 @@ namespace cosmo
                                  "point");
           // (each value's copy of the parameters stops at the first event: point_parameters)
         }
+      // Each value runs on a copy of the parameters (point_parameters): one
+      // now, before the directory is opened, so that a copy that cannot be
+      // made ends the study here, not at its first point.
+      (void)io::copy_parameters(prm, study.declare_parameters);
       const bool              curve = sweep.critical_curve();
       io::PointLoop::Description d;
       d.application     = study.application;

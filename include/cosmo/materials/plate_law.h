@@ -161,7 +161,8 @@ namespace cosmo
        * The part's energy W per unit area at the measures s for thickness h,
        * its gradient dW (in the order of measures_of) and, with_hessian,
        * its Hessian ddW (8 x 8, row-major; zero outside the part's
-       * measures).
+       * measures). Every entry is written, and ddW is symmetric (the
+       * Taylor form reads its upper triangle, the chain rule all of it).
        */
       virtual void
       energy_derivatives(const std::array<double, plate_measures> &s,
@@ -268,8 +269,8 @@ namespace cosmo
       energy(const PlateStrains<Number> &strains, const PlatePart part) const
       {
         const auto                                    x = measures_of(strains);
-        std::array<double, plate_measures>            x0, dW;
-        std::array<double, plate_measures * plate_measures> ddW;
+        std::array<double, plate_measures>            x0, dW{};
+        std::array<double, plate_measures * plate_measures> ddW{};
         for (unsigned int k = 0; k < plate_measures; ++k)
           x0[k] = value_of(x[k]);
         double W = 0;
@@ -282,7 +283,7 @@ namespace cosmo
           {
             derivatives(x0, part, true, W, dW, ddW);
             std::array<Number, plate_measures> dx;
-            Number                             w = 0. * x[0] + W;
+            Number                             w(W); // no derivatives
             for (unsigned int k = 0; k < plate_measures; ++k)
               {
                 dx[k] = x[k] - x0[k];

@@ -47,7 +47,8 @@ namespace cosmo
       /// Reads its entries in `section` (entered; named in its errors).
       virtual void
       parse_parameters(ParameterHandler &prm, const std::string &section) = 0;
-      /// psi(e), its gradient dW and, with_hessian, its Hessian ddW (6 x 6, row-major).
+      /// psi(e), its gradient dW and, with_hessian, its Hessian ddW (6 x 6,
+      /// row-major, symmetric, every entry written).
       virtual void
       energy_derivatives(const std::array<double, 6> &e,
                          bool                         with_hessian,
@@ -68,7 +69,9 @@ namespace cosmo
      * Where a rod's strains are measured from at a point: the reference
      * strains (nu0, kappa0), the axial growth g and a weight on each
      * elastic strain (psi(w e): the stiffness K -> D K D with D = diag(w),
-     * the Kirchhoff penalty on the shears).
+     * the Kirchhoff penalty on the shears). For a quadratic law that is
+     * the stiffness times w^2; a nonlinear law is evaluated at the weighted
+     * strain, which is a penalty of the same stiffness at small strain only.
      */
     struct RodNaturalState
     {
@@ -99,8 +102,8 @@ namespace cosmo
     grown_rod_energy(const RodLaw &law, const std::array<Number, 6> &strains, const RodNaturalState &n)
     {
       const auto             e = elastic_rod_strains(strains, n);
-      std::array<double, 6>  e0, dW;
-      std::array<double, 36> ddW;
+      std::array<double, 6>  e0, dW{};
+      std::array<double, 36> ddW{};
       for (unsigned int k = 0; k < 6; ++k)
         e0[k] = value_of(e[k]);
       double W = 0;
@@ -113,7 +116,7 @@ namespace cosmo
         {
           law.energy_derivatives(e0, true, W, dW, ddW);
           std::array<Number, 6> de;
-          Number                w = 0. * e[0] + W;
+          Number                w(W); // no derivatives
           for (unsigned int k = 0; k < 6; ++k)
             {
               de[k] = e[k] - e0[k];

@@ -68,8 +68,8 @@ namespace cosmo
       };
 
       /// 'Stiffness file': io::InputError unless it is a symmetric
-      /// positive definite 6x6 (non-positive diagonals are left to
-      /// the law's positivity check, which names them).
+      /// positive definite 6x6 (non-positive diagonals are left to the
+      /// application's check of the stiffnesses, which names them).
       FileStiffness
       read_stiffness_file(const std::string &file, const std::string &section)
       {
@@ -96,7 +96,8 @@ namespace cosmo
                                "a symmetric 6x6 stiffness (max |K_ab - K_ba| = " +
                                  io::format_number(asymmetry) + ")");
         // Positive definite: Cholesky (a stable rim needs it; a failure names the pivot).
-        // (Non-positive diagonals are left to the law's positivity check, which names them.)
+        // (Non-positive diagonals are left to the application's check of
+        // the stiffnesses, plate_rod's check_rim_stiffness, which names them.)
         std::array<std::array<double, 6>, 6> L{};
         const bool positive_diagonal =
           std::all_of(rim.diagonal.begin(), rim.diagonal.end(), [](double k) { return k > 0; });
