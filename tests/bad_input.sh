@@ -15,7 +15,9 @@ subsection Cross-section
 end
 subsection Output
   set Output directory = out
-  set VTU output = none
+end
+subsection Postprocess
+  set List of postprocessors = steps table
 end
 PRM
 }

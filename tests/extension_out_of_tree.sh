@@ -94,7 +94,7 @@ echo "'volumetric' is a value of 'Growth kind' with the plugin library only"
 
 cat > "$dir/postprocess.txt" <<EOP
 subsection Postprocess
-  set List of postprocessors = quantity history, unknowns
+  set List of postprocessors = steps table, fields, quantity history, unknowns
   subsection quantity history
     set Quantities = energy, m3, kappa3, n_negative_eigenvalues
   end
@@ -142,7 +142,7 @@ done
 cat "$src/parameter_files/rod_cross_section/studies/curvature_vs_differential_growth.prm" \
   - > "$dir/study.prm" <<'EOP'
 subsection Postprocess
-  set List of postprocessors = unknowns
+  set List of postprocessors = steps table, unknowns
 end
 EOP
 sed -i -e "s|^\( *set Output directory *=\).*|\1 $dir/study|" "$dir/study.prm"

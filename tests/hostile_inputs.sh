@@ -51,7 +51,7 @@ PY
 
 echo "2. Growth laws: one admissibility check, on every level of the mesh and along the ramp"
 section_prm() {
-  printf 'subsection Cross-section\n set Shape = circle\n set Global refinements = 1\nend\nsubsection Material 1\n set Growth kind = %s\n set Growth factor = %s\nend\nsubsection Output\n set Output directory = %s\n set VTU output = none\nend\n' "$1" "$2" "$3"
+  printf 'subsection Cross-section\n set Shape = circle\n set Global refinements = 1\nend\nsubsection Material 1\n set Growth kind = %s\n set Growth factor = %s\nend\nsubsection Output\n set Output directory = %s\nend\nsubsection Postprocess\n set List of postprocessors = steps table\nend\n' "$1" "$2" "$3"
 }
 exe=$section
 section_prm isotropic '1 + 0.1/(x*x+y*y)' singular > singular.prm
@@ -82,7 +82,7 @@ if timeout 300 "$strip" small_table.prm > small_table.txt 2>&1 && grep -q "9 poi
 else bad "small table: exit $? or no estimate"; tail -5 small_table.txt; fi
 
 echo "4. A cut-back is not an error: KINSOL's messages go to the log, not to stderr"
-printf 'subsection Material 1\n set Growth kind = isotropic\n set Growth factor = 1 + 0.9*x + 0.9*y^2\nend\nsubsection Rod strains\n set Mode = natural shape\nend\nsubsection Continuation\n set Initial step = 1\n set Maximum step = 1\nend\nsubsection Output\n set Output directory = cutback\n set VTU output = none\nend\n' > cutback.prm
+printf 'subsection Material 1\n set Growth kind = isotropic\n set Growth factor = 1 + 0.9*x + 0.9*y^2\nend\nsubsection Rod strains\n set Mode = natural shape\nend\nsubsection Continuation\n set Initial step = 1\n set Maximum step = 1\nend\nsubsection Output\n set Output directory = cutback\nend\nsubsection Postprocess\n set List of postprocessors = steps table\nend\n' > cutback.prm
 timeout 300 "$section" cutback.prm > cutback.out 2> cutback.err; status=$?
 if [ $status -eq 0 ] && ! [ -s cutback.err ] && grep -q "cutting back" cutback/log.txt && grep -q "KINSOL said" cutback/log.txt; then
   ok "converged after $(grep -c 'cutting back' cutback/log.txt) cut-backs, stderr empty, KINSOL's words in log.txt with their step"

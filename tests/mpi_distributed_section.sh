@@ -34,7 +34,7 @@ distributed='subsection Finite element\n  set Distributed = true\nend\n'
 # name, source, sed script, extra lines (the runs start in the repository: the gmsh files' paths)
 make_prm() { sed -e "s|^\( *set Output directory *=\).*|\1 $dir/$1|" -e "$3" "$2" > $1.prm; printf "$4" >> $1.prm; }
 disc='s|^\( *set Global refinements *=\).*|\1 3|
-s|VTU output = none|VTU output = final|'
+s|List of postprocessors = steps table$|List of postprocessors = steps table, fields\n  subsection fields\n    set Steps between outputs = 0\n  end|'
 for r in serial np1 np2; do
   extra=""; [ $r != serial ] && extra="$distributed"
   make_prm disc_$r "$here/../benchmarks/growing_disc.prm" "$disc" "$extra"

@@ -81,7 +81,9 @@ subsection Finite element
 end
 subsection Output
   set Output directory = channel
-  set VTU output = none
+end
+subsection Postprocess
+  set List of postprocessors = steps table
 end
 PRM
 sed -e 's/set Distributed = true/set Distributed = false/' -e 's/= channel$/= channel_serial/' channel.prm > channel_serial.prm

@@ -59,7 +59,7 @@ def run(exe, example, name, edits):
 LAGRANGE = {68, 70, 72}
 dirs = {
     "rod_cross_section": run(rod, "parameter_files/rod_cross_section/bilayer.prm", "bilayer",
-                             [(r"set VTU output *=.*", "set VTU output = every step")]),
+                             [(r"set Steps between outputs *=.*", "set Steps between outputs = 1")]),
     "strip": run(strip, "parameter_files/strip/twist_buckling.prm", "twist",
                  [(r"set Number of cells *=.*", "set Number of cells = 8"),
                   (r"set Maximum number of steps *=.*", "set Maximum number of steps = 12")]),

@@ -303,7 +303,7 @@ namespace cosmo
       report.t          = record.event.lambda;
       report.n_negative = record.event.n_negative_after;
       set_load_parameter(report.t);
-      converged_step(solution, report);
+      solvers::report_converged_step(*this, solution, report);
     }
 
     void
@@ -339,23 +339,19 @@ namespace cosmo
     void
     PlateRodProblem::add_steps_columns()
     {
+      steps_columns.clear();
       for (const auto &c : {"step", "branch", "t", "mismatch", "plate_growth_rim", "rod_growth",
-                            "newton_iterations"})
-        steps_table.add_column(c);
-      steps_table.add_column("energy");
-      steps_table.add_column("plate_energy");
-      steps_table.add_column("rod_energy");
-      steps_table.add_column("dome_height");
-      steps_table.add_column("w_range");
-      steps_table.add_column("max_inplane_displacement");
-      steps_table.add_column("rim_radial_strain");
+                            "newton_iterations", "energy", "plate_energy", "rod_energy",
+                            "dome_height", "w_range", "max_inplane_displacement",
+                            "rim_radial_strain"})
+        steps_columns.emplace_back(c, "");
       // The mode numbers the domain admits: 0, n, ..., 8 n on a sector pi/n.
       for (unsigned int k = 0; k < n_modes; ++k)
-        steps_table.add_column("rim_w_" + std::to_string(k * sector_step()));
+        steps_columns.emplace_back("rim_w_" + std::to_string(k * sector_step()), "");
       for (unsigned int k = 0; k < n_modes; ++k)
-        steps_table.add_column("rim_ur_" + std::to_string(k * sector_step()));
-      steps_table.add_column("n_negative_eigenvalues");
-      steps_table.add_column("smallest_eigenvalue");
+        steps_columns.emplace_back("rim_ur_" + std::to_string(k * sector_step()), "");
+      steps_columns.emplace_back("n_negative_eigenvalues", "");
+      steps_columns.emplace_back("smallest_eigenvalue", "");
     }
 
     void
@@ -363,8 +359,6 @@ namespace cosmo
     {
       write_output = true;
       solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
-      plate_series = std::make_unique<io::PathCollections>(output_directory, "plate");
-      rim_series   = std::make_unique<io::PathCollections>(output_directory, "rim");
       setup_system();
       say_discretization();
 

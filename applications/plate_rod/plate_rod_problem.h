@@ -137,12 +137,20 @@ namespace cosmo
       }
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
-      /// steps.csv's last row, for the postprocessors (io/postprocessors.h).
-      std::vector<std::pair<std::string, double>>
-      state_quantities() const override
+      /// What the run's postprocessors show of a state (io/postprocessors.h):
+      /// steps.csv's columns and row, the plate's and the rim's VTU files.
+      std::vector<std::pair<std::string, std::string>>
+      quantity_columns() const override
       {
-        return steps_table.last_row();
+        return steps_columns;
       }
+      std::vector<double>
+      quantity_values() const override
+      {
+        return steps_row;
+      }
+      std::vector<std::pair<std::string, std::string>>
+      write_fields(const std::string &tag) const override;
       int
       n_negative_eigenvalues() override
       {
@@ -169,7 +177,7 @@ namespace cosmo
       /// What the run has written and found so far, for its checkpoint (io/checkpoint.h).
       void
       save_progress(io::CheckpointWriter &w) const;
-      /// Restore it (and rewrite steps.csv and the PVD files as they were then).
+      /// Restore it (its postprocessors rewrite steps.csv and the PVD files as they were then).
       void
       load_progress(io::CheckpointReader &r);
       /// The total energy, plate and rim, at U and the current load parameter (at most one
@@ -321,12 +329,12 @@ namespace cosmo
       // Run records
       std::vector<PlateRodState>        states;
       std::vector<solvers::EventRecord> located_events;
-      io::CSVTable                      steps_table;
+      /// steps.csv's columns (name, unit) and the last converged state's row.
+      std::vector<std::pair<std::string, std::string>> steps_columns;
+      std::vector<double>               steps_row;
       io::RunRecord                     record{"plate_rod"};
-      /// plate.pvd, rim.pvd (path order) and plate-branch-K.pvd, rim-branch-K.pvd (time = t).
-      std::unique_ptr<io::PathCollections> plate_series, rim_series;
-      io::PhaseTimer                    timer;
-      unsigned int                      output_index = 0;
+      /// (mutable: the const output writers time themselves)
+      mutable io::PhaseTimer            timer;
 
       /// The run's discretization, and the rim's stiffness file, in the log.
       void

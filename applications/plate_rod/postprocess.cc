@@ -208,9 +208,6 @@ namespace cosmo
            << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue
            << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       say(line.str());
-      if (!write_output)
-        return;
-      io::PhaseTimer::Scope scope(timer, "output");
       std::vector<double> row = {double(report.step), double(report.branch), report.t,
                                  mismatch(report.t), plate_growth.factors(radius, report.t)[1],
                                  rod_growth_at(report.t), double(report.newton_iterations),
@@ -220,11 +217,14 @@ namespace cosmo
       row.insert(row.end(), s.rim_ur_amplitude.begin(), s.rim_ur_amplitude.end());
       row.push_back(s.n_negative);
       row.push_back(s.smallest_eigenvalue);
-      steps_table.add_row(row);
-      steps_table.write(output_directory + "/steps.csv");
-      const std::string tag = Utilities::int_to_string(output_index++, 4);
-      plate_series->add(report.step, report.branch, report.t, write_plate("plate-" + tag, U));
-      rim_series->add(report.step, report.branch, report.t, write_rim("rim-" + tag, U));
+      steps_row = std::move(row);
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    PlateRodProblem::write_fields(const std::string &tag) const
+    {
+      io::PhaseTimer::Scope scope(timer, "output");
+      return {{"plate", write_plate("plate-" + tag, solution)}, {"rim", write_rim("rim-" + tag, solution)}};
     }
 
     void
@@ -246,10 +246,8 @@ namespace cosmo
       w.put(std::uint64_t(located_events.size()));
       for (const auto &e : located_events)
         e.save(w);
-      steps_table.save(w);
-      w.put(output_index);
-      plate_series->save(w);
-      rim_series->save(w);
+      w.put_vector(steps_row);
+      save_postprocessors(w);
       io::ranks::put_mesh_ranks(w, distributed_mesh);
 
     }
@@ -273,10 +271,8 @@ namespace cosmo
       located_events.resize(r.get_size());
       for (auto &e : located_events)
         e.load(r);
-      steps_table.load(r);
-      output_index = r.get_unsigned();
-      plate_series->load(r);
-      rim_series->load(r);
+      steps_row = r.get_vector();
+      load_postprocessors(r);
       io::ranks::check_mesh_ranks(r, distributed_mesh, "Mesh", "Distributed");
       if (distributed_mesh)
         io::ranks::check_checkpoints_agree(states.size(), "their last step");
@@ -285,8 +281,6 @@ namespace cosmo
         throw std::runtime_error("the checkpoint holds more than this run reads");
       if (solution.size() != dof_handler.n_dofs())
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
-      // The files as they were at the checkpoint (a killed run may have written past it).
-      steps_table.write(output_directory + "/steps.csv");
       std::ostringstream m;
       m << "  going on after step " << states.size() - 1 << " at t = " << std::setprecision(10)
         << load_parameter << " (" << located_events.size() << " events located before)";

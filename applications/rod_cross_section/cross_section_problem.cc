@@ -192,15 +192,31 @@ namespace cosmo
     }
 
 
+    std::vector<std::pair<std::string, std::string>>
+    CrossSectionProblem::quantity_columns() const
+    {
+      std::vector<std::pair<std::string, std::string>> c;
+      for (const auto &n : {"step", "branch", "t", "newton_iterations", "residual", "cutbacks"})
+        c.emplace_back(n, "");
+      c.emplace_back("energy", "E L^2");
+      for (const auto &s : kinematics::strain_names)
+        c.emplace_back(s, s[0] == 'n' ? "1" : "1/L");
+      for (unsigned int k = 0; k < 6; ++k)
+        c.emplace_back(kinematics::resultant_names[k], k < 3 ? "E L^2" : "E L^3");
+      for (unsigned int k = 1; k <= 6; ++k)
+        c.emplace_back("multiplier" + std::to_string(k), "");
+      for (const auto &s : kinematics::strain_names)
+        c.emplace_back("K_" + s + "_" + s, "");
+      c.emplace_back("n_negative_eigenvalues", "");
+      c.emplace_back("min_elastic_J", "");
+      return c;
+    }
+
     void
     CrossSectionProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
       write_output   = true;
       solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
-      pvd = std::make_unique<io::PVDSeries>(output_directory + "/solution.pvd");
-      pvd_rod = std::make_unique<io::PVDSeries>(output_directory + "/rod.pvd");
-      if (!surface_faces.empty() || !surface_layers.layers().empty())
-        pvd_surface = std::make_unique<io::PVDSeries>(output_directory + "/surface.pvd");
       {
         io::PhaseTimer::Scope scope(timer, "setup");
         setup_system();
@@ -236,21 +252,6 @@ namespace cosmo
       for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
         say("  " + surface_layers.layers()[l].description() + " (arc length " +
             io::format_significant(surface_length[l]) + ")");
-
-      steps_table = io::CSVTable();
-      for (const auto &c : {"step", "branch", "t", "newton_iterations", "residual", "cutbacks"})
-        steps_table.add_column(c);
-      steps_table.add_column("energy", "E L^2");
-      for (const auto &s : kinematics::strain_names)
-        steps_table.add_column(s, s[0] == 'n' ? "1" : "1/L");
-      for (unsigned int k = 0; k < 6; ++k)
-        steps_table.add_column(kinematics::resultant_names[k], k < 3 ? "E L^2" : "E L^3");
-      for (unsigned int k = 1; k <= 6; ++k)
-        steps_table.add_column("multiplier" + std::to_string(k));
-      for (const auto &s : kinematics::strain_names)
-        steps_table.add_column("K_" + s + "_" + s);
-      steps_table.add_column("n_negative_eigenvalues");
-      steps_table.add_column("min_elastic_J");
 
       if (table.enabled())
         {

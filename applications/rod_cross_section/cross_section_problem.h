@@ -119,17 +119,23 @@ namespace cosmo
       // ContinuationProblem
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
-      /// steps.csv's last row, for the postprocessors (io/postprocessors.h).
-      std::vector<std::pair<std::string, double>>
-      state_quantities() const override
+      /// What the run's postprocessors show of a state (io/postprocessors.h):
+      /// steps.csv's columns and row, the section's, the rod piece's and the
+      /// surface layers' VTU files.
+      std::vector<std::pair<std::string, std::string>>
+      quantity_columns() const override;
+      std::vector<double>
+      quantity_values() const override
       {
-        return steps_table.last_row();
+        return steps_row;
       }
+      std::vector<std::pair<std::string, std::string>>
+      write_fields(const std::string &tag) const override;
       /// Nested iteration: the first step solved on the section refined 'Coarse-mesh start'
       /// times less (recursively), interpolated to this mesh.
       bool
       first_step_guess(double t, Vector<double> &U) override;
-      /// The path so far, steps.csv's rows and the PVD lists, for a checkpoint.
+      /// The path so far and the postprocessors' state, for a checkpoint.
       void
       save_progress(io::CheckpointWriter &w) const override;
       void
@@ -182,8 +188,8 @@ namespace cosmo
 
       // Output and bookkeeping
       io::RunRecord                    record{"rod_cross_section"};
-      std::unique_ptr<io::PVDSeries>   pvd, pvd_rod, pvd_surface;
-      io::CSVTable                     steps_table;
+      /// steps.csv's row of the last converged state.
+      std::vector<double>              steps_row;
       std::vector<io::JSON>            step_records;
       CrossSectionState                last_state;
 
@@ -230,8 +236,10 @@ namespace cosmo
                               FullMatrix<double> &         border_block,
                               FieldIntegrals &             out);
 
-      void
-      write_vtu(unsigned int step, double t);
+      /// solution-`tag`.vtu: the deformed section with its stress and growth fields
+      /// (as write_rod_piece).
+      std::string
+      write_section(const std::string &tag) const;
       /// The rod piece `name`.vtu (or `name`.pvtu of a distributed mesh's pieces); returns
       /// the file name written.
       std::string

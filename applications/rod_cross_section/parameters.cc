@@ -70,9 +70,6 @@ namespace cosmo
       prm.declare_entry("Output directory", "output/rod_cross_section", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, the VTU "
                         "series and log.txt (created if needed).");
-      prm.declare_entry("VTU output", "every step", Patterns::Selection("every step|final|none"),
-                        "When to write the deformed section (solution-NNNN.vtu, "
-                        "solution.pvd) and the 3D rod piece (rod-NNNN.vtu, rod.pvd).");
       prm.declare_entry("Rod piece length", "0", Patterns::Double(0),
                         "Length (reference arc length) of the 3D piece of rod swept along "
                         "the helix; 0: one helical turn, at most 10 section diameters.");
@@ -128,7 +125,6 @@ namespace cosmo
 
       prm.enter_subsection("Output");
       output_directory     = prm.get("Output directory");
-      vtu_frequency        = prm.get("VTU output");
       rod_piece_length     = prm.get_double("Rod piece length");
       rod_piece_slices     = prm.get_integer("Rod piece slices");
       stiffness_every_step = prm.get_bool("Stiffness at every step");

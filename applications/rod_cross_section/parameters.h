@@ -45,7 +45,6 @@ namespace cosmo
       unsigned int                   coarse_start_levels = 0;
       std::string                    parameters_text; // the run's parameters, for a coarser copy
       std::string                    output_directory;
-      std::string                    vtu_frequency;
       double                         rod_piece_length = 0; // 0: automatic
       unsigned int                   rod_piece_slices = 24;
       bool                           stiffness_every_step = true;

@@ -23,12 +23,8 @@ namespace cosmo
     {
       ReducedRodProblem::save_progress(w);
       w.put_vector(solution);
-      steps_table.save(w);
-      pvd->save(w);
-      pvd_rod->save(w);
-      w.put(pvd_surface != nullptr);
-      if (pvd_surface)
-        pvd_surface->save(w);
+      w.put_vector(steps_row);
+      save_postprocessors(w);
       io::ranks::put_mesh_ranks(w, distributed_mesh);
     }
 
@@ -37,13 +33,8 @@ namespace cosmo
     {
       ReducedRodProblem::load_progress(r);
       r.get_vector(solution);
-      steps_table.load(r);
-      pvd->load(r);
-      pvd_rod->load(r);
-      if (r.get_bool() != (pvd_surface != nullptr))
-        throw std::runtime_error("the checkpoint's output differs from this run's");
-      if (pvd_surface)
-        pvd_surface->load(r);
+      steps_row = r.get_vector();
+      load_postprocessors(r);
       io::ranks::check_mesh_ranks(r, distributed_mesh, "Finite element", "Distributed");
       if (distributed_mesh)
         io::ranks::check_checkpoints_agree(visited.size(), "their last step");
@@ -51,7 +42,6 @@ namespace cosmo
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
       // The state reported last (the summary's, should no step follow).
       last_state = current_state();
-      steps_table.write(output_directory + "/steps.csv");
       say("  going on after step " + std::to_string(visited.size() - 1) + " at t = " +
           io::format_number(load_parameter));
     }
@@ -95,9 +85,6 @@ namespace cosmo
       line << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       say(line.str());
 
-      if (!write_output)
-        return;
-      io::PhaseTimer::Scope scope(timer, "output");
       std::vector<double> row = {double(report.step), double(report.branch), report.t,
                                  double(report.newton_iterations), report.residual_norm,
                                  double(report.cutbacks), s.energy};
@@ -108,10 +95,7 @@ namespace cosmo
         row.push_back(with_stiffness ? s.stiffness(k, k) : NAN);
       row.push_back(s.n_negative);
       row.push_back(s.min_elastic_J);
-      steps_table.add_row(row);
-      steps_table.write(output_directory + "/steps.csv");
-      if (vtu_frequency == "every step" || (vtu_frequency == "final" && report.final))
-        write_vtu(report.step, report.t);
+      steps_row = std::move(row);
     }
 
     void

@@ -104,10 +104,23 @@ namespace cosmo
       };
     } // namespace
 
-    void
-    CrossSectionProblem::write_vtu(const unsigned int step, const double t)
+    std::vector<std::pair<std::string, std::string>>
+    CrossSectionProblem::write_fields(const std::string &tag) const
     {
-      const std::string name = "solution-" + Utilities::int_to_string(step, 4);
+      io::PhaseTimer::Scope scope(timer, "output");
+      std::vector<std::pair<std::string, std::string>> files = {
+        {"solution", write_section(tag)}, {"rod", write_rod_piece("rod-" + tag)}};
+      // (a distributed mesh: every rank writes its piece, with or without faces of its own)
+      if (!surface_layers.layers().empty() && (!surface_faces.empty() || distributed_mesh))
+        files.emplace_back("surface", write_surface_layers("surface-" + tag, load_parameter));
+      return files;
+    }
+
+    std::string
+    CrossSectionProblem::write_section(const std::string &tag) const
+    {
+      const std::string name = "solution-" + tag;
+      const double      t    = load_parameter;
       {
         Vector<double> u(solution.begin(), solution.begin() + n_u());
         SectionPostprocessor post(materials, strains_of(solution), t);
@@ -158,12 +171,8 @@ namespace cosmo
             vtu.end_patch();
           }
         vtu.set_time(load_parameter);
-        pvd->add(t, vtu.write_output(output_directory, name, distributed_mesh));
+        return vtu.write_output(output_directory, name, distributed_mesh);
       }
-      pvd_rod->add(t, write_rod_piece("rod-" + Utilities::int_to_string(step, 4)));
-      // (a distributed mesh: every rank writes its piece, with or without faces of its own)
-      if (pvd_surface && (!surface_faces.empty() || distributed_mesh))
-        pvd_surface->add(t, write_surface_layers("surface-" + Utilities::int_to_string(step, 4), t));
     }
 
     std::string

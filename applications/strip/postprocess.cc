@@ -31,13 +31,8 @@ namespace cosmo
       ReducedRodProblem::save_progress(w);
       w.put_vector(solution);
       w.put_vector(event_parities);
-      steps_table.save(w);
-      w.put(section_series != nullptr);
-      if (section_series)
-        {
-          section_series->save(w);
-          strip_series->save(w);
-        }
+      w.put_vector(steps_row);
+      save_postprocessors(w);
     }
 
     void
@@ -46,19 +41,12 @@ namespace cosmo
       ReducedRodProblem::load_progress(r);
       r.get_vector(solution);
       event_parities = r.get_vector();
-      steps_table.load(r);
-      if (r.get_bool())
-        {
-          section_series = std::make_unique<io::PathCollections>(output_directory, "section");
-          strip_series   = std::make_unique<io::PathCollections>(output_directory, "strip");
-          section_series->load(r);
-          strip_series->load(r);
-        }
+      steps_row = r.get_vector();
+      load_postprocessors(r);
       if (solution.size() != n_unknowns())
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
       // The state reported last (the summary's, should no step follow).
       last_state = condensed_state(solution);
-      steps_table.write(output_directory + "/steps.csv");
       say("  going on after step " + std::to_string(visited.size() - 1) + " at t = " +
           io::format_number(load_parameter));
     }
@@ -85,8 +73,6 @@ namespace cosmo
         line << (k ? ", " : "") << std::setprecision(6) << s.strains[k];
       line << ")" << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       say(line.str());
-      if (!write_output)
-        return;
       std::vector<double> row = {double(report.step), double(report.branch), report.t,
                                  double(report.newton_iterations), report.residual_norm, s.energy};
       row.insert(row.end(), s.strains.begin(), s.strains.end());
@@ -104,18 +90,15 @@ namespace cosmo
             row.push_back(value[1]);
           }
       }
-      steps_table.add_row(row);
-      steps_table.write(output_directory + "/steps.csv");
-      const std::string tag = Utilities::int_to_string(report.step, 4);
+      steps_row = std::move(row);
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    StripProblem::write_fields(const std::string &tag) const
+    {
       write_section(output_directory + "/section-" + tag + ".vtu", solution);
       write_piece(output_directory + "/strip-" + tag + ".vtu");
-      if (!section_series)
-        {
-          section_series = std::make_unique<io::PathCollections>(output_directory, "section");
-          strip_series   = std::make_unique<io::PathCollections>(output_directory, "strip");
-        }
-      section_series->add(report.step, report.branch, report.t, "section-" + tag + ".vtu");
-      strip_series->add(report.step, report.branch, report.t, "strip-" + tag + ".vtu");
+      return {{"section", "section-" + tag + ".vtu"}, {"strip", "strip-" + tag + ".vtu"}};
     }
 
     void

@@ -297,6 +297,29 @@ namespace cosmo
       return d;
     }
 
+    std::vector<std::pair<std::string, std::string>>
+    StripProblem::quantity_columns() const
+    {
+      std::vector<std::pair<std::string, std::string>> c;
+      for (const auto &n : {"step", "branch", "t", "newton_iterations", "residual"})
+        c.emplace_back(n, "");
+      c.emplace_back("energy", "E w h");
+      for (const auto &s : kinematics::strain_names)
+        c.emplace_back(s, s[0] == 'n' ? "1" : "1/L");
+      for (unsigned int k = 0; k < 6; ++k)
+        c.emplace_back(kinematics::resultant_names[k], k < 3 ? "E w h" : "E w h L");
+      for (const auto &s : kinematics::strain_names)
+        c.emplace_back("K_" + s + "_" + s, "");
+      c.emplace_back("n_negative_eigenvalues", "");
+      c.emplace_back("smallest_eigenvalue", "");
+      // The section's out-of-plane deflection at both edges and the centre:
+      // mirror-image branches (+phi, -phi of a pitchfork) have the same strains
+      // and energy, these tell them apart.
+      for (const auto &n : {"u2_left_edge", "u2_centre", "u2_right_edge"})
+        c.emplace_back(n, "L");
+      return c;
+    }
+
     void
     StripProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
@@ -309,23 +332,6 @@ namespace cosmo
            << degree << ", " << n_field << " field DoFs; E = " << plate_law->young()
            << ", Poisson " << plate_law->poisson() << ", shear " << (reduced_shear ? "reduced" : "full");
       say(info.str());
-      for (const auto &c : {"step", "branch", "t", "newton_iterations", "residual"})
-        steps_table.add_column(c);
-      steps_table.add_column("energy", "E w h");
-      for (const auto &s : kinematics::strain_names)
-        steps_table.add_column(s, s[0] == 'n' ? "1" : "1/L");
-      for (unsigned int k = 0; k < 6; ++k)
-        steps_table.add_column(kinematics::resultant_names[k], k < 3 ? "E w h" : "E w h L");
-      for (const auto &s : kinematics::strain_names)
-        steps_table.add_column("K_" + s + "_" + s);
-      steps_table.add_column("n_negative_eigenvalues");
-      steps_table.add_column("smallest_eigenvalue");
-      // The section's out-of-plane deflection at both edges and the centre:
-      // mirror-image branches (+phi, -phi of a pitchfork) have the same strains
-      // and energy, these tell them apart.
-      for (const auto &c : {"u2_left_edge", "u2_centre", "u2_right_edge"})
-        steps_table.add_column(c, "L");
-
       record.attempt([&]() {
         if (table.enabled())
           {

@@ -88,18 +88,23 @@ namespace cosmo
 
       void
       converged_step(const Vector<double> &U, const solvers::StepReport &report) override;
-      /// steps.csv's last row, for the postprocessors (io/postprocessors.h).
-      std::vector<std::pair<std::string, double>>
-      state_quantities() const override
+      /// What the run's postprocessors show of a state (io/postprocessors.h):
+      /// steps.csv's columns and row, the section's and the strip's VTU files.
+      std::vector<std::pair<std::string, std::string>>
+      quantity_columns() const override;
+      std::vector<double>
+      quantity_values() const override
       {
-        return steps_table.last_row();
+        return steps_row;
       }
+      std::vector<std::pair<std::string, std::string>>
+      write_fields(const std::string &tag) const override;
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
       /// This run's checkpoints (written into its directory; resumed with --resume).
       void
       connect_run_checkpoints();
-      /// The path so far and steps.csv's rows, for a checkpoint.
+      /// The path so far and the postprocessors' state, for a checkpoint.
       void
       save_progress(io::CheckpointWriter &w) const override;
       void
@@ -159,9 +164,8 @@ namespace cosmo
       assembly::ReducedRodState    last_state;
       /// mode_parity() of each located branch point's mode (NaN for folds).
       std::vector<double>          event_parities;
-      io::CSVTable                 steps_table;
-      /// section.pvd, strip.pvd (path order) and section-branch-K.pvd, strip-branch-K.pvd (time = t).
-      std::unique_ptr<io::PathCollections> section_series, strip_series;
+      /// steps.csv's row of the last converged state.
+      std::vector<double>          steps_row;
       io::RunRecord                record{"strip"};
 
       void

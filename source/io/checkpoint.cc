@@ -17,7 +17,9 @@ namespace cosmo
       // 2: the study's parameters are the file's (each point runs on a copy),
       // and plate_rod and strip have the law entries (Plate material / Law,
       // Rim rod / Law, Growth kind): a checkpoint of version 1 is refused.
-      const std::uint64_t format_version = 2;
+      // 3: steps.csv and the VTU collections are postprocessors' state
+      // (io/postprocessors.h), saved by name after the application's.
+      const std::uint64_t format_version = 3;
 
       std::string
       trim(const std::string &s)

@@ -26,9 +26,12 @@ namespace cosmo
     {
       using R = plugins::Registry<Postprocessor>;
       prm.enter_subsection("Postprocess");
-      prm.declare_entry("List of postprocessors", "", Patterns::MultipleSelection(R::names()),
+      prm.declare_entry("List of postprocessors", "steps table, fields",
+                        Patterns::MultipleSelection(R::names()),
                         "Postprocessors called at every converged state and located event, "
-                        "separated by ','; each has its entries in its own subsection. " +
+                        "separated by ','; each has its entries in its own subsection. "
+                        "'steps table' and 'fields' are the run's steps.csv and VTU files: "
+                        "leave one out to have none. " +
                           R::documentation());
       for (const auto &e : R::entries())
         if (e.second.declare_parameters)
@@ -85,6 +88,31 @@ namespace cosmo
     {
       for (auto &s : selected)
         s.second->finish(output_directory);
+    }
+
+    void
+    Postprocessors::save(CheckpointWriter &w) const
+    {
+      w.put(std::uint64_t(selected.size()));
+      for (const auto &s : selected)
+        {
+          w.put(s.first);
+          s.second->save(w);
+        }
+    }
+
+    void
+    Postprocessors::load(CheckpointReader &r, const std::string &output_directory)
+    {
+      // The checkpoint holds the run's parameters, so the same list.
+      if (r.get_size() != selected.size())
+        throw std::runtime_error("the checkpoint's postprocessors differ from this run's");
+      for (auto &s : selected)
+        {
+          if (r.get_string() != s.first)
+            throw std::runtime_error("the checkpoint's postprocessors differ from this run's");
+          s.second->load(r, output_directory);
+        }
     }
   } // namespace io
 } // namespace cosmo

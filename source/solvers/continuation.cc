@@ -15,9 +15,36 @@ namespace cosmo
       if (postprocessors == nullptr || postprocessors->empty())
         return;
       state.output_directory = postprocessor_directory;
+      state.source           = this;
       if (state.kind == io::PostprocessedState::Kind::converged_state)
-        state.quantities = state_quantities();
+        {
+          const auto columns = quantity_columns();
+          const auto values  = quantity_values();
+          for (unsigned int k = 0; k < columns.size() && k < values.size(); ++k)
+            state.quantities.emplace_back(columns[k].first, values[k]);
+        }
       postprocessors->execute(state);
+    }
+
+    void
+    ContinuationProblem::save_postprocessors(io::CheckpointWriter &w) const
+    {
+      if (postprocessors == nullptr)
+        w.put(std::uint64_t(0));
+      else
+        postprocessors->save(w);
+    }
+
+    void
+    ContinuationProblem::load_postprocessors(io::CheckpointReader &r)
+    {
+      if (postprocessors == nullptr)
+        {
+          if (r.get_size() != 0)
+            throw std::runtime_error("the checkpoint's postprocessors differ from this run's");
+        }
+      else
+        postprocessors->load(r, postprocessor_directory);
     }
 
     void
@@ -29,6 +56,7 @@ namespace cosmo
       s.branch     = report.branch;
       s.t          = report.t;
       s.n_negative = report.n_negative;
+      s.final      = report.final;
       s.unknowns   = &U;
       problem.postprocess(s);
     }

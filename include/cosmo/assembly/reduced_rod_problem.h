@@ -382,7 +382,7 @@ namespace cosmo
       std::array<double, 6>           target_resultants{};
       std::string                     mode = "natural shape";
       std::vector<std::array<double, 6>> waypoints; ///< 'Path' (empty: straight ramp)
-      io::PhaseTimer                  timer;
+      mutable io::PhaseTimer          timer; ///< (mutable: the const output writers time themselves)
       unsigned int                    total_newton_iterations = 0;
       /// condensed_state() calls: the converged states (path steps, table points) of a run.
       unsigned int                    n_condensed_states = 0;

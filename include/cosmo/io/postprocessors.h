@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cosmo/base/plugins.h>
+#include <cosmo/io/checkpoint.h>
 
 #include <memory>
 #include <string>
@@ -14,7 +15,11 @@
 /**
  * Postprocessors (as ASPECT's Postprocess::Manager): registered plugins that
  * the continuation drivers call at every converged state and every located
- * event, and once at the end of the run. Each is one file with
+ * event, and once at the end of the run. The run's own outputs are
+ * postprocessors too: 'steps table' (steps.csv) and 'fields' (the VTU files
+ * and their PVD collections), built in and selected by default, asking the
+ * application what it shows of a state through io::StateSource. Each is one
+ * file with
  * COSMO_REGISTER_PLUGIN(io::Postprocessor, ...), in the library, in an
  * application or in a user's shared library loaded through 'Additional
  * shared libraries' (io/shared_libraries.h). The run's file selects them in
@@ -26,6 +31,41 @@ namespace cosmo
   namespace io
   {
     using namespace dealii;
+
+    /**
+     * What an application shows of its converged states, for the built-in
+     * postprocessors: steps.csv's columns and the last state's values, and
+     * its fields written as VTU files. Every continuation problem is one
+     * (solvers::ContinuationProblem); the defaults show nothing.
+     */
+    class StateSource
+    {
+    public:
+      virtual ~StateSource() = default;
+      /// steps.csv's columns: name and unit ("" for none), in order.
+      virtual std::vector<std::pair<std::string, std::string>>
+      quantity_columns() const
+      {
+        return {};
+      }
+      /// The last converged state's value of each column.
+      virtual std::vector<double>
+      quantity_values() const
+      {
+        return {};
+      }
+      /**
+       * Writes the last converged state's fields into the run's directory,
+       * one file per kind ("plate", "rim", ...) named `kind-tag.vtu` (or
+       * .pvtu on a distributed mesh: collective then), and returns each kind
+       * with the file name written.
+       */
+      virtual std::vector<std::pair<std::string, std::string>>
+      write_fields(const std::string & /*tag*/) const
+      {
+        return {};
+      }
+    };
 
     /// What a postprocessor sees of a state.
     struct PostprocessedState
@@ -50,6 +90,10 @@ namespace cosmo
       std::vector<std::pair<std::string, double>> quantities;
       /// The run's output directory (each rank has its own under mpirun).
       std::string output_directory;
+      /// The last state of the run's path (its target, a branch's end).
+      bool final = false;
+      /// The application, for what it shows of the state (null: nothing).
+      const StateSource *source = nullptr;
 
       /// The quantity named `name`, NaN if the application has none so named.
       double
@@ -70,6 +114,14 @@ namespace cosmo
       /// Called once when the run's path is complete (not after a failure).
       virtual void
       finish(const std::string & /*output_directory*/)
+      {}
+      /// What it has gathered so far, for the run's checkpoint ...
+      virtual void
+      save(CheckpointWriter &) const
+      {}
+      /// ... and back, rewriting its files as they were then.
+      virtual void
+      load(CheckpointReader &, const std::string & /*output_directory*/)
       {}
     };
 
@@ -92,6 +144,11 @@ namespace cosmo
       execute(const PostprocessedState &state);
       void
       finish(const std::string &output_directory);
+      /// Every selected one's state, by name, for the run's checkpoint.
+      void
+      save(CheckpointWriter &w) const;
+      void
+      load(CheckpointReader &r, const std::string &output_directory);
 
     private:
       std::vector<std::pair<std::string, std::unique_ptr<Postprocessor>>> selected;

@@ -46,8 +46,12 @@ namespace cosmo
       bool factorized_at_predictor = false;
     };
 
-    /// A nonlinear system with a load parameter and an output hook.
-    class ContinuationProblem : public NonlinearSystem
+    /**
+     * A nonlinear system with a load parameter and an output hook; what it
+     * shows of its states (io::StateSource) is what the run's postprocessors
+     * write.
+     */
+    class ContinuationProblem : public NonlinearSystem, public io::StateSource
     {
     public:
       /// Set t; prescribed quantities (growth, prescribed strains) follow it.
@@ -82,16 +86,16 @@ namespace cosmo
         postprocessors           = p;
         postprocessor_directory = output_directory;
       }
-      /// The quantities of the last converged state by name (the columns of
-      /// its steps.csv row), for the postprocessors; none by default.
-      virtual std::vector<std::pair<std::string, double>>
-      state_quantities() const
-      {
-        return {};
-      }
       /// Calls the attached postprocessors, if any, with `state` completed.
       void
       postprocess(io::PostprocessedState state) const;
+      /// The attached postprocessors' state, for the application's
+      /// checkpoint (nothing attached: an empty list) ...
+      void
+      save_postprocessors(io::CheckpointWriter &w) const;
+      /// ... and back (their files rewritten as they were then).
+      void
+      load_postprocessors(io::CheckpointReader &r);
 
     private:
       io::Postprocessors *postprocessors = nullptr;
