@@ -6,7 +6,8 @@
 # killed after its third point, and a section's constitutive table killed
 # half-way, each resumed to the end, reach the uninterrupted run's tables
 # and summary.json (tests/compare_runs.py; the table's table.csv byte for
-# byte and table.h5's data).
+# byte and table.h5's data), and the strip's postprocessors (unknowns.csv,
+# the PVD collections) their files byte for byte.
 # usage: robustness_paths.sh <strip> <rod_cross_section> <scratch dir>
 set -uo pipefail
 strip=$(realpath "$1") rod=$(realpath "$2") dir=$3
@@ -39,7 +40,14 @@ resume_case() {
 }
 # (the twist buckling example on 16 cells: 73 steps on five branches in ~5 s)
 sed -e "s|^\( *set Number of cells *=\).*|\1 16|" "$here/../parameter_files/strip/twist_buckling.prm" > twist_buckling_16.prm
+printf 'subsection Postprocess\n  set List of postprocessors = steps table, fields, unknowns\nend\n' >> twist_buckling_16.prm
 resume_case "$strip" twist_buckling_16.prm twist_buckling TERM:20 KILL:50
+# The postprocessors' state is in the checkpoints: their files of the
+# resumed run are the uninterrupted run's, byte for byte (the states are).
+for f in unknowns.csv strip.pvd section-branch-0.pvd; do
+  if cmp -s "twist_buckling-whole/$f" "twist_buckling/$f"; then ok "twist_buckling resumed: $f the uninterrupted run's"
+  else bad "twist_buckling resumed: $f differs from the uninterrupted run's"; fi
+done
 resume_case "$rod" "$here/../parameter_files/rod_cross_section/surface_growth.prm" surface_growth KILL:2
 # A section's sweep (one run per value) killed after its third point and resumed.
 with_output "$here/../parameter_files/rod_cross_section/studies/twist_vs_fibre_angle.prm" sweep-whole > sweep-whole.prm

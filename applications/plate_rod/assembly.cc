@@ -206,7 +206,7 @@ namespace cosmo
     struct PlateRodProblem::CellLoopData
     {
       CellLoopData(const PlateRodProblem &p, const Quadrature<2> &full, const bool jacobian)
-        : dpc(p.fe->n_dofs_per_cell())
+        : dpc(p.discretization.fe->n_dofs_per_cell())
         , comp(dpc)
         , assumed_shear(p.degree, p.shear_integration != ShearIntegration::interior_tying)
         , tying_weights(assumed_shear.interpolation(full))
@@ -219,7 +219,7 @@ namespace cosmo
         , jacobian(jacobian)
       {
         for (unsigned int i = 0; i < dpc; ++i)
-          comp[i] = p.fe->system_to_component_index(i).first;
+          comp[i] = p.discretization.fe->system_to_component_index(i).first;
         // The tied strains at each location (e_0 and e_1 share some), once per assembly.
         for (unsigned int k = 0; k < n_tying; ++k)
           strains_at[assumed_shear.location_of(k)].push_back(k);
@@ -460,9 +460,11 @@ namespace cosmo
       target.residual    = R;
       target.jacobian    = jacobian;
       target.system      = &system;
-      target.constraints = &constraints;
+      target.constraints = &discretization.constraints;
       const auto totals  = assembly::EnergyAssembler<2>::assemble(
-        dof_handler, worker, Scratch(*mapping, *fe, full, reduced, face, data.assumed_shear.tying_points()),
+        discretization.dof_handler, worker,
+        Scratch(*discretization.mapping, *discretization.fe, full, reduced, face,
+                data.assumed_shear.tying_points()),
         assembly::CellContribution(data.dpc, 0, 2), target);
       double plate_energy = totals.scalars[0], rod_energy = totals.scalars[1];
       if (distributed_mesh)
@@ -470,9 +472,9 @@ namespace cosmo
           // Every rank holds the whole residual and energies, the same bits on each.
           if (jacobian)
             system.distributed_matrix.compress(VectorOperation::add);
-          layout.sum_parts(*R);
+          discretization.layout.sum_parts(*R);
           std::vector<double> e = {plate_energy, rod_energy};
-          layout.sum(e);
+          discretization.layout.sum(e);
           plate_energy = e[0];
           rod_energy   = e[1];
         }

@@ -1,41 +1,18 @@
-// The mesh of part 3 (the disc, the sector stretched or mirrored), its DoFs
-// and constraints (mirror edges, gauges, the rim rotation off the rim) and
-// the sector's reflection.
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/utilities.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_values.h>
+// The mesh of part 3 (the disc, the sector stretched or mirrored) and the
+// constraints on its DoFs (mirror edges, gauges, the rim rotation off the
+// rim): PlateRodDiscretization::make_mesh and make_constraints.
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <cosmo/solvers/run_start.h>
-#include <cosmo/assembly/energy_assembler.h>
-#include <cosmo/assembly/assumed_shear.h>
-#include <cosmo/assembly/local_variables.h>
-#include <cosmo/config.h>
-#include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/resources.h>
-#include <cosmo/io/parameter_sweep.h>
-#include <cosmo/io/ranks.h>
-#include <cosmo/io/run_directory.h>
-#include <cosmo/solvers/critical_point_study.h>
-#include <cosmo/materials/energy_derivatives.h>
 
-#include <cosmo/materials/growth_admissibility.h>
+#include "discretization.h"
 
-#include "plate_rod_problem.h"
-
-#include <chrono>
-#include <fstream>
 #include <cmath>
-#include <iomanip>
-#include <limits>
+#include <functional>
 #include <map>
-#include <sstream>
+#include <set>
 
 namespace cosmo
 {
@@ -112,24 +89,26 @@ namespace cosmo
     } // namespace
 
     void
-    PlateRodProblem::make_mesh()
+    PlateRodDiscretization::make_mesh()
     {
-      this->triangulation.set_distributed(distributed_mesh);
+      this->triangulation.set_distributed(parameters.distributed_mesh);
       // The same coarse mesh and refinements on one process and on a distributed mesh.
       Triangulation<2> &triangulation = this->triangulation.get();
       triangulation.clear();
       // 6 fields of degree p: about 6 p^2 unknowns per cell; refused before refining what
       // cannot fit (io/resources.h).
-      auto refine = [this](Triangulation<2> &tria) {
+      const unsigned int degree = parameters.degree, refinements = parameters.refinements;
+      const double       radius = parameters.radius;
+      auto               refine = [=](Triangulation<2> &tria) {
         const boost::signals2::scoped_connection guard(
           io::guard_refinement(tria, 6. * degree * degree, degree, "Mesh", "Global refinements",
                                std::to_string(refinements)));
         tria.refine_global(refinements);
       };
-      if (domain == "sector" && sector_mesh == "mirrored")
-        mirrored_sector(triangulation, sector_n, radius, refine);
-      else if (domain == "sector")
-        stretched_sector(triangulation, sector_n, radius, [&]() { refine(triangulation); });
+      if (parameters.domain == "sector" && parameters.sector_mesh == "mirrored")
+        mirrored_sector(triangulation, parameters.sector_n, radius, refine);
+      else if (parameters.domain == "sector")
+        stretched_sector(triangulation, parameters.sector_n, radius, [&]() { refine(triangulation); });
       else
         {
           GridGenerator::hyper_ball(triangulation, Point<2>(), radius);
@@ -255,17 +234,18 @@ namespace cosmo
     } // namespace
 
     void
-    PlateRodProblem::make_constraints()
+    PlateRodDiscretization::make_constraints()
     {
       constraints.clear();
-      const bool sector = domain == "sector";
+      const bool   sector = parameters.domain == "sector";
+      const double radius = parameters.radius;
       // In-plane only: u3, theta1, theta2 = 0 everywhere, first (the mirror
       // conditions below then find those DoFs constrained already).
       // On a distributed mesh each rank makes the constraints of the DoFs of
       // the cells it knows (its own and their neighbours): every constraint
       // here ties DoFs of one node, so the ranks that know a DoF agree on it.
       std::vector<types::global_dof_index> cell_dofs(fe->n_dofs_per_cell());
-      if (in_plane_only)
+      if (parameters.in_plane_only)
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (!cell->is_artificial())
             {
@@ -304,92 +284,10 @@ namespace cosmo
         }
       else
         {
-          add_mirror_constraints(dof_handler, *fe, sector_n, constraints);
+          add_mirror_constraints(dof_handler, *fe, parameters.sector_n, constraints);
         }
       constrain_alpha_off_rim(dof_handler, *fe, constraints);
       constraints.close();
     }
-
-    void
-    PlateRodProblem::setup_system()
-    {
-      residuals.clear();
-      // A stiffness with its constraints eliminated: every diagonal entry is nonzero.
-      system.set_nonzero_diagonal(true);
-      make_mesh();
-      fe = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 6);
-      dof_handler.reinit(triangulation.get());
-      dof_handler.distribute_dofs(*fe);
-      make_constraints();
-      if (distributed_mesh)
-        {
-          // Each rank's rows: those of its own DoFs, entries from its cells
-          // sent to their owners at compress().
-          const IndexSet owned    = dof_handler.locally_owned_dofs();
-          IndexSet       relevant;
-          DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-          TrilinosWrappers::SparsityPattern sp;
-          sp.reinit(owned, owned, relevant, MPI_COMM_WORLD);
-          DoFTools::make_sparsity_pattern(dof_handler, sp, constraints, false,
-                                          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
-          sp.compress();
-          layout = solvers::ReplicatedVectorLayout(MPI_COMM_WORLD, owned);
-          system.reinit(sp, 0, layout);
-        }
-      else
-        {
-          DynamicSparsityPattern dsp(dof_handler.n_dofs());
-          DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-          system.reinit(dsp, 0);
-          layout = solvers::ReplicatedVectorLayout();
-        }
-      solution.reinit(dof_handler.n_dofs());
-      // Per DoF, its field and whether it is constrained, taken from its owner's cells.
-      dof_component.assign(dof_handler.n_dofs(), 0);
-      dof_constrained.assign(dof_handler.n_dofs(), 0);
-      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(idx);
-            for (unsigned int i = 0; i < idx.size(); ++i)
-              {
-                dof_component[idx[i]]   = fe->system_to_component_index(i).first;
-                dof_constrained[idx[i]] = constraints.is_constrained(idx[i]) ? 1 : 0;
-              }
-          }
-      layout.take_from_owners(dof_component);
-      layout.take_from_owners(dof_constrained);
-      make_reflection();
-      check_plate_fields();
-    }
-
-    void
-    PlateRodProblem::make_reflection()
-    {
-      // The full disc's reflection y -> -y: u1, u3 even, u2 odd; the rotation
-      // vector is axial, theta -> -diag(1, -1, 1) theta: theta1 and alpha
-      // (about E3) odd, theta2 even. DoFs are paired by their support points.
-      reflection.clear();
-      if (domain == "sector")
-        return;
-      // (empty where the mesh is not mirror-symmetric: no reflection)
-      const auto   mirror = geometry::mirror_dofs(*mapping, dof_handler, 1, radius);
-      const double sign[6] = {1, -1, 1, -1, 1, -1};
-      for (types::global_dof_index i = 0; i < mirror.size(); ++i)
-        reflection.emplace_back(mirror[i], sign[dof_component[i]]);
-    }
-
-    bool
-    PlateRodProblem::project_to_fixed_point_space(Vector<double> &v) const
-    {
-      if (reflection.empty() || v.size() != reflection.size())
-        return false;
-      const Vector<double> w = v;
-      for (unsigned int i = 0; i < v.size(); ++i)
-        v[i] = 0.5 * (w[i] + reflection[i].second * w[reflection[i].first]);
-      return true;
-    }
-
   } // namespace plate_rod
 } // namespace cosmo

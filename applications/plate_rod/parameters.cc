@@ -180,16 +180,9 @@ namespace cosmo
       double
       diagonal_and_coupling(const std::array<double, 36> &K, std::array<double, 6> &diagonal)
       {
-        double coupling = 0;
         for (unsigned int a = 0; a < 6; ++a)
-          {
-            diagonal[a] = K[7 * a];
-            for (unsigned int b = 0; b < 6; ++b)
-              if (a != b)
-                coupling = std::max(coupling,
-                                    std::abs(K[6 * a + b]) / std::sqrt(std::abs(K[7 * a] * K[7 * b])));
-          }
-        return coupling;
+          diagonal[a] = K[7 * a];
+        return materials::largest_coupling(K);
       }
 
       /// n of 'Mesh / Sector angle' = 180/n degrees (section 'Mesh' entered), an integer >= 1.

@@ -1,6 +1,6 @@
-// The plate bounded by a rod (part 3): the problem's driver interface,
-// its checks and its run; the assembly is in assembly.cc, the mesh and
-// constraints in mesh.cc.
+// The plate bounded by a rod (part 3): the problem's driver interface and
+// its run; the assembly is in assembly.cc, the discretization in
+// discretization.cc and mesh.cc, the reports in postprocess.cc.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -41,11 +41,22 @@ namespace cosmo
 {
   namespace plate_rod
   {
-    PlateRodProblem::PlateRodProblem() = default;
-    PlateRodProblem::~PlateRodProblem()
+    namespace
     {
-      dof_handler.clear();
-    }
+      /// The rim's stiffness file in the log: the full 6x6's diagonal and largest coupling.
+      std::string
+      rim_stiffness_text(const PlateRodParameters &p)
+      {
+        std::ostringstream m;
+        m << "  rim stiffness from " << p.stiffness_file << ", the full 6x6: diagonal";
+        for (const double k : p.rod_stiffness)
+          m << " " << k;
+        m << ", largest coupling K_ab / sqrt(K_aa K_bb) = " << p.stiffness_coupling;
+        if (p.stiffness_coupling > 0)
+          m << " (the closed forms below use the diagonal only)";
+        return m.str();
+      }
+    } // namespace
 
     materials::RodNaturalState
     PlateRodParameters::rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame,
@@ -78,48 +89,14 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::check_plate_fields() const
+    PlateRodProblem::setup_system()
     {
-      // Where the energy is evaluated: the Gauss points of every cell (the assumed shear's tying
-      // points lie between them or on the cell's edges, within the cell).
-      const QGauss<2>       quadrature(degree + 1);
-      FEValues<2>           fev(*mapping, *fe, quadrature, update_quadrature_points);
-      std::vector<Point<2>> points;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-        {
-          fev.reinit(cell);
-          for (const auto &X : fev.get_quadrature_points())
-            {
-              points.push_back(X);
-              const double h = thickness_at(X);
-              if (!(h > 0) || !std::isfinite(h))
-                throw io::InputError("Plate", "Thickness profile", thickness_profile_text,
-                                     "the thickness must be positive and finite at the "
-                                     "quadrature points of the plate (it is " +
-                                       std::to_string(h) + " at x = " + std::to_string(X[0]) +
-                                       ", y = " + std::to_string(X[1]) + ")");
-            }
-        }
-      plate_growth.check_natural_curvature(points);
-
-      // The plate's and the rim's growth: one check, at every vertex and
-      // quadrature point of the mesh (materials/growth_admissibility.h).
-      const MPI_Comm comm = distributed_mesh ? MPI_COMM_WORLD : MPI_COMM_SELF;
-      plate_growth.check_admissible(
-        materials::growth_points(*mapping, triangulation.get(), quadrature,
-                                 [](const auto &) { return true; }),
-        comm);
-      materials::check_growth_admissible(
-        materials::boundary_growth_points(*mapping, triangulation.get(), QGauss<1>(degree + 1),
-                                          [](const auto &face) {
-                                            return face->boundary_id() == rim_id;
-                                          }),
-        [this](const Point<2> &, const double t) {
-          return std::vector<double>{rod_growth_at(t)};
-        },
-        {"Rim rod", "Growth factor", io::format_number(rim_growth->final_factor()), "the rim's growth factor"},
-        comm);
+      residuals.clear();
+      // A stiffness with its constraints eliminated: every diagonal entry is nonzero.
+      system.set_nonzero_diagonal(true);
+      discretization.reinit();
+      discretization.reinit_system(system);
+      solution.reinit(discretization.n_dofs());
     }
 
     double
@@ -165,7 +142,7 @@ namespace cosmo
           if (distributed_mesh && dynamic_cast<const solvers::FactorizationFailure *>(&e) == nullptr)
             throw;
           factorized_at.reinit(0);
-          say(std::string("  factorization failed: ") + e.what());
+          record.say(std::string("  factorization failed: ") + e.what());
           return 1;
         }
       factorized_at   = U;
@@ -178,9 +155,7 @@ namespace cosmo
     {
       io::PhaseTimer::Scope scope(timer, "solve");
       system.solve(rhs, dst, {});
-      constraints.distribute(dst);
-      // (each rank set the slaves it knows: everyone takes them from their owners)
-      layout.take_from_owners(dst);
+      discretization.distribute(dst);
       return 0;
     }
 
@@ -191,53 +166,13 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::mode_mask(Vector<double> &mask) const
-    {
-      // A constrained DoF's value follows from its masters: it carries no
-      // independent part of a mode. Above all the border of the critical-point
-      // system must vanish there: the solve returns J^-1 on the constrained
-      // space only for right-hand sides with no slave entries, and a border
-      // with them made the bordered test function g unsymmetric, its
-      // derivative -v.dJ v wrong by ~3 % and Newton linear (rate 0.026,
-      // measured on the sector) instead of quadratic.
-      mask.reinit(n_unknowns());
-      mask = 1.;
-      for (unsigned int i = 0; i < mask.size(); ++i)
-        if (dof_constrained[i])
-          mask[i] = 0;
-    }
-
-    void
-    PlateRodProblem::complete_mode(Vector<double> &v) const
-    {
-      // Every constraint here is homogeneous (mirror planes, in-plane only,
-      // gauges): distribute() sets the slaves from their masters and adds nothing.
-      constraints.distribute(v);
-      layout.take_from_owners(v);
-    }
-
-    double
-    PlateRodProblem::constraint_violation(const Vector<double> &U) const
-    {
-      double v = 0;
-      for (const auto &line : constraints.get_lines())
-        {
-          double r = U[line.index] - line.inhomogeneity;
-          for (const auto &entry : line.entries)
-            r -= entry.second * U[entry.first];
-          v = std::max(v, std::abs(r));
-        }
-      return distributed_mesh ? Utilities::MPI::max(v, MPI_COMM_WORLD) : v;
-    }
-
-    void
     PlateRodProblem::residual_weights(Vector<double> &w) const
     {
       // Nodal forces against E h R, nodal moments against E h R^2.
       const double F = plate_law->young() * thickness * radius;
       w.reinit(n_unknowns());
       for (unsigned int i = 0; i < w.size(); ++i)
-        w[i] = dof_component[i] < 3 ? 1 / F : 1 / (F * radius);
+        w[i] = discretization.dof_component[i] < 3 ? 1 / F : 1 / (F * radius);
     }
 
     double
@@ -265,7 +200,7 @@ namespace cosmo
     PlateRodProblem::follow_branches()
     {
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-      driver.progress = [this](const std::string &s) { say(s); };
+      driver.progress = [this](const std::string &s) { record.say(s); };
       if (write_output)
         {
           if (record.has_checkpoint())
@@ -289,7 +224,7 @@ namespace cosmo
     PlateRodProblem::locate_from_guess()
     {
       solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-      driver.progress = [this](const std::string &s) { say(s); };
+      driver.progress = [this](const std::string &s) { record.say(s); };
       const auto record = solvers::locate_continued_critical_point(driver, *this, *critical_guess,
                                                                   newton_settings);
       solution = Vector<double>(record.state.begin(), record.state.end());
@@ -307,69 +242,23 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::say_discretization() const
-    {
-      std::ostringstream info;
-      info << "  " << model->name() << " model, R = " << radius << ", h = " << thickness
-           << " (h/R = " << thickness / radius << "), "
-           << (domain == "sector" ? "sector pi/" + std::to_string(sector_n) : std::string("full disc"))
-           << ", " << triangulation.get().n_global_active_cells() << " cells, Q" << degree << ", "
-           << dof_handler.n_dofs() << " DoFs ("
-           << std::count(dof_constrained.begin(), dof_constrained.end(), 1)
-           << " constrained), estimated peak memory "
-           << io::format_bytes(io::estimated_memory(dof_handler.n_dofs(), degree));
-      if (distributed_mesh)
-        info << ", the mesh distributed over " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
-             << (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ? " rank" : " ranks");
-      say(info.str());
-      if (!stiffness_file.empty())
-        {
-          std::ostringstream m;
-          m << "  rim stiffness from " << stiffness_file << ", the full 6x6: diagonal";
-          for (const double k : rod_stiffness)
-            m << " " << k;
-          m << ", largest coupling K_ab / sqrt(K_aa K_bb) = " << stiffness_coupling;
-          if (stiffness_coupling > 0)
-            m << " (the closed forms below use the diagonal only)";
-          say(m.str());
-        }
-
-    }
-
-    void
-    PlateRodProblem::add_steps_columns()
-    {
-      steps_columns.clear();
-      for (const auto &c : {"step", "branch", "t", "mismatch", "plate_growth_rim", "rod_growth",
-                            "newton_iterations", "energy", "plate_energy", "rod_energy",
-                            "dome_height", "w_range", "max_inplane_displacement",
-                            "rim_radial_strain"})
-        steps_columns.emplace_back(c, "");
-      // The mode numbers the domain admits: 0, n, ..., 8 n on a sector pi/n.
-      for (unsigned int k = 0; k < n_modes; ++k)
-        steps_columns.emplace_back("rim_w_" + std::to_string(k * sector_step()), "");
-      for (unsigned int k = 0; k < n_modes; ++k)
-        steps_columns.emplace_back("rim_ur_" + std::to_string(k * sector_step()), "");
-      steps_columns.emplace_back("n_negative_eigenvalues", "");
-      steps_columns.emplace_back("smallest_eigenvalue", "");
-    }
-
-    void
     PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
       write_output = true;
       solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
       setup_system();
-      say_discretization();
+      record.say(discretization.describe());
+      if (!stiffness_file.empty())
+        record.say(rim_stiffness_text(*this));
 
       // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
       double             first_closed = NAN;
       std::string        closed_text;
       const io::JSON     closed = closed_forms(first_closed, closed_text);
       if (!closed_text.empty())
-        say(closed_text);
+        record.say(closed_text);
 
-      add_steps_columns();
+      steps_columns = plate_rod::steps_columns(discretization);
 
       record.attempt([&]() {
         if (critical_guess)
@@ -428,9 +317,9 @@ namespace cosmo
       PlateRodProblem problem;
       problem.parse_parameters(prm);
       // A distributed mesh: every rank runs the path on its part of the mesh.
-      if (io::ranks::idle(problem.mesh_is_distributed()))
+      if (io::ranks::idle(problem.distributed_mesh))
         return;
-      if (problem.mesh_is_distributed() && io::ranks::size() > 1)
+      if (problem.distributed_mesh && io::ranks::size() > 1)
         io::collective_interrupts(MPI_COMM_WORLD);
       problem.run(options, prm);
     }

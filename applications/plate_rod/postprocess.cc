@@ -1,5 +1,6 @@
-// What part 3 reports: the steps table, the rim's Fourier amplitudes and the
-// mode classification, the closed forms; the VTU files are in vtu_output.cc.
+// What part 3 reports: the converged steps and the located events, the
+// checkpoint, the closed forms and the run's summary; what a state shows is
+// in diagnostics.cc, the VTU files in vtu_output.cc.
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -22,132 +23,6 @@ namespace cosmo
   namespace plate_rod
   {
 
-    PlateRodState
-    PlateRodProblem::analyse(const Vector<double> &U, const unsigned int n_modes) const
-    {
-      PlateRodState s;
-      s.t = load_parameter;
-      s.rim_w_amplitude.assign(n_modes, 0.);
-      s.rim_ur_amplitude.assign(n_modes, 0.);
-      const bool sector = domain == "sector";
-      // Fourier coefficients of w and u_r on the rim in the polar angle, for
-      // the mode numbers m = k step the domain admits (step = n on a sector
-      // pi/n: the mirror-symmetric extension has only those).
-      const unsigned int  step = sector_step();
-      std::vector<double> aw(n_modes), bw(n_modes), ar(n_modes), br(n_modes);
-      const QGauss<1>     face(degree + 1);
-      FEFaceValues<2>     fev(*mapping, *fe, face, update_values | update_quadrature_points | update_JxW_values);
-      std::vector<Vector<double>> values(face.size(), Vector<double>(6));
-      double              ur_mean = 0, length = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            {
-              fev.reinit(cell, f);
-              fev.get_function_values(U, values);
-              for (unsigned int q = 0; q < face.size(); ++q)
-                {
-                  const Point<2> X  = fev.quadrature_point(q);
-                  const double   r  = X.norm(), a = std::atan2(X[1], X[0]);
-                  const double   da = fev.JxW(q) / r;
-                  const double   w  = values[q][2];
-                  const double   ur = (values[q][0] * X[0] + values[q][1] * X[1]) / r;
-                  ur_mean += ur * fev.JxW(q);
-                  length += fev.JxW(q);
-                  for (unsigned int k = 0; k < n_modes; ++k)
-                    {
-                      const double m = double(k * step);
-                      aw[k] += w * std::cos(m * a) * da;
-                      bw[k] += w * std::sin(m * a) * da;
-                      ar[k] += ur * std::cos(m * a) * da;
-                      br[k] += ur * std::sin(m * a) * da;
-                    }
-                }
-            }
-      if (layout.distributed())
-        {
-          // Each rank integrated over its own rim faces.
-          std::vector<double> parts = {ur_mean, length};
-          for (const auto *v : {&aw, &bw, &ar, &br})
-            parts.insert(parts.end(), v->begin(), v->end());
-          layout.sum(parts);
-          ur_mean = parts[0];
-          length  = parts[1];
-          unsigned int at = 2;
-          for (auto *v : {&aw, &bw, &ar, &br})
-            for (auto &x : *v)
-              x = parts[at++];
-        }
-      const double span = sector ? M_PI / sector_n : 2 * M_PI;
-      for (unsigned int k = 0; k < n_modes; ++k)
-        {
-          const double f = (k == 0 ? 1. : 2.) / span;
-          s.rim_w_amplitude[k]  = f * (sector ? std::abs(aw[k]) : std::hypot(aw[k], bw[k]));
-          s.rim_ur_amplitude[k] = f * (sector ? std::abs(ar[k]) : std::hypot(ar[k], br[k]));
-        }
-      s.rim_radial_strain = ur_mean / length / radius;
-      // The apex carries w = 0 (gauge): the dome height is minus the rim's mean w.
-      s.w_centre = -aw[0] / span;
-      double wmin = 0, wmax = 0;
-      for (unsigned int i = 0; i < U.size(); ++i)
-        if (dof_component[i] == 2)
-          wmin = std::min(wmin, U[i]), wmax = std::max(wmax, U[i]);
-      s.max_abs_w = wmax - wmin;
-      // The in-plane displacement at every node: u1 and u2 of the same support point.
-      std::vector<types::global_dof_index> idx(fe->n_dofs_per_cell());
-      const unsigned int                   nodes = fe->base_element(0).n_dofs_per_cell();
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(idx);
-          for (unsigned int k = 0; k < nodes; ++k)
-            s.max_abs_inplane =
-              std::max(s.max_abs_inplane, std::hypot(U[idx[fe->component_to_system_index(0, k)]],
-                                                     U[idx[fe->component_to_system_index(1, k)]]));
-        }
-      std::vector<double> largest = {s.max_abs_inplane};
-      layout.max(largest);
-      s.max_abs_inplane = largest[0];
-      return s;
-    }
-
-    std::pair<unsigned int, bool>
-    PlateRodProblem::classify_mode(const Vector<double> &mode, ModeMargins *margins) const
-    {
-      // Mode numbers up to what the rim resolves: one per rim face over the full circle
-      // (beyond, the Fourier amplitudes of the sampled rim alias).
-      std::vector<double> faces(1, 0.);
-      for (const auto &cell : triangulation.get().active_cell_iterators())
-        if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
-            ++faces[0];
-      layout.sum(faces);
-      const unsigned int rim_faces = static_cast<unsigned int>(faces[0]);
-      const unsigned int full_circle = rim_faces * (domain == "sector" ? 2 * sector_n : 1);
-      const auto         s = analyse(mode, std::max(2u, full_circle / sector_step() + 1));
-      // Half the range of w (a mode's w is measured from the apex) against the largest
-      // in-plane displacement.
-      const bool   out = 0.5 * s.max_abs_w > s.max_abs_inplane;
-      const auto & a   = out ? s.rim_w_amplitude : s.rim_ur_amplitude;
-      unsigned int k   = 0;
-      for (unsigned int j = 1; j < a.size(); ++j)
-        if (a[j] > a[k])
-          k = j;
-      if (margins)
-        {
-          const double w = 0.5 * s.max_abs_w, p = s.max_abs_inplane;
-          margins->type  = std::max(w, p) > 0 ? std::min(w, p) / std::max(w, p) : 0.;
-          double second  = 0;
-          for (unsigned int j = 0; j < a.size(); ++j)
-            if (j != k)
-              second = std::max(second, a[j]);
-          margins->number = a[k] > 0 ? second / a[k] : 0.;
-        }
-      return {k * sector_step(), out};
-    }
-
     analysis::PlateRod
     PlateRodParameters::closed_form_setting() const
     {
@@ -168,10 +43,10 @@ namespace cosmo
     {
       solution = U;
       load_parameter = report.t;
-      PlateRodState s = analyse(U);
+      PlateRodState s = analyse(discretization, U, load_parameter);
       s.n_negative    = report.n_negative;
       s.branch        = report.branch;
-      s.constraint_violation = constraint_violation(U);
+      s.constraint_violation = discretization.constraint_violation(U);
       auto same_state = [&](const Vector<double> &V, const double load) {
         return load == load_parameter && solvers::same_point(U, V);
       };
@@ -207,24 +82,16 @@ namespace cosmo
            << "  dome " << std::setprecision(4) << s.w_centre << "  neg.eig. " << s.n_negative
            << "  min|eig| " << std::setprecision(3) << s.smallest_eigenvalue
            << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
-      say(line.str());
-      std::vector<double> row = {double(report.step), double(report.branch), report.t,
-                                 mismatch(report.t), plate_growth.factors(radius, report.t)[1],
-                                 rod_growth_at(report.t), double(report.newton_iterations),
-                                 s.plate_energy + s.rod_energy, s.plate_energy, s.rod_energy,
-                                 s.w_centre, s.max_abs_w, s.max_abs_inplane, s.rim_radial_strain};
-      row.insert(row.end(), s.rim_w_amplitude.begin(), s.rim_w_amplitude.end());
-      row.insert(row.end(), s.rim_ur_amplitude.begin(), s.rim_ur_amplitude.end());
-      row.push_back(s.n_negative);
-      row.push_back(s.smallest_eigenvalue);
-      steps_row = std::move(row);
+      record.say(line.str());
+      steps_row = plate_rod::steps_row(*this, report, s);
     }
 
     std::vector<std::pair<std::string, std::string>>
     PlateRodProblem::write_fields(const std::string &tag) const
     {
       io::PhaseTimer::Scope scope(timer, "output");
-      return {{"plate", write_plate("plate-" + tag, solution)}, {"rim", write_rim("rim-" + tag, solution)}};
+      return {{"plate", write_plate(discretization, "plate-" + tag, solution, load_parameter)},
+              {"rim", write_rim(discretization, "rim-" + tag, solution, load_parameter)}};
     }
 
     void
@@ -279,12 +146,12 @@ namespace cosmo
 
       if (!r.at_end())
         throw std::runtime_error("the checkpoint holds more than this run reads");
-      if (solution.size() != dof_handler.n_dofs())
+      if (solution.size() != discretization.n_dofs())
         throw std::runtime_error("the checkpoint's state has another number of unknowns");
       std::ostringstream m;
       m << "  going on after step " << states.size() - 1 << " at t = " << std::setprecision(10)
         << load_parameter << " (" << located_events.size() << " events located before)";
-      say(m.str());
+      record.say(m.str());
     }
 
     void
@@ -297,26 +164,8 @@ namespace cosmo
         r.mode.assign(mode->begin(), mode->end());
       located_events.push_back(r);
       if (write_output)
-        write_event(e, U, mode);
-    }
-
-    void
-    PlateRodProblem::write_event(const Event &, const Vector<double> &U, const Vector<double> *mode)
-    {
-      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
-      write_plate("event-" + tag, U);
-      if (mode)
-        {
-          // The mode added to the state, scaled to a tenth of the radius.
-          Vector<double> V = U;
-          double         m = 0;
-          for (unsigned int i = 0; i < mode->size(); ++i)
-            if (dof_component[i] < 3)
-              m = std::max(m, std::abs((*mode)[i]));
-          if (m > 0)
-            V.add(0.1 * radius / m, *mode);
-          write_plate("event-" + tag + "-mode", V);
-        }
+        write_event(discretization, Utilities::int_to_string(located_events.size(), 2), U, mode,
+                    load_parameter);
     }
 
     io::JSON
@@ -393,7 +242,7 @@ namespace cosmo
     std::vector<double>
     PlateRodProblem::classify_critical_mode(const Vector<double> &mode) const
     {
-      const auto c = classify_mode(mode);
+      const auto c = classify_mode(discretization, mode);
       return {double(c.first), double(c.second)};
     }
 
@@ -417,12 +266,12 @@ namespace cosmo
             rows.push_back({st.branch, st.t, st.n_negative});
           for (const auto &e : located_events)
             ev.push_back(e.event);
-          say(solvers::path_summary(rows, ev, [this](const unsigned int k) {
+          record.say(solvers::path_summary(rows, ev, [this](const unsigned int k) {
             std::string words = ", mismatch Delta = " + io::format_significant(mismatch(located_events[k].event.lambda), 6);
             if (!located_events[k].mode.empty())
               {
                 const Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
-                const auto           c = classify_mode(mode);
+                const auto           c = classify_mode(discretization, mode);
                 words += ", mode n = " + std::to_string(c.first) + (c.second ? " out of plane" : " planar");
               }
             return words;
@@ -436,8 +285,8 @@ namespace cosmo
         j["sector_n"] = sector_n;
       j["radius"]    = radius;
       j["thickness"] = thickness;
-      j["dofs"]      = dof_handler.n_dofs();
-      j["cells"]     = triangulation.get().n_global_active_cells();
+      j["dofs"]      = discretization.n_dofs();
+      j["cells"]     = discretization.triangulation.get().n_global_active_cells();
       if (distributed_mesh)
         j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       j["closed_form"] = closed;
@@ -471,7 +320,7 @@ namespace cosmo
             {
               Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
               ModeMargins    margins;
-              const auto     c = classify_mode(mode, &margins);
+              const auto     c = classify_mode(discretization, mode, &margins);
               x["mode_number"]  = c.first;
               x["mode_type"]    = c.second ? "out of plane" : "planar";
               x["mode_type_out_of_plane"] = c.second ? 1 : 0;

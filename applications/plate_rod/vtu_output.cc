@@ -11,7 +11,7 @@
 #include <cosmo/io/vtu_patches.h>
 #include <cosmo/solvers/newton.h>
 
-#include "plate_rod_problem.h"
+#include "diagnostics.h"
 
 #include <cmath>
 #include <iomanip>
@@ -51,8 +51,11 @@ namespace cosmo
     } // namespace
 
     std::string
-    PlateRodProblem::write_plate(const std::string &name, const Vector<double> &U) const
+    write_plate(const PlateRodDiscretization &discretization, const std::string &name,
+                const Vector<double> &U, const double t)
     {
+      const PlateRodParameters &p = discretization.parameters;
+      const unsigned int        degree = p.degree;
       // The mid-surface at its reference points with the displacement, the
       // director, the growth factors and the membrane forces and bending
       // moments (polar components, plate law of the chosen model) as fields;
@@ -62,14 +65,14 @@ namespace cosmo
         for (unsigned int i = 0; i <= degree; ++i)
           unit.emplace_back(double(i) / degree, double(j) / degree);
       const Quadrature<2> nodes(unit);
-      FEValues<2>         fev(*mapping, *fe, nodes,
+      FEValues<2>         fev(*discretization.mapping, *discretization.fe, nodes,
                       update_values | update_gradients | update_quadrature_points);
       std::vector<Vector<double>>              values(nodes.size(), Vector<double>(6));
       std::vector<std::vector<Tensor<1, 2>>>   grads(nodes.size(), std::vector<Tensor<1, 2>>(6));
       io::VTUPatches<2> vtu({{"displacement", 3}, {"director", 3}, {"growth_radial", 1},
                              {"growth_circumferential", 1}, {"N_rr", 1}, {"N_tt", 1}, {"N_rt", 1},
                              {"M_rr", 1}, {"M_tt", 1}, {"M_rt", 1}});
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &cell : discretization.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
         {
           fev.reinit(cell);
@@ -92,9 +95,9 @@ namespace cosmo
                   z[11 + c] = grads[k][3 + c][0];
                   z[13 + c] = grads[k][3 + c][1];
                 }
-              const auto gr = growth_at(X, load_parameter);
-              const auto st = kinematics::elastic_plate_strains(z, gr, *model);
-              const Tensor<1, 3> d = model->director(z);
+              const auto gr = p.growth_at(X, t);
+              const auto st = kinematics::elastic_plate_strains(z, gr, *p.model);
+              const Tensor<1, 3> d = p.model->director(z);
               const double r = X.norm(), ca = r > 0 ? X[0] / r : 1, sa = r > 0 ? X[1] / r : 0;
               // Polar components of a symmetric (11, 22, 12) tensor.
               auto polar = [&](const std::array<double, 3> &a) {
@@ -103,15 +106,15 @@ namespace cosmo
                 const double rt = -ca * sa * a[0] + ca * sa * a[1] + (ca * ca - sa * sa) * a[2];
                 return std::array<double, 3>{{rr, tt, rt}};
               };
-              const auto resultants = plate_law_at(X).resultants(st);
+              const auto resultants = p.plate_law_at(X).resultants(st);
               const auto N          = polar(resultants.membrane);
               const auto M          = polar(resultants.bending);
-              const auto gf = plate_growth.factors(r, load_parameter);
+              const auto gf = p.plate_growth.factors(r, t);
               node_values[k] = {values[k][0], values[k][1], values[k][2], d[0], d[1], d[2], gf[0],
                                 gf[1], N[0], N[1], N[2], M[0], M[1], M[2]};
             }
           for_each_sector_image(
-            domain == "sector" && sector_as_full_disc, sector_n, [&](const auto &turn, const double reflect) {
+            p.domain == "sector" && p.sector_as_full_disc, p.sector_n, [&](const auto &turn, const double reflect) {
                 vtu.begin_patch(degree);
                 for (unsigned int k = 0; k < nodes.size(); ++k)
                   {
@@ -133,20 +136,23 @@ namespace cosmo
                 vtu.end_patch();
               });
         }
-      vtu.set_time(load_parameter);
-      return vtu.write_output(output_directory, name, distributed_mesh);
+      vtu.set_time(t);
+      return vtu.write_output(p.output_directory, name, p.distributed_mesh);
     }
 
     std::string
-    PlateRodProblem::write_rim(const std::string &name, const Vector<double> &U) const
+    write_rim(const PlateRodDiscretization &discretization, const std::string &name,
+              const Vector<double> &U, const double t)
     {
+      const PlateRodParameters &p = discretization.parameters;
+      const unsigned int        degree = p.degree;
       // The rim rod as a polyline through phi(X(S)) with its frame d1, d2, d3
       // and its strains and resultants (n = dpsi/dnu, m = dpsi/dkappa).
       std::vector<Point<1>> unit;
       for (unsigned int i = 0; i <= degree; ++i)
         unit.emplace_back(double(i) / degree);
       const Quadrature<1> nodes(unit);
-      FEFaceValues<2>     fev(*mapping, *fe, nodes,
+      FEFaceValues<2>     fev(*discretization.mapping, *discretization.fe, nodes,
                           update_values | update_gradients | update_quadrature_points |
                             update_normal_vectors);
       std::vector<Vector<double>>            values(nodes.size(), Vector<double>(6));
@@ -154,7 +160,7 @@ namespace cosmo
       io::VTUPatches<1> vtu({{"displacement", 3}, {"d1", 3}, {"d2", 3}, {"d3", 3}, {"nu1", 1}, {"nu2", 1}, {"nu3", 1},
                              {"kappa1", 1}, {"kappa2", 1}, {"kappa3", 1}, {"n1", 1}, {"n2", 1},
                              {"n3", 1}, {"m1", 1}, {"m2", 1}, {"m3", 1}});
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &cell : discretization.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == rim_id)
@@ -181,8 +187,8 @@ namespace cosmo
                   z[9]  = grads[k][4] * t2;
                   z[10] = values[k][5];
                   z[11] = grads[k][5] * t2;
-                  auto       ring = rim_natural_state(X, frame, load_parameter);
-                  const auto e    = model->rim_strains(
+                  auto       ring = p.rim_natural_state(X, frame, t);
+                  const auto e    = p.model->rim_strains(
                     z, frame, {{ring.reference_strains[3], ring.reference_strains[4], ring.reference_strains[5]}});
                   const Tensor<2, 3> L = kinematics::rim_rotation(z[6], z[7], z[10], frame.Lambda0);
                   std::vector<double> &v = node_values[k];
@@ -192,10 +198,10 @@ namespace cosmo
                     for (unsigned int i = 0; i < 3; ++i)
                       v.push_back(L[i][j]);
                   // The stress-free curvature includes the rim's natural curvature (assembly).
-                  const auto natural = rim_growth->natural_curvature(load_parameter);
+                  const auto natural = p.rim_growth->natural_curvature(t);
                   for (unsigned int j = 0; j < 3; ++j)
                     ring.reference_strains[3 + j] += natural[j];
-                  const auto resultants = materials::grown_rod_resultants(*rim_law, e, ring);
+                  const auto resultants = materials::grown_rod_resultants(*p.rim_law, e, ring);
                   for (unsigned int j = 0; j < 6; ++j)
                     v.push_back(e[j]);
                   for (unsigned int j = 0; j < 6; ++j)
@@ -208,7 +214,7 @@ namespace cosmo
               // resultants odd under it are the shears nu1, nu2 and the
               // twist kappa3 (n1, n2, m3).
               for_each_sector_image(
-                domain == "sector" && sector_as_full_disc, sector_n, [&](const auto &turn, const double reflect) {
+                p.domain == "sector" && p.sector_as_full_disc, p.sector_n, [&](const auto &turn, const double reflect) {
                     vtu.begin_patch(degree);
                     for (unsigned int k = 0; k < nodes.size(); ++k)
                       {
@@ -230,9 +236,30 @@ namespace cosmo
                     vtu.end_patch();
                   });
             }
-      vtu.set_time(load_parameter);
-      return vtu.write_output(output_directory, name, distributed_mesh);
+      vtu.set_time(t);
+      return vtu.write_output(p.output_directory, name, p.distributed_mesh);
     }
 
+    void
+    write_event(const PlateRodDiscretization &discretization,
+                const std::string &           tag,
+                const Vector<double> &        U,
+                const Vector<double> *        mode,
+                const double                  t)
+    {
+      write_plate(discretization, "event-" + tag, U, t);
+      if (mode)
+        {
+          // The mode added to the state, scaled to a tenth of the radius.
+          Vector<double> V = U;
+          double         m = 0;
+          for (unsigned int i = 0; i < mode->size(); ++i)
+            if (discretization.dof_component[i] < 3)
+              m = std::max(m, std::abs((*mode)[i]));
+          if (m > 0)
+            V.add(0.1 * discretization.parameters.radius / m, *mode);
+          write_plate(discretization, "event-" + tag + "-mode", V, t);
+        }
+    }
   } // namespace plate_rod
 } // namespace cosmo

@@ -1,11 +1,13 @@
-// CrossSectionProblem's assembly: the energy of the bulk and of the surface layers, and its derivatives.
+// The section's energy on its discretization: the bulk's and the surface layers', with the
+// resultants and the derivatives (section_assembly.h).
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <cosmo/assembly/energy_assembler.h>
+#include <cosmo/kinematics/rotation.h>
 #include <cosmo/kinematics/section.h>
 
-#include "cross_section_problem.h"
+#include "section_assembly.h"
 
 #include <algorithm>
 
@@ -345,37 +347,21 @@ namespace cosmo
       }
     } // namespace
 
-    int
-    CrossSectionProblem::assemble_field(const Vector<double> &       U,
-                                        const std::array<double, 6> &e,
-                                        Vector<double> *             R,
-                                        const bool                   jacobian,
-                                        FullMatrix<double> &         E,
-                                        FieldIntegrals &             results)
-    {
-      if (!update_growth_cache())
-        return 1; // growth inadmissible at this trial load
-      if (!assemble_bulk(U, e, R, jacobian, E, results))
-        return 1; // recoverable: Newton's line search or the driver cuts back
-      if (!surface_faces.empty())
-        assemble_surface_layers(U, e, R, jacobian, E, results);
-      return 0;
-    }
-
-    bool
-    CrossSectionProblem::assemble_bulk(const Vector<double> &       U,
-                                       const std::array<double, 6> &e,
-                                       Vector<double> *             R,
-                                       const bool                   jacobian,
-                                       FullMatrix<double> &         E,
-                                       FieldIntegrals &             results)
+    assembly::AssemblyTotals
+    assemble_bulk(const SectionDiscretization & section,
+                  const CrossSectionParameters &parameters,
+                  const Vector<double> &        U,
+                  const std::array<double, 6> & e,
+                  const assembly::AssemblyTarget &target)
     {
       const HelicalStrainTerms h(e);
+      const bool               jacobian = target.jacobian;
+      const FiniteElement<2> & fe       = section.get_fe();
 
-      const QGauss<2>    quadrature(degree + 1);
+      const QGauss<2>    quadrature(parameters.degree + 1);
       const unsigned int nq  = quadrature.size();
-      const unsigned int              dpc  = fe->n_dofs_per_cell();
-      const std::vector<unsigned int> comp = dof_components(*fe);
+      const unsigned int              dpc  = fe.n_dofs_per_cell();
+      const std::vector<unsigned int> comp = dof_components(fe);
 
       // Cells are independent: the worker runs on all cores, the copier adds
       // the contributions in cell order (so sums are reproducible).
@@ -386,7 +372,7 @@ namespace cosmo
         fev.reinit(cell);
         for (unsigned int i = 0; i < dpc; ++i)
           scratch.U_local[i] = U[out.dof_indices[i]];
-        const auto &material = materials.material(cell->material_id());
+        const auto &material = parameters.materials.material(cell->material_id());
         auto &d = scratch.d;
         for (unsigned int q = 0; q < nq; ++q)
           {
@@ -398,7 +384,7 @@ namespace cosmo
             const Tensor<1, 3> w = kinematics::section_placement(X, u);
             const Tensor<2, 3> F = kinematics::section_deformation_gradient(grad_u, w, h.nu, h.kappa);
 
-            const Tensor<2, 3> &Fg = growth_at_qp[cell->active_cell_index() * nq + q];
+            const Tensor<2, 3> &Fg = section.bulk_growth()[cell->active_cell_index() * nq + q];
             material.evaluate(F, Fg, jacobian, d);
             if (!d.admissible)
               {
@@ -419,35 +405,37 @@ namespace cosmo
       };
 
       // The cell's scalars: its energy, then the six resultants dE/de.
-      const auto totals = assembly::EnergyAssembler<2>::assemble(
-        dof_handler, worker, AssemblyScratch(*mapping, *fe, quadrature),
-        assembly::CellContribution(dpc, n_strains, 1 + n_strains), field_target(R, jacobian, E));
-      if (!totals.admissible)
-        return false;
-      results.energy        = totals.scalars[0];
-      results.min_elastic_J = totals.minimum;
-      for (unsigned int k = 0; k < n_strains; ++k)
-        results.resultants[k] = totals.scalars[1 + k];
-      return true;
+      return assembly::EnergyAssembler<2>::assemble(
+        section.get_dof_handler(), worker, AssemblyScratch(section.get_mapping(), fe, quadrature),
+        assembly::CellContribution(dpc, n_strains, 1 + n_strains), target);
     }
 
     void
-    CrossSectionProblem::assemble_surface_layers(const Vector<double> &       U,
-                                                 const std::array<double, 6> &e,
-                                                 Vector<double> *             R,
-                                                 const bool                   jacobian,
-                                                 FullMatrix<double> &         E,
-                                                 FieldIntegrals &             results)
+    assemble_surface_layers(const SectionDiscretization &   section,
+                            const CrossSectionParameters &  parameters,
+                            const double                    t,
+                            const Vector<double> &          U,
+                            const std::array<double, 6> &   e,
+                            const assembly::AssemblyTarget &target,
+                            double &                        energy,
+                            std::array<double, 6> &         resultants)
     {
       // Few faces: serial, in face order.
       const HelicalStrainTerms h(e);
+      const bool               jacobian      = target.jacobian;
+      const auto &             surface_faces = section.get_surface_faces();
+      const FiniteElement<2> & fe            = section.get_fe();
+      // The 6x6 block goes into E point by point, the rest face by face.
+      FullMatrix<double> &     E           = *target.border_block;
+      assembly::AssemblyTarget face_target = target;
+      face_target.border_block             = nullptr;
 
-      const unsigned int              dpc  = fe->n_dofs_per_cell();
-      const std::vector<unsigned int> comp = dof_components(*fe);
+      const unsigned int              dpc  = fe.n_dofs_per_cell();
+      const std::vector<unsigned int> comp = dof_components(fe);
 
-      const QGauss<1>    face_quadrature(degree + 1);
+      const QGauss<1>    face_quadrature(parameters.degree + 1);
       const unsigned int nqf = face_quadrature.size();
-      FEFaceValues<2>    ffv(*mapping, *fe, face_quadrature,
+      FEFaceValues<2>    ffv(section.get_mapping(), fe, face_quadrature,
                           update_values | update_gradients | update_quadrature_points |
                             update_JxW_values | update_normal_vectors);
       assembly::CellContribution out(dpc, n_strains);
@@ -455,7 +443,7 @@ namespace cosmo
       for (unsigned int f = 0; f < surface_faces.size(); ++f)
         {
           const auto &sf    = surface_faces[f];
-          const auto &layer = surface_layers.layers()[sf.layer];
+          const auto &layer = parameters.surface_layers.layers()[sf.layer];
           ffv.reinit(sf.cell, sf.face);
           out.reset(jacobian);
           sf.cell->get_dof_indices(out.dof_indices);
@@ -473,26 +461,15 @@ namespace cosmo
               surface_displacement_at_point(ffv, q, T, comp, s.U_local, u, du_dS);
               const Tensor<1, 3> w  = kinematics::section_placement(X, u);
               const auto Fs = kinematics::surface_deformation_gradient(w, du_dS, T, h.nu, h.kappa);
-              layer.evaluate(Fs, surface_growth_at_qp[f * nqf + q], load_parameter,
-                             jacobian, s.d);
-              results.energy += s.d.energy * dS;
+              layer.evaluate(Fs, section.surface_growth()[f * nqf + q], t, jacobian, s.d);
+              energy += s.d.energy * dS;
 
-              add_surface_first_variation(ffv, q, T, comp, h, w, dS, s, out, results.resultants);
+              add_surface_first_variation(ffv, q, T, comp, h, w, dS, s, out, resultants);
               if (jacobian)
                 add_surface_second_variation(ffv, q, comp, h, dS, s, out, E);
             }
-          // (the 6x6 block of the surface went into E point by point)
-          auto target         = field_target(R, jacobian, E);
-          target.border_block = nullptr;
-          assembly::add_cell_contribution(out, target);
+          assembly::add_cell_contribution(out, face_target);
         }
-    }
-
-    void
-    CrossSectionProblem::residual_scales(double &force, double &length) const
-    {
-      length = section_properties.diameter;
-      force  = materials.max_young() * length * length;
     }
   } // namespace rod
 } // namespace cosmo

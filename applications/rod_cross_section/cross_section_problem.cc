@@ -1,18 +1,19 @@
-// CrossSectionProblem: the run, the path, the coarse-mesh start, symmetries, linear properties.
+// CrossSectionProblem: the run, the path, the coarse-mesh start, the modes' symmetries, the
+// field's assembly (the section's energy: assembly.cc).
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/vector_tools_interpolate.h>
 
 #include <cosmo/solvers/run_start.h>
 #include <cosmo/io/checkpoint.h>
-#include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/config.h>
 #include <cosmo/io/resources.h>
 
 #include "cross_section_problem.h"
+#include "section_assembly.h"
+#include "section_output.h"
 
 #include <cmath>
-#include <map>
 #include <sstream>
 
 namespace cosmo
@@ -25,35 +26,13 @@ namespace cosmo
       constexpr unsigned int n_gauge   = assembly::ReducedRodProblem::n_gauge;
     } // namespace
 
-    CrossSectionProblem::CrossSectionProblem() = default;
-    CrossSectionProblem::~CrossSectionProblem()
-    {
-      dof_handler.clear();
-    }
-
-    double
-    CrossSectionProblem::mode_parity(const Vector<double> &mode, const unsigned int axis) const
-    {
-      // The half-turn about X_axis maps the section point X to its mirror
-      // image about that axis (the other coordinate changes sign) and the
-      // placement w by diag(+1 on X_axis, -1 on the others): a proper
-      // rotation, a symmetry also of a twisted or stretched rod (a
-      // reflection would reverse the twist).
-      std::vector<double> signs = {-1., -1., -1.};
-      signs[axis]               = 1.;
-      return geometry::reflection_parity(
-        dof_handler,
-        geometry::mirror_dofs(*mapping, dof_handler, 1 - axis, section_properties.diameter), mode,
-        signs);
-    }
-
     std::vector<double>
     CrossSectionProblem::classify_critical_mode(const Vector<double> &mode) const
     {
       std::vector<double> c;
       for (unsigned int axis = 0; axis < 2; ++axis)
         {
-          const double p = mode_parity(mode, axis);
+          const double p = discretization.mode_parity(mode, axis);
           c.push_back(p > 0.5 ? 1. : p < -0.5 ? -1. : std::isfinite(p) ? 0. : NAN);
         }
       return c;
@@ -110,7 +89,8 @@ namespace cosmo
       // (interpolate_to_different_mesh asserts it, to the last bit). A section meshed anew per
       // refinement is not nested; nor is one shifted to its centroid, whose discrete centroid
       // moves with the refinement.
-      const bool nested = GridTools::have_same_coarse_mesh(coarse.triangulation.get(), triangulation.get());
+      const bool nested = GridTools::have_same_coarse_mesh(coarse.discretization.get_mesh().get(),
+                                                           discretization.get_mesh().get());
       if (!nested)
         {
           say("  coarse-mesh start: the section refined once less has other coarse cells (a "
@@ -134,14 +114,16 @@ namespace cosmo
           coarse_start_levels = 0; // a cut-back would only repeat the failing coarse solves
           return false;
         }
-      Vector<double> field_coarse(coarse.n_u()), field(n_u());
-      for (unsigned int i = 0; i < coarse.n_u(); ++i)
+      const unsigned int n_u = discretization.n_u(), coarse_n_u = coarse.discretization.n_u();
+      Vector<double>     field_coarse(coarse_n_u), field(n_u);
+      for (unsigned int i = 0; i < coarse_n_u; ++i)
         field_coarse[i] = Uc[i];
-      VectorTools::interpolate_to_different_mesh(coarse.dof_handler, field_coarse, dof_handler, field);
-      for (unsigned int i = 0; i < n_u(); ++i)
+      VectorTools::interpolate_to_different_mesh(coarse.discretization.get_dof_handler(), field_coarse,
+                                                 discretization.get_dof_handler(), field);
+      for (unsigned int i = 0; i < n_u; ++i)
         U[i] = field[i];
       for (unsigned int k = 0; k < n_gauge + n_strains; ++k)
-        U[n_u() + k] = Uc[coarse.n_u() + k];
+        U[n_u + k] = Uc[coarse_n_u + k];
       coarse_start_report = coarse.coarse_start_report + (coarse.coarse_start_report.empty() ? "" : ", ") +
                             std::to_string(r.iterations) + " on " +
                             std::to_string(coarse.n_unknowns());
@@ -164,31 +146,6 @@ namespace cosmo
       connect_checkpoints(driver);
       driver.run(*this, solution);
       return last_state;
-    }
-
-
-    analysis::LinearSectionProperties
-    CrossSectionProblem::linear_section_properties() const
-    {
-      // The small-strain moduli of each region's law, from its tangent at F = I
-      // (isotropic: C_1212 = mu, C_1122 = lambda), so that any registered law works.
-      std::map<types::material_id, analysis::RegionModuli> moduli;
-      for (const auto &cell : triangulation.get().active_cell_iterators())
-        if (moduli.count(cell->material_id()) == 0)
-          {
-            materials::EnergyDerivatives d;
-            Tensor<2, 3>                 I;
-            for (unsigned int i = 0; i < 3; ++i)
-              I[i][i] = 1;
-            materials.material(cell->material_id()).evaluate(I, I, true, d);
-            const double mu = d.C[9 * 1 + 1], lambda = d.C[9 * 0 + 4];
-            moduli[cell->material_id()] = {mu * (3 * lambda + 2 * mu) / (lambda + mu), mu,
-                                           materials.material(cell->material_id()).density};
-          }
-      return analysis::linear_section_properties(triangulation.get(), *mapping, degree,
-                                                 [&moduli](const types::material_id id) {
-                                                   return moduli.at(id);
-                                                 });
     }
 
 
@@ -215,16 +172,16 @@ namespace cosmo
     void
     CrossSectionProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
-      write_output   = true;
       solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
       {
         io::PhaseTimer::Scope scope(timer, "setup");
         setup_system();
       }
       std::ostringstream info;
-      info << "  section: " << geometry.shape << ", " << triangulation.get().n_global_active_cells()
-           << " cells, Q" << degree << ", " << n_u() << " field DoFs + 6 multipliers + 6 strains; area "
-           << section_properties.area << "; estimated peak memory "
+      info << "  section: " << geometry.shape << ", "
+           << discretization.get_mesh().get().n_global_active_cells() << " cells, Q" << degree << ", "
+           << discretization.n_u() << " field DoFs + 6 multipliers + 6 strains; area "
+           << discretization.properties().area << "; estimated peak memory "
            << io::format_bytes(io::estimated_memory(n_unknowns(), degree));
       if (distributed_mesh)
         info << "; the mesh distributed over " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
@@ -245,13 +202,13 @@ namespace cosmo
         {
           {
             io::PhaseTimer::Scope scope(timer, "section properties");
-            reference_properties = linear_section_properties();
+            reference_properties = discretization.linear_section_properties();
           }
-          say_reference_properties();
+          say_reference_properties(reference_properties, [this](const std::string &s) { say(s); });
         }
       for (unsigned int l = 0; l < surface_layers.layers().size(); ++l)
         say("  " + surface_layers.layers()[l].description() + " (arc length " +
-            io::format_significant(surface_length[l]) + ")");
+            io::format_significant(discretization.get_surface_length()[l]) + ")");
 
       if (table.enabled())
         {
@@ -270,7 +227,7 @@ namespace cosmo
         resume_from = &record.checkpoint();
       record.attempt([&]() { solve(); });
       if (!record.failed())
-        say_result();
+        say_result(last_state, timer, [this](const std::string &s) { say(s); });
       write_summary();
     }
 
@@ -279,8 +236,6 @@ namespace cosmo
     {
       io::PhaseTimer::Scope scope(timer, "constitutive table");
       say("constitutive table around the state at t = 1:");
-      const bool keep_output = write_output;
-      write_output           = false; // no per-point files
       set_load_parameter(1.);
       assembly::TableDescription d;
       d.application     = "rod_cross_section";
@@ -290,7 +245,38 @@ namespace cosmo
       d.held_resultants = resultants_at(1.);
       table.run_in(record, solution, target_strains, strains_of(solution),
                    [this](const std::array<double, 6> &e) { return resolve(e); }, output_directory, d);
-      write_output = keep_output;
+    }
+
+    int
+    CrossSectionProblem::assemble_field(const Vector<double> &       U,
+                                        const std::array<double, 6> &e,
+                                        Vector<double> *             R,
+                                        const bool                   jacobian,
+                                        FullMatrix<double> &         E,
+                                        FieldIntegrals &             results)
+    {
+      // The section's energy (section_assembly.h) at this load: its growth first.
+      if (!discretization.update_growth_cache(load_parameter))
+        return 1; // growth inadmissible at this trial load
+      const assembly::AssemblyTarget target = field_target(R, jacobian, E);
+      const assembly::AssemblyTotals totals = assemble_bulk(discretization, *this, U, e, target);
+      if (!totals.admissible)
+        return 1; // recoverable: Newton's line search or the driver cuts back
+      results.energy        = totals.scalars[0];
+      results.min_elastic_J = totals.minimum;
+      for (unsigned int k = 0; k < n_strains; ++k)
+        results.resultants[k] = totals.scalars[1 + k];
+      if (!discretization.get_surface_faces().empty())
+        assemble_surface_layers(discretization, *this, load_parameter, U, e, target, results.energy,
+                                results.resultants);
+      return 0;
+    }
+
+    void
+    CrossSectionProblem::residual_scales(double &force, double &length) const
+    {
+      length = discretization.properties().diameter;
+      force  = materials.max_young() * length * length;
     }
   } // namespace rod
 } // namespace cosmo

@@ -2,10 +2,6 @@
 #define cosmo_applications_rod_cross_section_problem_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/tria.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -13,7 +9,6 @@
 #include <cosmo/assembly/constitutive_table.h>
 #include <cosmo/assembly/reduced_rod_problem.h>
 #include <cosmo/geometry/cross_section.h>
-#include <cosmo/geometry/mesh_of_ranks.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_record.h>
@@ -23,11 +18,10 @@
 #include <cosmo/materials/surface_layer.h>
 #include <cosmo/solvers/continuation.h>
 
+#include "discretization.h"
 #include "parameters.h"
 
 #include <array>
-#include <limits>
-#include <memory>
 #include <string>
 
 /**
@@ -50,15 +44,14 @@ namespace cosmo
 
     /**
      * The problem on the parameters it was parsed from (parameters.h), with
-     * the rod strains of its reduced-rod base; it adds the discretization,
-     * the state and the run's records.
+     * the rod strains of its reduced-rod base and the section's
+     * discretization (discretization.h); it adds the state and the run's
+     * records. The VTU files and the words of a state are written from
+     * read-only views of it (section_output.h).
      */
     class CrossSectionProblem : public assembly::ReducedRodProblem, public CrossSectionParameters
     {
     public:
-      CrossSectionProblem();
-      ~CrossSectionProblem() override;
-
       /// CrossSectionParameters::parse_parameters, then the rod strains and the table.
       void
       parse_parameters(ParameterHandler &prm);
@@ -94,22 +87,13 @@ namespace cosmo
         return solution;
       }
 
-      /// 'Finite element / Distributed': the mesh divided over the MPI ranks.
-      bool
-      mesh_is_distributed() const
+      /// The mesh, element and DoFs, the section's properties, mode parities and
+      /// linear section properties (after setup_system()).
+      const SectionDiscretization &
+      get_discretization() const
       {
-        return distributed_mesh;
+        return discretization;
       }
-
-      const geometry::SectionProperties &
-      section() const
-      {
-        return section_properties;
-      }
-      /// The linear Saint-Venant properties of the reference section
-      /// (analysis/section_properties.h): centres, principal axes, GJ, shear factors.
-      analysis::LinearSectionProperties
-      linear_section_properties() const;
       unsigned int
       newton_iterations() const
       {
@@ -141,75 +125,28 @@ namespace cosmo
       void
       load_progress(io::CheckpointReader &r) override;
 
-      /**
-       * The parity of a mode's field under the half-turn of the rod about the
-       * section's axis X_axis (axis 0 or 1; geometry::reflection_parity):
-       * +1 symmetric, -1 antisymmetric, NaN where the mesh is not its own
-       * mirror image about that axis.
-       */
-      double
-      mode_parity(const Vector<double> &mode, unsigned int axis) const;
       /// A study's mode columns: mode_symmetry_X1, mode_symmetry_X2 (+1, -1,
-      /// 0 mixed, NaN: no such symmetry of the mesh).
+      /// 0 mixed, NaN: no such symmetry of the mesh; SectionDiscretization::mode_parity).
       std::vector<double>
       classify_critical_mode(const Vector<double> &mode) const override;
 
     private:
-      /// The run writes its files (run()); programmatic use does not.
-      bool                           write_output = false;
       bool                           quiet = false;   // a coarser copy says nothing
       std::string                    coarse_start_report; // Newton iterations per coarser mesh
       assembly::ConstitutiveTable    table;
 
-      // Discretization (with 'Finite element / Distributed' the mesh is divided
-      // over the ranks: each assembles its own cells, the bordered system's A
-      // is distributed by rows, the drivers' vectors are whole on every rank;
-      // doc/parallel-runs.md)
-      geometry::MeshOfRanks<2>                triangulation;
-      std::unique_ptr<FESystem<2>>            fe;
-      std::unique_ptr<MappingQ<2>>            mapping;
-      DoFHandler<2>                           dof_handler;
-      geometry::SectionProperties             section_properties;
-      analysis::LinearSectionProperties       reference_properties;
-      Vector<double>                          solution;
-      std::vector<Tensor<2, 3>>               growth_at_qp; // per cell and quadrature point
-      double                                  growth_cached_for = std::numeric_limits<double>::quiet_NaN();
-
-      /// A boundary face carrying a surface layer.
-      struct SurfaceFace
-      {
-        typename DoFHandler<2>::active_cell_iterator cell;
-        unsigned int                                 face;
-        unsigned int                                 layer;
-      };
-      std::vector<SurfaceFace>           surface_faces;
-      std::vector<std::array<double, 2>> surface_growth_at_qp; // (gT, g3) per face and point
-      std::vector<double>                surface_length;       // per layer, reference arc length
+      /// On this problem's parameters (its CrossSectionParameters base, made first).
+      SectionDiscretization             discretization{*this};
+      analysis::LinearSectionProperties reference_properties;
+      Vector<double>                    solution;
 
       // Output and bookkeeping
       io::RunRecord                    record{"rod_cross_section"};
       /// steps.csv's row of the last converged state.
       std::vector<double>              steps_row;
-      std::vector<io::JSON>            step_records;
       CrossSectionState                last_state;
 
-      unsigned int
-      n_u() const
-      {
-        return dof_handler.n_dofs();
-      }
-      /// Growth at the quadrature points at the current load; false where det Fg
-      /// or a surface factor is not positive.
-      bool
-      update_growth_cache();
-      /// io::InputError unless every bulk and surface law is admissible on every
-      /// level of the mesh along the ramp (materials/growth_admissibility.h).
-      void
-      check_growth() const;
-      /// The faces of every surface layer (after the mesh and DoFs exist).
-      void
-      setup_surface_faces();
-
+      /// The section's bulk, then its surface layers (assembly.cc).
       int
       assemble_field(const Vector<double> &       U,
                      const std::array<double, 6> &e,
@@ -219,45 +156,12 @@ namespace cosmo
                      FieldIntegrals &             out) override;
       void
       residual_scales(double &force, double &length) const override;
-      /// The section's bulk: false if growth or the state is inadmissible somewhere.
-      bool
-      assemble_bulk(const Vector<double> &       U,
-                    const std::array<double, 6> &e,
-                    Vector<double> *             R,
-                    bool                         jacobian,
-                    FullMatrix<double> &         border_block,
-                    FieldIntegrals &             out);
-      /// The surface layers on their boundary faces, added to the bulk's.
-      void
-      assemble_surface_layers(const Vector<double> &       U,
-                              const std::array<double, 6> &e,
-                              Vector<double> *             R,
-                              bool                         jacobian,
-                              FullMatrix<double> &         border_block,
-                              FieldIntegrals &             out);
 
-      /// solution-`tag`.vtu: the deformed section with its stress and growth fields
-      /// (as write_rod_piece).
-      std::string
-      write_section(const std::string &tag) const;
-      /// The rod piece `name`.vtu (or `name`.pvtu of a distributed mesh's pieces); returns
-      /// the file name written.
-      std::string
-      write_rod_piece(const std::string &name) const;
-      /// surface-NNNN.vtu: the surface layers with their growth and stress (as write_rod_piece).
-      std::string
-      write_surface_layers(const std::string &name, double t) const;
       void
       write_summary() const;
       /// After the path to t = 1: the constitutive table around that state.
       void
       run_table(const ParameterHandler &prm);
-      /// The final state in words: energy, strains, resultants, stiffness, centreline.
-      void
-      say_result() const;
-      /// The linear section properties, as the section tools print them.
-      void
-      say_reference_properties() const;
       void
       say(const std::string &line) const
       {

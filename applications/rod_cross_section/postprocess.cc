@@ -1,5 +1,5 @@
 // What part 1 reports: the steps table, the checkpoints' progress, summary.json and
-// the final state in words (the VTU files: vtu_output.cc).
+// the words of a state (section_output.h; the VTU files: vtu_output.cc).
 #include <deal.II/base/utilities.h>
 
 #include <cosmo/config.h>
@@ -7,6 +7,7 @@
 #include <cosmo/kinematics/helix.h>
 
 #include "cross_section_problem.h"
+#include "section_output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,7 +64,7 @@ namespace cosmo
           last_state.resultants    = a.resultants;
           last_state.strains       = strains_of(solution);
           for (unsigned int k = 0; k < n_gauge; ++k)
-            last_state.multipliers[k] = solution[n_u() + k];
+            last_state.multipliers[k] = solution[discretization.n_u() + k];
           last_state.n_negative = -1;
         }
       const CrossSectionState &s = last_state;
@@ -112,15 +113,16 @@ namespace cosmo
       j["load_parameter"]     = last_state.t;
       JSON &mesh              = j["mesh"];
       mesh["shape"]           = geometry.shape;
-      mesh["cells"]           = triangulation.get().n_global_active_cells();
+      mesh["cells"]           = discretization.get_mesh().get().n_global_active_cells();
       if (distributed_mesh)
         j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      mesh["field_dofs"]      = n_u();
+      const auto &section     = discretization.properties();
+      mesh["field_dofs"]      = discretization.n_u();
       mesh["degree"]          = degree;
-      mesh["area"]            = section_properties.area;
-      mesh["I11"]             = section_properties.I11;
-      mesh["I22"]             = section_properties.I22;
-      mesh["diameter"]        = section_properties.diameter;
+      mesh["area"]            = section.area;
+      mesh["I11"]             = section.I11;
+      mesh["I22"]             = section.I22;
+      mesh["diameter"]        = section.diameter;
       mesh["centroid_shift"]  = JSON::array({geometry.applied_shift[0], geometry.applied_shift[1]});
       JSON mats               = JSON::array();
       for (const auto &s : materials.descriptions())
@@ -160,10 +162,10 @@ namespace cosmo
     } // namespace
 
     void
-    CrossSectionProblem::say_reference_properties() const
+    say_reference_properties(const analysis::LinearSectionProperties &        p,
+                             const std::function<void(const std::string &)> &say)
     {
-      const auto &p  = reference_properties;
-      auto        pt = [](const Point<2> &x) {
+      auto pt = [](const Point<2> &x) {
         return "(" + io::format_significant(x[0], 4) + ", " + io::format_significant(x[1], 4) + ")";
       };
       std::ostringstream out;
@@ -185,9 +187,10 @@ namespace cosmo
     }
 
     void
-    CrossSectionProblem::say_result() const
+    say_result(const assembly::ReducedRodState &                s,
+               const io::PhaseTimer &                           timer,
+               const std::function<void(const std::string &)> &say)
     {
-      const auto &s = last_state;
       say("");
       say("Result at t = " + io::format_significant(s.t) + ":");
       std::ostringstream out;

@@ -108,15 +108,15 @@ namespace cosmo
         {
           CrossSectionProblem problem;
           problem.parse_parameters(prm);
-          if (problem.mesh_is_distributed() && assembly::ConstitutiveTable::enabled_in(prm))
+          if (problem.distributed_mesh && assembly::ConstitutiveTable::enabled_in(prm))
             throw io::InputError("Finite element", "Distributed", "true",
                                  "a constitutive table spreads its points over the MPI ranks, "
                                  "each on one rank's whole mesh: set Distributed = false");
           // A distributed mesh: every rank runs the path on its part of the mesh.
           if (io::ranks::idle(assembly::ConstitutiveTable::enabled_in(prm) ||
-                              problem.mesh_is_distributed()))
+                              problem.distributed_mesh))
             return;
-          if (problem.mesh_is_distributed() && io::ranks::size() > 1)
+          if (problem.distributed_mesh && io::ranks::size() > 1)
             io::collective_interrupts(MPI_COMM_WORLD);
           problem.run(options, prm);
           return;

@@ -11,6 +11,7 @@
 #include <cosmo/kinematics/section.h>
 
 #include "cross_section_problem.h"
+#include "section_output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -107,31 +108,45 @@ namespace cosmo
     std::vector<std::pair<std::string, std::string>>
     CrossSectionProblem::write_fields(const std::string &tag) const
     {
-      io::PhaseTimer::Scope scope(timer, "output");
+      io::PhaseTimer::Scope  scope(timer, "output");
+      const SectionVTUWriter writer(discretization, *this, solution, strains_of(solution), load_parameter);
       std::vector<std::pair<std::string, std::string>> files = {
-        {"solution", write_section(tag)}, {"rod", write_rod_piece("rod-" + tag)}};
+        {"solution", writer.write_section(tag)}, {"rod", writer.write_rod_piece("rod-" + tag)}};
       // (a distributed mesh: every rank writes its piece, with or without faces of its own)
-      if (!surface_layers.layers().empty() && (!surface_faces.empty() || distributed_mesh))
-        files.emplace_back("surface", write_surface_layers("surface-" + tag, load_parameter));
+      if (!surface_layers.layers().empty() &&
+          (!discretization.get_surface_faces().empty() || distributed_mesh))
+        files.emplace_back("surface", writer.write_surface_layers("surface-" + tag));
       return files;
     }
 
+    SectionVTUWriter::SectionVTUWriter(const SectionDiscretization & discretization,
+                                       const CrossSectionParameters &parameters,
+                                       const Vector<double> &        solution,
+                                       const std::array<double, 6> & strains,
+                                       const double                  t)
+      : discretization(discretization)
+      , parameters(parameters)
+      , solution(solution)
+      , strains(strains)
+      , t(t)
+    {}
+
     std::string
-    CrossSectionProblem::write_section(const std::string &tag) const
+    SectionVTUWriter::write_section(const std::string &tag) const
     {
       const std::string name = "solution-" + tag;
-      const double      t    = load_parameter;
       {
-        Vector<double> u(solution.begin(), solution.begin() + n_u());
-        SectionPostprocessor post(materials, strains_of(solution), t);
+        Vector<double> u(solution.begin(), solution.begin() + discretization.n_u());
+        SectionPostprocessor post(parameters.materials, strains, t);
         DataOut<2>           data_out;
-        data_out.attach_dof_handler(dof_handler);
+        data_out.attach_dof_handler(discretization.get_dof_handler());
         std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
           3, DataComponentInterpretation::component_is_part_of_vector);
         data_out.add_data_vector(u, std::vector<std::string>(3, "displacement"),
                                  DataOut<2>::type_dof_data, interp);
         data_out.add_data_vector(u, post);
-        data_out.build_patches(*mapping, degree, DataOut<2>::curved_inner_cells);
+        data_out.build_patches(discretization.get_mapping(), parameters.degree,
+                               DataOut<2>::curved_inner_cells);
 
         // deal.II groups vector components of 2D output in pairs, but the
         // section's fields (displacement, position, traction) are 3-vectors:
@@ -170,34 +185,34 @@ namespace cosmo
               }
             vtu.end_patch();
           }
-        vtu.set_time(load_parameter);
-        return vtu.write_output(output_directory, name, distributed_mesh);
+        vtu.set_time(t);
+        return vtu.write_output(parameters.output_directory, name, parameters.distributed_mesh);
       }
     }
 
     std::string
-    CrossSectionProblem::write_surface_layers(const std::string &name, const double t) const
+    SectionVTUWriter::write_surface_layers(const std::string &name) const
     {
       // The layers as polylines on the reference boundary (points (X1, X2, 0),
       // with the displacement to warp by), with their growth and stress.
-      const auto         e = strains_of(solution);
+      const auto &       e = strains;
       const Tensor<1, 3> nu({e[0], e[1], e[2]}), kappa({e[3], e[4], e[5]});
-      const unsigned int p = degree;
+      const unsigned int p = parameters.degree;
       std::vector<Point<1>> unit_points;
       for (unsigned int i = 0; i <= p; ++i)
         unit_points.emplace_back(double(i) / p);
       const Quadrature<1> points(unit_points);
-      FEFaceValues<2>     ffv(*mapping, *fe, points,
+      FEFaceValues<2>     ffv(discretization.get_mapping(), discretization.get_fe(), points,
                           update_values | update_gradients | update_quadrature_points |
                             update_normal_vectors);
-      Vector<double>                   u(solution.begin(), solution.begin() + n_u());
+      Vector<double> u(solution.begin(), solution.begin() + discretization.n_u());
       std::vector<Vector<double>>      u_values(p + 1, Vector<double>(3));
       std::vector<std::vector<Tensor<1, 2>>> u_grads(p + 1, std::vector<Tensor<1, 2>>(3));
       io::VTUPatches<1> vtu({{"displacement", 3}, {"growth_T", 1}, {"growth_3", 1},
                              {"stress_TT", 1}, {"stress_33", 1}, {"stress_T3", 1}, {"layer", 1}});
-      for (const auto &sf : surface_faces)
+      for (const auto &sf : discretization.get_surface_faces())
         {
-          const auto &layer = surface_layers.layers()[sf.layer];
+          const auto &layer = parameters.surface_layers.layers()[sf.layer];
           ffv.reinit(sf.cell, sf.face);
           ffv.get_function_values(u, u_values);
           ffv.get_function_gradients(u, u_grads);
@@ -221,38 +236,38 @@ namespace cosmo
             }
           vtu.end_patch();
         }
-      vtu.set_time(load_parameter);
-      return vtu.write_output(output_directory, name, distributed_mesh);
+      vtu.set_time(t);
+      return vtu.write_output(parameters.output_directory, name, parameters.distributed_mesh);
     }
 
     std::string
-    CrossSectionProblem::write_rod_piece(const std::string &name) const
+    SectionVTUWriter::write_rod_piece(const std::string &name) const
     {
       // A short piece of the rod in 3D: the deformed section swept along the
       // helix, x(X1, X2, X3) = r(X3) + R(X3) w(X1, X2).
-      const auto                e = strains_of(solution);
-      const kinematics::RodStrains strains(e);
-      const double              D = section_properties.diameter;
-      double                    L = rod_piece_length;
+      const kinematics::RodStrains rod(strains);
+      const double                 D = discretization.properties().diameter;
+      double                       L = parameters.rod_piece_length;
       if (L == 0)
         {
-          const double k = strains.kappa.norm();
+          const double k = rod.kappa.norm();
           L              = (k > 0) ? std::min(2 * M_PI / k, 10 * D) : 3 * D;
         }
-      const unsigned int p  = degree;
+      const unsigned int p  = parameters.degree;
       const unsigned int np = p + 1;
       std::vector<Point<2>> unit_points;
       for (unsigned int j = 0; j < np; ++j)
         for (unsigned int i = 0; i < np; ++i)
           unit_points.emplace_back(double(i) / p, double(j) / p);
       const Quadrature<2> points(unit_points);
-      FEValues<2>         fev(*mapping, *fe, points, update_values | update_quadrature_points);
-      Vector<double>              u(solution.begin(), solution.begin() + n_u());
+      FEValues<2>         fev(discretization.get_mapping(), discretization.get_fe(), points,
+                      update_values | update_quadrature_points);
+      Vector<double>              u(solution.begin(), solution.begin() + discretization.n_u());
       std::vector<Vector<double>> u_values(unit_points.size(), Vector<double>(3));
 
       io::VTUPatches<3>  vtu({{"arc_length", 1}, {"displacement", 3}}, {"region"});
-      const unsigned int n_slices = rod_piece_slices;
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      const unsigned int n_slices = parameters.rod_piece_slices;
+      for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
         {
           fev.reinit(cell);
@@ -264,7 +279,7 @@ namespace cosmo
               for (unsigned int k = 0; k < np; ++k)
                 {
                   const double                     X3 = L * (s + double(k) / p) / n_slices;
-                  const kinematics::HelixPlacement helix(strains, X3);
+                  const kinematics::HelixPlacement helix(rod, X3);
                   for (unsigned int ij = 0; ij < np * np; ++ij)
                     {
                       const Tensor<1, 3> w = kinematics::section_placement(
@@ -282,8 +297,8 @@ namespace cosmo
               vtu.end_patch();
             }
         }
-      vtu.set_time(load_parameter);
-      return vtu.write_output(output_directory, name, distributed_mesh);
+      vtu.set_time(t);
+      return vtu.write_output(parameters.output_directory, name, parameters.distributed_mesh);
     }
   } // namespace rod
 } // namespace cosmo

@@ -47,15 +47,26 @@ namespace cosmo
               largest[k] = std::max(largest[k], std::abs(v));
           }
         rows.push_back(row);
-        write_file_atomically(s.output_directory + "/quantity_history.csv", [&](std::ostream &o) {
-          o << "event,branch,t";
-          for (const auto &n : names)
-            o << "," << n;
-          o << "\n" << std::setprecision(17);
-          for (const auto &r : rows)
-            for (unsigned int k = 0; k < r.size(); ++k)
-              o << r[k] << (k + 1 < r.size() ? "," : "\n");
-        });
+        write(s.output_directory);
+      }
+      // What it has gathered goes into the run's checkpoint, and comes back
+      // on --resume: the resumed run's files are then the uninterrupted run's.
+      void
+      save(CheckpointWriter &w) const override
+      {
+        w.put_vector(largest);
+        w.put(std::uint64_t(rows.size()));
+        for (const auto &r : rows)
+          w.put_vector(r);
+      }
+      void
+      load(CheckpointReader &r, const std::string &output_directory) override
+      {
+        largest = r.get_vector();
+        rows.resize(r.get_size());
+        for (auto &row : rows)
+          row = r.get_vector();
+        write(output_directory);
       }
       void
       finish(const std::string &output_directory) override
@@ -72,6 +83,20 @@ namespace cosmo
       std::vector<std::string>         names;
       std::vector<double>              largest;
       std::vector<std::vector<double>> rows;
+
+      void
+      write(const std::string &directory) const
+      {
+        write_file_atomically(directory + "/quantity_history.csv", [&](std::ostream &o) {
+          o << "event,branch,t";
+          for (const auto &n : names)
+            o << "," << n;
+          o << "\n" << std::setprecision(17);
+          for (const auto &r : rows)
+            for (unsigned int k = 0; k < r.size(); ++k)
+              o << r[k] << (k + 1 < r.size() ? "," : "\n");
+        });
+      }
     };
 
     COSMO_REGISTER_PLUGIN(Postprocessor,

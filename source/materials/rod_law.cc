@@ -1,5 +1,8 @@
 #include <cosmo/materials/rod_law.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace cosmo
 {
   namespace plugins
@@ -17,6 +20,17 @@ namespace cosmo
       std::array<double, 36> K{};
       energy_derivatives(std::array<double, 6>{}, true, W, dW, K);
       return K;
+    }
+
+    double
+    largest_coupling(const std::array<double, 36> &K)
+    {
+      double c = 0;
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int b = 0; b < 6; ++b)
+          if (a != b)
+            c = std::max(c, std::abs(K[6 * a + b]) / std::sqrt(std::abs(K[7 * a] * K[7 * b])));
+      return c;
     }
 
     std::array<double, 6>

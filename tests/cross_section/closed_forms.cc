@@ -28,7 +28,7 @@ namespace
         // anticlastic in-plane field of bending (quadratic in X) is not
         // exactly representable on curved Q2 cells: measured 3.6e-7 at
         // Poisson 0.3, 1.1e-6 at 0.45.
-        const auto & sec  = p->section();
+        const auto & sec  = p->get_discretization().properties();
         const double tolI = poisson == 0 ? 1e-12 : 3e-6;
         check_close(tag + ": EA = E A_h (discrete area)", K(2, 2), E * sec.area, 1e-12);
         check_close(tag + ": EI1 = E I11_h", K(3, 3), E * sec.I11, tolI);

@@ -22,7 +22,7 @@ namespace
     const auto  s = p->solve();
     const auto &K = s.stiffness;
     std::cout << "gmsh bilayer, " << p->n_field_dofs() << " DoFs\n";
-    check_close("area", p->section().area, W * 2 * h, 1e-13);
+    check_close("area", p->get_discretization().properties().area, W * 2 * h, 1e-13);
     check_close("EA = sum E_i A_i", K(2, 2), (E7 + E9) * W * h, 1e-10);
     check_close("stretch-bending coupling int E X2", K(2, 3), (E9 - E7) * W * h * h / 2, 1e-10);
     check_close("EI1 = int E X2^2", K(3, 3), (E7 + E9) * W * h * h * h / 3, 1e-10);

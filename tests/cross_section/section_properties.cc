@@ -72,7 +72,7 @@ namespace
     {
       auto p = make_problem(section(" set Shape = rectangle\n set Width = 2\n set Height = 1", 4) +
                             material(1, "1", E, poisson) + strains_block("prescribed strains", reference_strains));
-      const auto lp = p->linear_section_properties();
+      const auto lp = p->get_discretization().linear_section_properties();
       std::cout << "rectangle 2 x 1, " << lp.n_dofs << " scalar DoFs\n";
       // Area integrals of polynomials on straight cells: exact to round-off.
       check_close("rectangle: EA", lp.EA, E * W * H, 1e-12);
@@ -94,7 +94,7 @@ namespace
       const double R = 1.5;
       auto p = make_problem(section(" set Shape = circle\n set Radius = 1.5", 3) + material(1, "1", E, poisson) +
                             strains_block("prescribed strains", reference_strains));
-      const auto   lp = p->linear_section_properties();
+      const auto   lp = p->get_discretization().linear_section_properties();
       const double I  = M_PI * std::pow(R, 4) / 4;
       std::cout << "circle R = 1.5, " << lp.n_dofs << " scalar DoFs\n";
       // The Q2 mapping's geometric error dominates: 3e-6 in A, 6e-6 in I.
@@ -121,7 +121,7 @@ Physical Surface("section", 1) = {1};
 Physical Curve("outer", 1) = {1, 2, 3, 4};
 )");
     auto       p  = geo_problem(file, 0.125, E, poisson);
-    const auto lp = p->linear_section_properties();
+    const auto lp = p->get_discretization().linear_section_properties();
     const auto K  = p->solve().stiffness;
     const auto a  = analysis::analyse_stiffness(K);
     std::cout << "rotated rectangle, " << lp.n_dofs << " scalar DoFs, " << p->n_field_dofs() << " field DoFs\n";
@@ -179,7 +179,7 @@ Physical Surface("section", 1) = {1};
 Physical Curve("outer", 1) = {1:8};
 )";
         auto         p  = geo_problem(write_geo("channel", geo.str()), t / 2, E, poisson);
-        const auto   lp = p->linear_section_properties();
+        const auto   lp = p->get_discretization().linear_section_properties();
         const auto   a  = analysis::analyse_stiffness(p->solve().stiffness);
         const double area = H * t + 2 * (B - t) * t;
         const double xbar = (H * t * t / 2 + 2 * (B - t) * t * (B + t) / 2) / area;
@@ -228,7 +228,7 @@ Physical Surface("section", 1) = {1};
 Physical Curve("outer", 1) = {1:6};
 )";
         auto         p    = geo_problem(write_geo("angle", geo.str()), t / 2, E, poisson);
-        const auto   lp   = p->linear_section_properties();
+        const auto   lp   = p->get_discretization().linear_section_properties();
         const auto   a    = analysis::analyse_stiffness(p->solve().stiffness);
         const double area = 2 * L * t - t * t;
         const double c    = (L * t * L / 2 + (L - t) * t * t / 2) / area; // centroid, both coordinates
@@ -271,7 +271,7 @@ Physical Curve("outer", 1) = {1:6};
                           material(1, "lower", E1, poisson, " set Density = 1") +
                           material(2, "upper", E2, poisson, " set Density = 2") +
                           strains_block("prescribed strains", reference_strains));
-    const auto lp = p->linear_section_properties();
+    const auto lp = p->get_discretization().linear_section_properties();
     const auto a  = analysis::analyse_stiffness(p->solve().stiffness);
     // Layers of height H/2 centred at -H/4 and +H/4.
     const double x2 = (E2 - E1) / (E1 + E2) * H / 4;

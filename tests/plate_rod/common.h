@@ -98,6 +98,13 @@ namespace plate_rod_test
     return {t, p.mismatch(t)};
   }
 
+  /// Mode number and whether out of plane (plate_rod::classify_mode on p's discretization).
+  inline std::pair<unsigned int, bool>
+  classify(const plate_rod::PlateRodProblem &p, const Vector<double> &mode)
+  {
+    return plate_rod::classify_mode(p.get_discretization(), mode);
+  }
+
   /// Growth factor of the plate that puts the closed-form threshold at t = 0.5.
   inline double
   growth_for_threshold(const Setup &s)

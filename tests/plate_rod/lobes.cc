@@ -70,7 +70,7 @@ namespace
         if (!p->events().empty())
           {
             Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
-            const auto c = p->classify_mode(mode);
+            const auto c = classify(*p, mode);
             check("n = " + std::to_string(n) + ": out-of-plane mode with n lobes",
                   c.first == n && c.second);
           }
@@ -103,7 +103,7 @@ namespace
     if (!p->events().empty())
       {
         Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
-        const auto c = p->classify_mode(mode);
+        const auto c = classify(*p, mode);
         check("a planar mode with 16 lobes", c.first == 16 && !c.second);
       }
   }
@@ -162,7 +162,7 @@ namespace
         if (e.event.branch == 1)
           run.secondary.push_back(e.event.lambda);
         const auto c = e.mode.empty() ? std::pair<unsigned int, bool>{0, false} :
-                                        p->classify_mode(Vector<double>(e.mode.begin(), e.mode.end()));
+                                        classify(*p, Vector<double>(e.mode.begin(), e.mode.end()));
         run.events.emplace_back(e.event.branch, e.event.lambda, e.event.resolution, c.first, c.second);
       }
     // The first branch of depth 2 is the one switched to from the lobed branch (branch 1),

@@ -22,7 +22,7 @@ namespace
           s.refinements  = 2;
           auto p         = make(s);
           p->solve_flat_state(1.);
-          const auto st = p->analyse(p->current_solution());
+          const auto st = plate_rod::analyse(p->get_discretization(), p->current_solution(), 1.);
           // Small strain: growth strains 2e-5 and -1e-5.
           const auto   ref = analysis::prebuckled_state(s.closed_form(), 2e-5, -1e-5);
           std::ostringstream what;
@@ -137,8 +137,8 @@ namespace
         Vector<double> U(n), V(n);
         for (unsigned int i = 0; i < n; ++i)
           U[i] = 0.05 * d(gen), V[i] = d(gen);
-        p->dof_constraints().distribute(U);
-        p->dof_constraints().distribute(V);
+        p->get_discretization().constraints.distribute(U);
+        p->get_discretization().constraints.distribute(V);
         p->setup_jacobian(U);
         Vector<double> JV(n), Rp(n), Rm(n), Up = U, Um = U;
         p->system_matrix().vmult(JV, V);
@@ -149,7 +149,7 @@ namespace
         p->residual(Um, Rm);
         double err = 0, scale = 0;
         for (unsigned int i = 0; i < n; ++i)
-          if (!p->dof_constraints().is_constrained(i))
+          if (!p->get_discretization().constraints.is_constrained(i))
             {
               err   = std::max(err, std::abs(JV[i] - (Rp[i] - Rm[i]) / (2 * eps)));
               scale = std::max(scale, std::abs(JV[i]));
@@ -237,7 +237,7 @@ namespace
     if (p->events().empty())
       return;
     Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
-    const auto     c = p->classify_mode(mode);
+    const auto     c = classify(*p, mode);
     check("in-plane only: the first mode is planar with n = 16", c.first == 16 && !c.second);
     std::cout << "  in-plane only (" << p->n_dofs() << " DoFs): Delta = " << e.second
               << ", closed form " << planar << " (relative " << e.second / planar - 1 << ")\n";
@@ -255,7 +255,7 @@ namespace
       if (!x.mode.empty())
         {
           Vector<double> m(x.mode.begin(), x.mode.end());
-          const auto     k = q->classify_mode(m);
+          const auto     k = classify(*q, m);
           std::cout << "  full model: " << x.event.name() << " at t = " << x.event.lambda << ", n = "
                     << k.first << (k.second ? " out of plane" : " planar") << "\n";
           if (!k.second && !twin)
@@ -353,7 +353,7 @@ namespace
     if (!c->events().empty())
       {
         Vector<double> mode(c->events().front().mode.begin(), c->events().front().mode.end());
-        const auto     m = c->classify_mode(mode);
+        const auto     m = classify(*c, mode);
         check("Cosserat: the axisymmetric mode", m.first == 0 && m.second);
       }
   }

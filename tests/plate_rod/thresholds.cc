@@ -62,7 +62,7 @@ namespace
           if (!p->events().empty() && k == 3)
             {
               Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
-              const auto c = p->classify_mode(mode);
+              const auto c = classify(*p, mode);
               check(what.str() + ": axisymmetric out-of-plane mode", c.first == 0 && c.second);
             }
         }
@@ -212,7 +212,7 @@ namespace
           }
         const auto &e = p->events().front();
         Vector<double> mode(e.mode.begin(), e.mode.end());
-        const auto     c = p->classify_mode(mode);
+        const auto     c = classify(*p, mode);
         std::cout << "  " << domain << ", " << p->n_dofs() << " DoFs: first event t = "
                   << std::setprecision(10) << e.event.lambda << ", count " << e.event.n_negative_before
                   << " -> " << e.event.n_negative_after << ", mode n = " << c.first
@@ -394,7 +394,7 @@ namespace
             return;
           }
         Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
-        const auto     c = p->classify_mode(mode);
+        const auto     c = classify(*p, mode);
         std::cout << "  h/R = " << h << ", " << p->n_dofs() << " DoFs: t_cr = " << std::setprecision(10)
                   << e.first << ", mode n = " << c.first << (c.second ? " out of plane" : " planar")
                   << "\n";

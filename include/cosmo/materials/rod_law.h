@@ -66,6 +66,15 @@ namespace cosmo
     };
 
     /**
+     * The largest normalized coupling max over a != b of |K_ab| / sqrt(|K_aa
+     * K_bb|) of a 6 x 6 stiffness (row-major): 0 for a diagonal one. The
+     * closed forms take the diagonal alone; this says how far the law is
+     * from them.
+     */
+    double
+    largest_coupling(const std::array<double, 36> &K);
+
+    /**
      * Where a rod's strains are measured from at a point: the reference
      * strains (nu0, kappa0), the axial growth g and a weight on each
      * elastic strain (psi(w e): the stiffness K -> D K D with D = diag(w),

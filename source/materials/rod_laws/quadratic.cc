@@ -160,12 +160,7 @@ namespace cosmo
     double
     QuadraticRodLaw::largest_coupling() const
     {
-      double c = 0;
-      for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = 0; b < 6; ++b)
-          if (a != b)
-            c = std::max(c, std::abs(coupling[a][b]) / std::sqrt(std::abs(stiffness[a] * stiffness[b])));
-      return c;
+      return materials::largest_coupling(natural_stiffness());
     }
 
     void

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# The run's outputs are postprocessors (io/postprocessors.h): steps.csv is
+# 'steps table', the VTU files and their collections 'fields'. What the list
+# and 'Steps between outputs' select is what is written, and nothing else:
+#  1. Steps between outputs = 3 on a path of 11 states (steps 0 .. 10): the
+#     VTU files of steps 0, 3, 6, 9 and of the last state, 10, each listed
+#     once in solution.pvd (path order) and solution-branch-0.pvd, while
+#     steps.csv has every state;
+#  2. only 'steps table': steps.csv and no VTU or PVD file;
+#  3. only 'fields': every state's VTU and no steps.csv.
+# usage: postprocess_outputs.sh <rod_cross_section> <scratch dir>
+set -uo pipefail
+exe=$(realpath "$1") dir=$2
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+prm() { # name, list, interval
+  cat <<PRM
+subsection Cross-section
+  set Shape = circle
+  set Global refinements = 1
+end
+subsection Material 1
+  set Growth kind = isotropic
+  set Growth factor = 1 + 0.1*x
+end
+subsection Continuation
+  set Initial step = 0.1
+  set Maximum step = 0.1
+  set Minimum step = 0.1
+end
+subsection Output
+  set Output directory = $1
+  set Stiffness at every step = false
+end
+subsection Postprocess
+  set List of postprocessors = $2
+  subsection fields
+    set Steps between outputs = $3
+  end
+end
+PRM
+}
+fail=0
+for run in "every3|steps table, fields|3" "table_only|steps table|1" "fields_only|fields|1"; do
+  IFS='|' read -r name list interval <<< "$run"
+  prm "$name" "$list" "$interval" > "$name.prm"
+  timeout 300 "$exe" --quiet "$name.prm" > "$name.txt" 2>&1 || { echo "  FAIL  $name: status $?"; cat "$name.txt"; fail=1; }
+done
+python3 - <<'PY' || fail=1
+import csv, glob, os, sys
+import xml.etree.ElementTree as ET
+ok = True
+def check(what, cond, detail=""):
+    global ok
+    print(("  ok    " if cond else "  FAIL  ") + what + ("" if cond else ": " + str(detail)))
+    ok = ok and cond
+def steps(d):
+    with open(d + "/steps.csv") as f:
+        return [int(float(r[0])) for r in list(csv.reader(f))[1:]]
+def listed(pvd):
+    return [e.get("file") for e in ET.parse(pvd).getroot().iter("DataSet")]
+
+s = steps("every3")
+check("every3: steps.csv has the 11 states of the path", s == list(range(11)), s)
+want = ["solution-%04d.vtu" % k for k in (0, 3, 6, 9, 10)]
+check("every3: solution.pvd lists steps 0, 3, 6, 9 and the last", listed("every3/solution.pvd") == want,
+      listed("every3/solution.pvd"))
+check("every3: solution-branch-0.pvd the same", listed("every3/solution-branch-0.pvd") == want)
+check("every3: rod.pvd the same states", listed("every3/rod.pvd") == [w.replace("solution", "rod") for w in want])
+check("every3: exactly those VTU files", sorted(os.path.basename(f) for f in glob.glob("every3/solution-*.vtu")) == want)
+check("table_only: steps.csv has every state", steps("table_only") == list(range(11)))
+check("table_only: no VTU or PVD file", not glob.glob("table_only/*.vtu") + glob.glob("table_only/*.pvd"),
+      glob.glob("table_only/*.*vt*"))
+check("fields_only: no steps.csv", not os.path.exists("fields_only/steps.csv"))
+check("fields_only: every state's VTU", len(glob.glob("fields_only/solution-*.vtu")) == 11)
+sys.exit(0 if ok else 1)
+PY
+exit $fail
