@@ -147,11 +147,6 @@ namespace cosmo
       {
         return steps_columns;
       }
-      std::vector<double>
-      quantity_values() const override
-      {
-        return steps_row;
-      }
       std::vector<std::pair<std::string, std::string>>
       write_fields(const std::string &tag) const override;
       int
@@ -278,9 +273,8 @@ namespace cosmo
       // Run records
       std::vector<PlateRodState>        states;
       std::vector<solvers::EventRecord> located_events;
-      /// steps.csv's columns (name, unit) and the last converged state's row.
+      /// steps.csv's columns (name, unit); the row is ContinuationProblem::steps_row.
       std::vector<std::pair<std::string, std::string>> steps_columns;
-      std::vector<double>               steps_row;
       io::RunRecord                     record{"plate_rod"};
       /// (mutable: the const output writers time themselves)
       mutable io::PhaseTimer            timer;

@@ -108,11 +108,6 @@ namespace cosmo
       /// surface layers' VTU files.
       std::vector<std::pair<std::string, std::string>>
       quantity_columns() const override;
-      std::vector<double>
-      quantity_values() const override
-      {
-        return steps_row;
-      }
       std::vector<std::pair<std::string, std::string>>
       write_fields(const std::string &tag) const override;
       /// Nested iteration: the first step solved on the section refined 'Coarse-mesh start'
@@ -142,8 +137,6 @@ namespace cosmo
 
       // Output and bookkeeping
       io::RunRecord                    record{"rod_cross_section"};
-      /// steps.csv's row of the last converged state.
-      std::vector<double>              steps_row;
       CrossSectionState                last_state;
 
       /// The section's bulk, then its surface layers (assembly.cc).

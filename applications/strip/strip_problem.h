@@ -92,11 +92,6 @@ namespace cosmo
       /// steps.csv's columns and row, the section's and the strip's VTU files.
       std::vector<std::pair<std::string, std::string>>
       quantity_columns() const override;
-      std::vector<double>
-      quantity_values() const override
-      {
-        return steps_row;
-      }
       std::vector<std::pair<std::string, std::string>>
       write_fields(const std::string &tag) const override;
       void
@@ -164,8 +159,6 @@ namespace cosmo
       assembly::ReducedRodState    last_state;
       /// mode_parity() of each located branch point's mode (NaN for folds).
       std::vector<double>          event_parities;
-      /// steps.csv's row of the last converged state.
-      std::vector<double>          steps_row;
       io::RunRecord                record{"strip"};
 
       void

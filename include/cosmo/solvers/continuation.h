@@ -96,6 +96,17 @@ namespace cosmo
       /// ... and back (their files rewritten as they were then).
       void
       load_postprocessors(io::CheckpointReader &r);
+      /// steps.csv's row of the last converged state (io::StateSource).
+      std::vector<double>
+      quantity_values() const override
+      {
+        return steps_row;
+      }
+
+    protected:
+      /// The last converged state's values of quantity_columns(), in order:
+      /// set by the application's converged_step(), kept in its checkpoint.
+      std::vector<double> steps_row;
 
     private:
       io::Postprocessors *postprocessors = nullptr;
