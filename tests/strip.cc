@@ -8,6 +8,7 @@
 #include "cross_section_problem.h"
 #include "strip_problem.h"
 #include "reduced_rod_checks.h"
+#include <cosmo/assembly/reduced_rod_table.h>
 #include <cosmo/analysis/section_properties.h>
 #include <cosmo/io/ranks.h>
 
@@ -95,14 +96,15 @@ namespace
     auto       p  = make_strip(1, 0.05, 0.3, {{0.02, -0.01, 1.02, 0.6, 0.05, 0.4}});
     const auto s0 = p->solve();
     const double h = 1e-5;
+    Vector<double> U = p->current_solution(); // each point continued from the last
     std::array<std::array<double, 6>, 6> dres;
     for (unsigned int k = 0; k < 6; ++k)
       {
         Strains ep = s0.strains, em = s0.strains;
         ep[k] += h;
         em[k] -= h;
-        const auto sp = p->resolve(ep);
-        const auto sm = p->resolve(em);
+        const auto sp = assembly::resolve_strains(*p, U, p->newton_settings, ep);
+        const auto sm = assembly::resolve_strains(*p, U, p->newton_settings, em);
         check_close("dPsi/d" + kinematics::strain_names[k], s0.resultants[k],
                     (sp.energy - sm.energy) / (2 * h), 1e-6, 1e-11);
         for (unsigned int a = 0; a < 6; ++a)

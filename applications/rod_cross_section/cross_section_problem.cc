@@ -5,6 +5,7 @@
 #include <deal.II/numerics/vector_tools_interpolate.h>
 
 #include <cosmo/solvers/run_start.h>
+#include <cosmo/assembly/reduced_rod_table.h>
 #include <cosmo/io/checkpoint.h>
 #include <cosmo/config.h>
 #include <cosmo/io/resources.h>
@@ -42,16 +43,6 @@ namespace cosmo
     CrossSectionProblem::current_state()
     {
       return condensed_state(solution);
-    }
-
-    CrossSectionState
-    CrossSectionProblem::resolve(const std::array<double, 6> &strains)
-    {
-      set_target_strains(strains); // (also clears 'Path' waypoints, which would win at t = 1)
-      set_load_parameter(1.);
-      solvers::newton_solve(*this, solution, newton_settings);
-      last_state = current_state();
-      return last_state;
     }
 
     bool
@@ -143,7 +134,7 @@ namespace cosmo
         }
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
-      connect_checkpoints(driver);
+      checkpoints.connect(driver, *this, timer);
       driver.run(*this, solution);
       return last_state;
     }
@@ -222,9 +213,7 @@ namespace cosmo
           return;
         }
       // Checkpoints after every converged step; --resume goes on from the last.
-      write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
-      if (record.has_checkpoint())
-        resume_from = &record.checkpoint();
+      checkpoints.connect_to(record);
       record.attempt([&]() { solve(); });
       if (!record.failed())
         say_result(last_state, timer, [this](const std::string &s) { say(s); });
@@ -241,10 +230,8 @@ namespace cosmo
       d.application     = "rod_cross_section";
       d.version         = COSMO_VERSION;
       d.parameters      = io::checkpoint_parameters(prm);
-      d.free_strains    = strain_is_free;
-      d.held_resultants = resultants_at(1.);
-      table.run_in(record, solution, target_strains, strains_of(solution),
-                   [this](const std::array<double, 6> &e) { return resolve(e); }, output_directory, d);
+      assembly::run_constitutive_table(table, *this, solution, newton_settings, last_state, record,
+                                       output_directory, d);
     }
 
     int

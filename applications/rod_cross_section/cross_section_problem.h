@@ -70,10 +70,6 @@ namespace cosmo
       CrossSectionState
       current_state();
 
-      /// Newton from the current solution to the state with these prescribed strains (t = 1).
-      CrossSectionState
-      resolve(const std::array<double, 6> &strains);
-
       /// The state of the last converged step.
       const CrossSectionState &
       final_state() const

@@ -132,7 +132,7 @@ namespace cosmo
       for (const auto &s : surface_layers.descriptions())
         layers.push_back(s);
       j["surface_layers"]     = layers;
-      add_state_to_summary(j, last_state);
+      assembly::add_state_to_summary(j, last_state, *this, *this);
       JSON &props             = j["section_properties"];
       if (!distributed_mesh) // (not computed on a distributed mesh)
         props["reference_linear"] = reference_properties.to_json();

@@ -14,6 +14,7 @@
 #include <cosmo/solvers/run_start.h>
 #include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/assembly/local_variables.h>
+#include <cosmo/assembly/reduced_rod_table.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/parameter_sweep.h>
@@ -46,6 +47,21 @@ namespace cosmo
         if (c < 3)
           return {2, {c, 3 + c, 0}, {N, dN, 0}};
         return {2, {c == 3 ? 6u : 7u, c == 3 ? 8u : 9u, 0}, {N, dN, 0}};
+      }
+
+      /// What table.h5 records about a strip's run (its units, its parameters).
+      assembly::TableDescription
+      table_description(const ParameterHandler &prm)
+      {
+        assembly::TableDescription d;
+        d.application     = "strip";
+        d.version         = COSMO_VERSION;
+        d.parameters      = io::checkpoint_parameters(prm);
+        d.energy_unit     = "E w h";
+        d.force_unit      = "E w h";
+        d.moment_unit     = "E w h L";
+        d.length_unit     = "L";
+        return d;
       }
     } // namespace
 
@@ -250,18 +266,8 @@ namespace cosmo
     {
       solvers::NaturalParameterContinuation driver(continuation_settings, newton_settings);
       driver.progress = [this](const std::string &s) { say(s); };
-      connect_checkpoints(driver);
+      checkpoints.connect(driver, *this, timer);
       driver.run(*this, solution);
-      return last_state;
-    }
-
-    assembly::ReducedRodState
-    StripProblem::resolve(const std::array<double, 6> &strains)
-    {
-      set_target_strains(strains);
-      set_load_parameter(1.);
-      solvers::newton_solve(*this, solution, newton_settings);
-      last_state = condensed_state(solution);
       return last_state;
     }
 
@@ -271,30 +277,6 @@ namespace cosmo
       follow_path(arclength_settings, newton_settings, solution,
                   [this](const std::string &s) { say(s); });
       return event_records();
-    }
-
-    void
-    StripProblem::connect_run_checkpoints()
-    {
-      write_checkpoint = [this](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
-      if (record.has_checkpoint())
-        resume_from = &record.checkpoint();
-    }
-
-    assembly::TableDescription
-    StripProblem::table_description(const ParameterHandler &prm) const
-    {
-      assembly::TableDescription d;
-      d.application     = "strip";
-      d.version         = COSMO_VERSION;
-      d.parameters      = io::checkpoint_parameters(prm);
-      d.energy_unit     = "E w h";
-      d.force_unit      = "E w h";
-      d.moment_unit     = "E w h L";
-      d.length_unit     = "L";
-      d.free_strains    = strain_is_free;
-      d.held_resultants = resultants_at(1.);
-      return d;
     }
 
     std::vector<std::pair<std::string, std::string>>
@@ -338,19 +320,18 @@ namespace cosmo
             io::PhaseTimer::Scope scope(timer, "constitutive table");
             write_output = false; // no per-point files
             set_load_parameter(1.);
-            table.run_in(record, solution, target_strains, strains_of(solution),
-                         [this](const std::array<double, 6> &e) { return resolve(e); },
-                         output_directory, table_description(prm));
+            assembly::run_constitutive_table(table, *this, solution, newton_settings, last_state,
+                                             record, output_directory, table_description(prm));
             write_output = true;
           }
         else if (arclength_settings.enabled)
           {
-            connect_run_checkpoints();
+            checkpoints.connect_to(record);
             follow_branches();
           }
         else
           {
-            connect_run_checkpoints();
+            checkpoints.connect_to(record);
             solve();
           }
       });
@@ -369,7 +350,7 @@ namespace cosmo
       j["width"]       = strip_width;
       j["thickness"]   = thickness;
       j["field_dofs"]  = n_field;
-      add_state_to_summary(j, last_state, [this](const unsigned int k, io::JSON &x) {
+      assembly::add_state_to_summary(j, last_state, *this, *this, [this](const unsigned int k, io::JSON &x) {
         const std::string tag = Utilities::int_to_string(k + 1, 2);
         x["state_vtu"]        = "event-" + tag + ".vtu";
         if (events()[k].kind == Event::Kind::branch_point)

@@ -65,9 +65,6 @@ namespace cosmo
       /// Continuation from the reference state to t = 1.
       assembly::ReducedRodState
       solve();
-      /// Newton from the current solution to these prescribed strains (t = 1).
-      assembly::ReducedRodState
-      resolve(const std::array<double, 6> &strains);
 
       /// The application: solve and write every output.
       void
@@ -96,9 +93,6 @@ namespace cosmo
       write_fields(const std::string &tag) const override;
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
-      /// This run's checkpoints (written into its directory; resumed with --resume).
-      void
-      connect_run_checkpoints();
       /// The path so far and the postprocessors' state, for a checkpoint.
       void
       save_progress(io::CheckpointWriter &w) const override;
@@ -140,10 +134,6 @@ namespace cosmo
       /// Exact: only the prescribed strain rows depend on t (no growth here).
       int
       load_derivative(const Vector<double> &U, double lambda, Vector<double> &dR) override;
-
-      /// What table.h5 records about this run (units of the strip, free strains, parameters).
-      assembly::TableDescription
-      table_description(const ParameterHandler &prm) const;
 
     private:
       assembly::ConstitutiveTable   table;

@@ -9,6 +9,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include "cross_section_problem.h"
 #include "../reduced_rod_checks.h"
+#include <cosmo/assembly/reduced_rod_table.h>
 #include "../test_tools.h"
 #include <cosmo/analysis/section_properties.h>
 #include <cosmo/io/ranks.h>

@@ -6,11 +6,14 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <cosmo/assembly/bordered_system.h>
+#include <cosmo/assembly/gauged_system.h>
+#include <cosmo/assembly/reduced_rod_records.h>
+#include <cosmo/assembly/rod_strain_control.h>
 #include <cosmo/io/output.h>
-#include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point_study.h>
+#include <cosmo/solvers/factorization_mark.h>
+#include <cosmo/solvers/path_checkpoints.h>
 
 #include <array>
 #include <functional>
@@ -29,8 +32,12 @@
  * Schur complement, which is the 6x6 stiffness.
  *
  * A derived class builds the field (mesh, DoFs, constraint rows, sparsity)
- * and implements assemble_field(); this class does the gauge and strain rows,
- * the Newton interface, the condensed state and the stability count.
+ * and implements assemble_field(). This class puts together what the
+ * strains ask (RodStrainControl: prescribed, free, held resultants), the
+ * bordered linear system with the gauge rows (GaugedSystem) and what the
+ * run has seen (ReducedRodRecords); it assembles the whole residual and
+ * Jacobian and is the Newton and continuation interface, with the
+ * condensed state and the stability count.
  */
 namespace cosmo
 {
@@ -38,110 +45,26 @@ namespace cosmo
   {
     using namespace dealii;
 
-    /// The rod-level quantities of a converged state.
-    struct ReducedRodState
-    {
-      double                t      = 0;
-      double                energy = 0;        ///< Psi, energy per unit reference length
-      std::array<double, 6> strains{};         ///< nu1..3, kappa1..3
-      std::array<double, 6> resultants{};      ///< n1..3, m1..3 = dPsi/d(strains)
-      std::array<double, 6> multipliers{};     ///< of the six gauge constraints
-      FullMatrix<double>    stiffness;         ///< 6x6 d(n,m)/d(nu,kappa)
-      int                   n_negative = -1;   ///< negative Hessian eigenvalues (constrained space)
-      double                min_elastic_J = 0; ///< smallest det Fe (bulk problems)
-    };
-
-    class ReducedRodProblem : public solvers::BifurcationProblem
+    class ReducedRodProblem : public solvers::BifurcationProblem,
+                              public RodStrainControl,
+                              public GaugedSystem,
+                              public ReducedRodRecords
     {
     public:
-      static constexpr unsigned int n_gauge   = 6;
-      static constexpr unsigned int n_strains = 6;
+      using Event = solvers::BifurcationProblem::Event;
 
-      /// Section "Rod strains": Mode, Strains, Free strains.
-      static void
-      declare_strain_parameters(ParameterHandler &prm);
-      void
-      parse_strain_parameters(ParameterHandler &prm);
-
-      /// Override the target strains (prescribed ones reach them at t = 1).
-      void
-      set_target_strains(const std::array<double, 6> &strains)
-      {
-        target_strains = strains;
-        waypoints.clear();
-      }
-      /// Target resultants of the free strains (reached at t = 1).
-      void
-      set_target_resultants(const std::array<double, 6> &n)
-      {
-        target_resultants = n;
-      }
-      /// The resultants the free strains are held at, t times the targets (0 for prescribed strains).
-      std::array<double, 6>
-      resultants_at(double t) const;
-      void
-      set_free_strains(const std::array<bool, 6> &free)
-      {
-        strain_is_free = free;
-      }
-      const std::array<bool, 6> &
-      free_strains() const
-      {
-        return strain_is_free;
-      }
-      /// The last assembled and factorized bordered Jacobian (tests).
-      const BorderedSystem &
-      bordered_system() const
-      {
-        return *system;
-      }
       const io::PhaseTimer &
       timings() const
       {
         return timer;
       }
-      unsigned int
-      n_field_dofs() const
-      {
-        return n_field;
-      }
-
       std::array<double, 6>
       strains_of(const Vector<double> &U) const;
-      std::array<double, 6>
-      prescribed_strains_at(double t) const;
 
       /// Energy, resultants, multipliers, (fresh) stiffness and stability at U.
       ReducedRodState
       condensed_state(const Vector<double> &U);
 
-      /// Every converged state of a run, in order (record_state()).
-      struct PathPoint
-      {
-        double                t;
-        unsigned int          branch;
-        double                energy;
-        int                   n_negative;
-        std::array<double, 6> strains;
-        std::array<double, 6> resultants;
-      };
-      const std::vector<PathPoint> &
-      path() const
-      {
-        return visited;
-      }
-      /// Events located by arclength continuation, with the strains there.
-      const std::vector<Event> &
-      events() const
-      {
-        return located_events;
-      }
-      /// The events with the state and mode at each (a study's critical points).
-      const std::vector<solvers::EventRecord> &
-      event_records() const
-      {
-        return records;
-      }
       /**
        * A critical point to start from: follow_path() then locates it by
        * Newton on the augmented system from this guess (the next point of a
@@ -205,6 +128,13 @@ namespace cosmo
       void
       mode_mask(Vector<double> &mask) const override;
 
+      /// The path so far (load, Newton count, the records) into a checkpoint
+      /// (solvers::PathCheckpoints) and back; an application adds what it writes.
+      virtual void
+      save_progress(io::CheckpointWriter &w) const;
+      virtual void
+      load_progress(io::CheckpointReader &r);
+
     protected:
       /// Integrals that come with every assembly.
       struct FieldIntegrals
@@ -230,19 +160,6 @@ namespace cosmo
                      FullMatrix<double> &         border_block,
                      FieldIntegrals &             out) = 0;
 
-      /// Where assemble_field() adds its cells: R, the system's matrix and
-      /// border columns, and the border block E (assembly::EnergyAssembler).
-      AssemblyTarget
-      field_target(Vector<double> *R, const bool jacobian, FullMatrix<double> &E) const
-      {
-        AssemblyTarget target;
-        target.residual     = R;
-        target.jacobian     = jacobian;
-        target.system       = system.get();
-        target.border_block = &E;
-        return target;
-      }
-
       /**
        * Scales that make the residual rows dimensionless: a modulus times
        * area (force per unit length of rod, e.g. E D^2 or E w h) and a
@@ -260,93 +177,6 @@ namespace cosmo
       virtual void
       gauge_weights(std::array<double, 6> &w) const;
 
-      /// d(prescribed strains)/dt at t (the path's slope; 0 beyond its end).
-      std::array<double, 6>
-      prescribed_strain_rate(double t) const;
-
-      /**
-       * Set up the bordered system once the field exists: the sparsity of
-       * E_UU (n_field x n_field entries; the gauge rows are added here) and
-       * the six constraint rows C (integrals of the shape functions).
-       */
-      void
-      setup_bordered_system(DynamicSparsityPattern &            field_pattern,
-                            const std::array<Vector<double>, 6> &rows,
-                            const std::string &                  linear_solver);
-
-      /**
-       * The same on a mesh distributed over the ranks of `comm`: this rank
-       * owns the field DoFs `owned_field` (contiguous, in rank order) and
-       * writes rows of `relevant_field`; `add_field_entries` adds E_UU's
-       * entries of the rank's cells. The last rank owns the six gauge rows.
-       * The constraint rows are whole on every rank. Afterwards
-       * assemble_field() adds into system->distributed_matrix and sums
-       * nothing itself: assemble() sums the ranks' parts (field_layout).
-       */
-      void
-      setup_distributed_bordered_system(
-        const IndexSet &                                             owned_field,
-        const IndexSet &                                             relevant_field,
-        const std::function<void(TrilinosWrappers::SparsityPattern &)> &add_field_entries,
-        const std::array<Vector<double>, 6> &                        rows,
-        MPI_Comm                                                     comm);
-
-      /// The field DoFs' owners on a distributed mesh (identity otherwise).
-      solvers::ReplicatedVectorLayout field_layout;
-
-      /**
-       * The rod-level keys of summary.json, shared by the applications:
-       * energy, strains, resultants, multipliers, stiffness (and its order),
-       * stability, events (kind, lambda, branch, counts, eigenvalue, strains;
-       * `event_extra(k, entry)` may add keys to event k).
-       */
-      void
-      add_state_to_summary(io::JSON &                                        j,
-                           const ReducedRodState &                           s,
-                           const std::function<void(unsigned int, io::JSON &)> &event_extra = {}) const;
-
-      /**
-       * Checkpoints (io/checkpoint.h), set by the application's run(): how
-       * to write one, and the one to resume from (nullptr: start afresh).
-       * follow_path() and the application's natural-parameter path call
-       * connect_checkpoints() on their driver.
-       */
-      std::function<void(const io::CheckpointWriter &)> write_checkpoint;
-      io::CheckpointReader *                            resume_from = nullptr;
-
-      /// The path so far (visited states, events); an application adds what it writes.
-      virtual void
-      save_progress(io::CheckpointWriter &w) const;
-      virtual void
-      load_progress(io::CheckpointReader &r);
-
-      /**
-       * A driver (arclength or natural parameter) resumes from resume_from
-       * if set, and writes a checkpoint of its state and save_progress()
-       * after every converged step if write_checkpoint is set.
-       */
-      template <typename Driver>
-      void
-      connect_checkpoints(Driver &driver)
-      {
-        if (resume_from)
-          {
-            driver.load(*resume_from);
-            load_progress(*resume_from);
-            if (!resume_from->at_end())
-              throw std::runtime_error("the checkpoint holds more than this run reads");
-            resume_from = nullptr;
-          }
-        if (write_checkpoint)
-          driver.checkpoint = [this, &driver]() {
-            io::PhaseTimer::Scope scope(timer, "checkpoint");
-            io::CheckpointWriter  w;
-            driver.save(w);
-            save_progress(w);
-            write_checkpoint(w);
-          };
-      }
-
       /**
        * Arclength continuation from U at t = 0 (every converged state and
        * event reported through converged_step() and located_event()), or,
@@ -359,12 +189,6 @@ namespace cosmo
                   const solvers::NewtonSettings &   newton,
                   Vector<double> &                  U,
                   const std::function<void(const std::string &)> &progress);
-      /// Append a converged state to path().
-      void
-      record_state(const solvers::StepReport &report, const ReducedRodState &s)
-      {
-        visited.push_back({report.t, report.branch, s.energy, s.n_negative, s.strains, s.resultants});
-      }
 
       /// Full assembly: field, gauge rows, strain rows. Returns > 0 if inadmissible.
       int
@@ -373,36 +197,22 @@ namespace cosmo
                bool                  jacobian,
                FieldIntegrals *      results = nullptr);
 
-      unsigned int                    n_field = 0;
-      std::array<Vector<double>, 6>   constraint_rows;
-      std::unique_ptr<BorderedSystem> system;
       double                          load_parameter = 0;
-      std::array<double, 6>           target_strains{{0, 0, 1, 0, 0, 0}};
-      std::array<bool, 6>             strain_is_free{};
-      std::array<double, 6>           target_resultants{};
-      std::string                     mode = "natural shape";
-      std::vector<std::array<double, 6>> waypoints; ///< 'Path' (empty: straight ramp)
       mutable io::PhaseTimer          timer; ///< (mutable: the const output writers time themselves)
       unsigned int                    total_newton_iterations = 0;
       /// condensed_state() calls: the converged states (path steps, table points) of a run.
       unsigned int                    n_condensed_states = 0;
-      std::vector<PathPoint>             visited;
-      std::vector<Event>                 located_events;
-      std::vector<std::array<double, 6>> strains_at_events;
-      std::vector<solvers::EventRecord>  records;
       std::unique_ptr<solvers::CriticalGuess> critical_guess;
-      /// The state at which the system was last assembled and factorized
-      /// (condensed_state() reuses that factorization when asked at it).
-      Vector<double> factorized_at;
-      double         factorized_load = 0;
-      /// Whether the factorization in place is that of U at the current load.
-      bool
-      factorized_here(const Vector<double> &U) const;
-      /// The next condensed_state() takes the last factorization as that of
-      /// its state: a continued critical point, whose last Newton iterate
-      /// differs from the located point by an update below the located
-      /// precision (solvers/critical_point.h), set by follow_path().
-      bool report_with_last_factorization = false;
+      /// The state at which the system was last factorized (condensed_state()
+      /// and Newton's first Jacobian reuse that factorization when asked at it).
+      solvers::FactorizationMark factorization;
+      /**
+       * Checkpoints (io/checkpoint.h), set by the application's run(): how
+       * to write one, and the one to resume from (nullptr: start afresh).
+       * follow_path() and the application's natural-parameter path connect
+       * their driver to them.
+       */
+      solvers::PathCheckpoints checkpoints;
       /// Where to report a failed factorization (may be empty).
       std::function<void(const std::string &)> report;
     };
