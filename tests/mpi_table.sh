@@ -13,10 +13,12 @@
 #    attributes and dimension scales as one process's;
 # that no rank directory is left, and that the seam check (rank 0 continues
 # one point into rank 1's block and compares) finds the two paths' states
-# equal to 1e-6 of their scales (the same branch: Newton's 1e-10 apart). Then a table interrupted by SIGTERM
-# under mpirun is resumed by 2 ranks from their checkpoints (the table of
-# the uninterrupted 2-rank run, bitwise), and resuming it with another
-# number of ranks is refused (exit 1) naming the number it was begun with.
+# equal to 1e-6 of their scales (the same branch: Newton's 1e-10 apart).
+# Then a table interrupted by SIGTERM under mpirun is resumed: on 2 ranks
+# from their checkpoints (the table of the uninterrupted 2-rank run,
+# bitwise), and begun on 2 and resumed on 1, begun on 1 and resumed on 2
+# (each point taken from the checkpoint of the rank that did it, the rest
+# solved: the uninterrupted table to the tolerance above).
 # usage: mpi_table.sh <strip> <scratch dir>
 set -uo pipefail
 exe=$(realpath "$1") dir=$2

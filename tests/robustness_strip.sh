@@ -2,7 +2,8 @@
 # A constitutive table killed (SIGKILL) and interrupted (SIGTERM) part-way
 # and resumed (--resume) writes the table of an uninterrupted run, row for
 # row (bitwise: the points after the checkpoint are solved from the same
-# state); no checkpoint is left at the end.
+# state); no checkpoint is left at the end. A checkpoint of an earlier
+# format version is refused (exit 1) as of another version, not misread.
 # usage: robustness_strip.sh <strip> <scratch dir>
 set -uo pipefail
 exe=$(realpath "$1") dir=$2
@@ -24,6 +25,7 @@ for sig in KILL TERM; do
   for _ in $(seq 1 600); do [ -f "$sig/checkpoint.cosmo" ] && break; sleep 0.02; done
   kill -$sig $pid; wait $pid 2>/dev/null; s1=$?
   rows=$(($(wc -l < "$sig/table.csv") - 1))
+  [ $sig = KILL ] && cp -r "$sig" old_format
   timeout 300 "$exe" --quiet --resume "$sig" > "$sig-1.txt" 2>&1; s2=$?
   want=$([ $sig = KILL ] && echo 137 || echo 143)
   if [ $s1 -eq "$want" ] && [ $rows -ge 1 ] && [ $rows -lt 231 ] && [ $s2 -eq 0 ] &&
@@ -32,4 +34,16 @@ for sig in KILL TERM; do
     ok "a table stopped by SIG$sig after $rows of 231 points and resumed: the uninterrupted table.csv"
   else bad "table SIG$sig: exits $s1 $s2, $rows rows"; cat "$sig-1.txt"; diff whole/table.csv "$sig/table.csv" | head -4; fi
 done
+
+# The killed run's checkpoint (a copy) with the format version of before
+# the table's point header, 3 (the first number after the magic line).
+/usr/bin/python3 -c "
+import struct, sys
+f = sys.argv[1]; b = bytearray(open(f, 'rb').read()); n = len(b'cosmo checkpoint\n')
+assert struct.unpack_from('<Q', b, n)[0] > 3; struct.pack_into('<Q', b, n, 3); open(f, 'wb').write(b)
+" old_format/checkpoint.cosmo
+timeout 300 "$exe" --quiet --resume old_format > old_format.txt 2>&1; s=$?
+if [ $s -eq 1 ] && grep -q "another version" old_format.txt; then
+  ok "a checkpoint of format version 3 refused: exit 1, 'another version'"
+else bad "a checkpoint of format version 3: exit $s"; cat old_format.txt; fi
 exit $fail

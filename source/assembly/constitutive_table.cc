@@ -13,6 +13,7 @@
 #include <iomanip>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <tuple>
 
@@ -53,10 +54,6 @@ namespace cosmo
       TableCheckpointing cp;
       cp.write      = [&record](const io::CheckpointWriter &w) { record.write_checkpoint(w); };
       cp.save_start = [&](io::CheckpointWriter &w) { w.put_vector(start); };
-      cp.load_start = [&](io::CheckpointReader &r) {
-        r.get_vector(start);
-        solution = start;
-      };
       cp.set_start = [&](const std::vector<double> &v) {
         start.reinit(v.size());
         std::copy(v.begin(), v.end(), start.begin());
@@ -64,8 +61,6 @@ namespace cosmo
       };
       cp.read_in  = [&record](const std::string &d) { return record.read_checkpoint_in(d); };
       cp.resuming = record.resuming();
-      if (record.has_checkpoint())
-        cp.resume = &record.checkpoint();
       run(base, start_strains, resolve, [&]() { start = solution; }, [&]() { solution = start; },
           directory, record.reporter(), description, cp);
     }
@@ -139,14 +134,17 @@ namespace cosmo
         return n == 1 ? a : a + (b - a) * i / (n - 1);
       }
 
-      /// A point of an earlier run on another number of ranks, taken as it is.
-      struct Earlier
+      /**
+       * What a table's checkpoint holds after its point header (io/ranks.h):
+       * the values of the rank's points so far (over the whole grid, NaN
+       * where not done), the strains and state of its last converged point.
+       */
+      struct Saved
       {
-        unsigned int                     next = 0, begin = 0;
-        std::array<double, 6>            last{};
-        std::vector<double>              start_state;
-        std::vector<std::vector<double>> rows;
-        std::vector<double>              energy, resultants, stiffness, converged;
+        unsigned int          n_failed = 0;
+        std::array<double, 6> last{};
+        std::vector<double>   energy, resultants, stiffness, converged;
+        std::vector<double>   start_state;
       };
 
       /**
@@ -231,8 +229,12 @@ namespace cosmo
         std::array<double, 6> last;
         unsigned int          n_failed = 0;
         /// Points are taken in serpentine order; this rank's are done up to `next`.
-        unsigned int         next = 0;
-        std::vector<Earlier> earlier;
+        unsigned int next = 0;
+        /// Resumed on another number of ranks: the rows of the points any
+        /// earlier rank did, and what each earlier rank held, by the first
+        /// point it had not done (io::ranks::Resumed).
+        std::map<unsigned int, std::vector<double>> earlier_rows;
+        std::map<unsigned int, Saved>               earlier;
         /// The state of a point away from the last one solved here (a
         /// block's first point, or one after an earlier run's points):
         /// reached in substeps from the start, more of them than between
@@ -249,10 +251,10 @@ namespace cosmo
         solve_point(const std::array<double, 6> &e, bool far, ReducedRodState &s) const;
         void
         write_checkpoint() const;
-        Earlier
-        read_payload(io::CheckpointReader &r, unsigned int &ranks_then) const;
+        Saved
+        read_saved(io::CheckpointReader &r) const;
         void
-        resume_from_other_ranks();
+        resume_from_other_ranks(io::ranks::Resumed &resumed);
         /// Point `next` done by an earlier run: taken as it is (true), else its start set.
         bool
         take_earlier();
@@ -291,79 +293,67 @@ namespace cosmo
       {
         if (!checkpointing.write)
           return;
+        // The point header first, so that a run resumed on another number
+        // of ranks finds each point in the checkpoint of the rank that did it.
         io::CheckpointWriter w;
-        w.put(n_ranks);
-        w.put(io::ranks::rank());
-        w.put(next);
+        io::ranks::put_point_header(w, block_begin, next, table);
         w.put(n_failed);
         w.put_vector(last);
         w.put_vector(energy);
         w.put_vector(resultants);
         w.put_vector(stiffness);
         w.put_vector(converged);
-        table.save(w);
         checkpointing.save_start(w);
         checkpointing.write(w);
       }
 
-      Earlier
-      TableRun::read_payload(io::CheckpointReader &r, unsigned int &ranks_then) const
+      Saved
+      TableRun::read_saved(io::CheckpointReader &r) const
       {
-        Earlier e;
-        ranks_then                   = r.get_unsigned();
-        const unsigned int rank_then = r.get_unsigned();
-        e.begin                      = io::ranks::block(N, rank_then, ranks_then).first;
-        e.next                       = r.get_unsigned();
-        r.get_unsigned(); // its failed points: counted again from its rows
+        Saved v;
+        v.n_failed   = r.get_unsigned();
         const auto l = r.get_vector();
-        std::copy(l.begin(), l.end(), e.last.begin());
-        e.energy       = r.get_vector();
-        e.resultants   = r.get_vector();
-        e.stiffness    = r.get_vector();
-        e.converged    = r.get_vector();
-        io::CSVTable c = table;
-        c.load(r);
-        e.rows        = c.row_values();
-        e.start_state = r.get_vector();
-        if (e.energy.size() != N || e.next > N || e.rows.size() != e.next - e.begin)
+        std::copy(l.begin(), l.end(), v.last.begin());
+        v.energy      = r.get_vector();
+        v.resultants  = r.get_vector();
+        v.stiffness   = r.get_vector();
+        v.converged   = r.get_vector();
+        v.start_state = r.get_vector();
+        if (v.energy.size() != N)
           throw std::runtime_error("the checkpoint's table has another size");
-        return e;
+        return v;
       }
 
       void
       TableRun::resume()
       {
-        unsigned int ranks_then = n_ranks;
-        if (checkpointing.resume)
+        if (checkpointing.resuming)
           {
-            // Peek: the same number of ranks goes on exactly where it was.
-            io::CheckpointReader peek = *checkpointing.resume;
-            ranks_then                = peek.get_unsigned();
+            auto resumed = io::ranks::resume_points(directory, table, checkpointing.read_in);
+            if (resumed.same_ranks)
+              {
+                // The same number of ranks goes on exactly where it was.
+                Saved v = read_saved(resumed.reader);
+                next    = resumed.own.next;
+                if (next > block_end || next < block_begin)
+                  throw std::runtime_error("the checkpoint's table has another size");
+                for (const auto &row : resumed.own.rows)
+                  table.add_row(row);
+                n_failed   = v.n_failed;
+                last       = v.last;
+                energy     = std::move(v.energy);
+                resultants = std::move(v.resultants);
+                stiffness  = std::move(v.stiffness);
+                converged  = std::move(v.converged);
+                checkpointing.set_start(v.start_state);
+                save();
+                far = next == block_begin && block_begin > 0;
+                progress("  going on after " + std::to_string(next - block_begin) + " of " +
+                         std::to_string(block_end - block_begin) + " table points");
+              }
+            else
+              resume_from_other_ranks(resumed);
           }
-        if (checkpointing.resume && ranks_then == n_ranks)
-          {
-            io::CheckpointReader &r = *checkpointing.resume;
-            r.get_unsigned();
-            r.get_unsigned();
-            next         = r.get_unsigned();
-            n_failed     = r.get_unsigned();
-            const auto l = r.get_vector();
-            std::copy(l.begin(), l.end(), last.begin());
-            energy     = r.get_vector();
-            resultants = r.get_vector();
-            stiffness  = r.get_vector();
-            converged  = r.get_vector();
-            table.load(r);
-            checkpointing.load_start(r);
-            save();
-            if (energy.size() != N || next > block_end || next < block_begin)
-              throw std::runtime_error("the checkpoint's table has another size");
-            far = next == block_begin && block_begin > 0;
-            progress("  going on after " + std::to_string(next - block_begin) + " of " +
-                     std::to_string(block_end - block_begin) + " table points");
-          }
-        else if (checkpointing.resuming)
-          resume_from_other_ranks();
         if (n_ranks > 1)
           progress("  table points " + std::to_string(block_begin + 1) + " to " +
                    std::to_string(block_end) + " of " + std::to_string(N) + " on rank " +
@@ -371,33 +361,21 @@ namespace cosmo
       }
 
       void
-      TableRun::resume_from_other_ranks()
+      TableRun::resume_from_other_ranks(io::ranks::Resumed &resumed)
       {
-        // Begun on another number of ranks: every rank's points so far
-        // (rank 0's checkpoint in the run's directory, rank k's in
-        // rank-k/), each point of this rank's block taken from the one
-        // that did it; the others solved here, from the state an earlier
-        // rank stopped at where it stopped, else from this rank's last.
-        const std::string    shared = io::ranks::shared_directory();
-        io::CheckpointReader r0     = checkpointing.read_in(shared);
-        unsigned int         ranks_then;
-        earlier.push_back(read_payload(r0, ranks_then));
-        for (unsigned int k = 1; k < ranks_then; ++k)
-          {
-            const std::string d = io::ranks::private_directory(shared, k);
-            if (!std::filesystem::exists(d + "/" + io::checkpoint_name))
-              continue; // rank k had finished no point
-            io::CheckpointReader rk = checkpointing.read_in(d);
-            unsigned int         ignore;
-            earlier.push_back(read_payload(rk, ignore));
-          }
-        unsigned int taken = 0;
-        for (const auto &e : earlier)
-          for (unsigned int q = std::max(e.begin, block_begin); q < std::min(e.next, block_end); ++q)
-            ++taken;
+        // Begun on another number of ranks: every rank's points so far, each
+        // point of this rank's block taken from the one that did it; the
+        // others solved here, from the state an earlier rank stopped at
+        // where it stopped, else from this rank's last.
+        earlier_rows = std::move(resumed.done);
+        for (auto &[stopped_at, r] : resumed.after)
+          earlier.emplace(stopped_at, read_saved(r));
+        const auto taken =
+          std::distance(earlier_rows.lower_bound(block_begin), earlier_rows.lower_bound(block_end));
         progress("  resumed on " + std::to_string(n_ranks) + " ranks a table begun on " +
-                 std::to_string(ranks_then) + ": " + std::to_string(taken) + " of this rank's " +
-                 std::to_string(block_end - block_begin) + " points done before");
+                 std::to_string(resumed.ranks_then) + ": " + std::to_string(taken) +
+                 " of this rank's " + std::to_string(block_end - block_begin) +
+                 " points done before");
       }
 
       bool
@@ -433,30 +411,27 @@ namespace cosmo
       TableRun::take_earlier()
       {
         const unsigned int p = grid_index(next);
-        if (const auto done = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
-              return x.begin <= next && next < x.next;
-            });
-            done != earlier.end())
+        if (const auto row = earlier_rows.find(next); row != earlier_rows.end())
           {
-            // Solved by an earlier run: its row and values as they are.
-            table.add_row(done->rows[next - done->begin]);
-            converged[p] = done->converged[p];
-            energy[p]    = done->energy[p];
-            std::copy_n(done->resultants.begin() + 6 * p, 6, resultants.begin() + 6 * p);
-            std::copy_n(done->stiffness.begin() + 36 * p, 36, stiffness.begin() + 36 * p);
+            // Solved by an earlier run: its row and values as they are, from
+            // the rank that did it (the blocks are disjoint and in order, so
+            // the first to stop after this point).
+            const Saved &done = earlier.upper_bound(next)->second;
+            table.add_row(row->second);
+            converged[p] = done.converged[p];
+            energy[p]    = done.energy[p];
+            std::copy_n(done.resultants.begin() + 6 * p, 6, resultants.begin() + 6 * p);
+            std::copy_n(done.stiffness.begin() + 36 * p, 36, stiffness.begin() + 36 * p);
             n_failed += converged[p] == 0;
             far = true;
             return true;
           }
-        if (const auto stopped = std::find_if(earlier.begin(), earlier.end(), [&](const Earlier &x) {
-              return x.next == next && x.next > x.begin;
-            });
-            stopped != earlier.end())
+        if (const auto stopped = earlier.find(next); stopped != earlier.end())
           {
             // An earlier rank stopped here: its state is this point's neighbour.
-            checkpointing.set_start(stopped->start_state);
+            checkpointing.set_start(stopped->second.start_state);
             save();
-            last = stopped->last;
+            last = stopped->second.last;
             far  = false;
           }
         return false;

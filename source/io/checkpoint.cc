@@ -19,7 +19,10 @@ namespace cosmo
       // Rim rod / Law, Growth kind): a checkpoint of version 1 is refused.
       // 3: steps.csv and the VTU collections are postprocessors' state
       // (io/postprocessors.h), saved by name after the application's.
-      const std::uint64_t format_version = 3;
+      // 4: a constitutive table's checkpoint begins with the point header of
+      // io/ranks.h, as a study's does (a table's checkpoint of version 3
+      // would be misread).
+      const std::uint64_t format_version = 4;
 
       std::string
       trim(const std::string &s)

@@ -28,27 +28,24 @@ namespace cosmo
   {
     /**
      * Checkpoints of a table (io/checkpoint.h): after a finished point (at
-     * most once a second, and at a signal) the points so far and the
-     * state the next point starts from; a run given `resume` goes on
-     * after the last point it holds and writes the table an
-     * uninterrupted run writes.
+     * most once a second, and at a signal) the points so far, with the
+     * point header of io/ranks.h, and the state the next point starts
+     * from; a resumed run goes on after the last point it holds and writes
+     * the table an uninterrupted run writes.
      */
     struct TableCheckpointing
     {
       /// Write the run's checkpoint with this payload.
       std::function<void(const io::CheckpointWriter &)> write;
-      /// The state `save` keeps (the next point's start), into and out of a checkpoint.
+      /// The state `save` keeps (the next point's start), into a checkpoint as a vector.
       std::function<void(io::CheckpointWriter &)> save_start;
-      std::function<void(io::CheckpointReader &)> load_start;
-      /// Go on from this checkpoint's payload (nullptr: from the start).
-      io::CheckpointReader *resume = nullptr;
       /**
        * The run is resumed (--resume), with or without a checkpoint of this
-       * rank's: begun on another number of MPI ranks, the points so far of
-       * every earlier rank are read (read_in: the run's checkpoint in
-       * another directory) and each rank takes those of its block; where
-       * an earlier rank stopped, its state (set_start) is the next point's
-       * start.
+       * rank's (io::ranks::resume_points, reading with read_in: the run's
+       * checkpoint in a directory). On as many MPI ranks, each rank goes on
+       * from its own; begun on another number, each rank takes the points
+       * of its block any earlier rank did, and where an earlier rank
+       * stopped, its state (set_start) is the next point's start.
        */
       bool resuming = false;
       std::function<io::CheckpointReader(const std::string &)> read_in;
