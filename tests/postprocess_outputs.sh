@@ -7,10 +7,18 @@
 #     once in solution.pvd (path order) and solution-branch-0.pvd, while
 #     steps.csv has every state;
 #  2. only 'steps table': steps.csv and no VTU or PVD file;
-#  3. only 'fields': every state's VTU and no steps.csv.
-# usage: postprocess_outputs.sh <rod_cross_section> <scratch dir>
+#  3. only 'fields': every state's VTU and no steps.csv;
+#  4. a run that fails (exit 2: 'Maximum number of steps' = 5 before its
+#     target) with Steps between outputs = 0 still writes its last converged
+#     state, step 5, and only it;
+#  5. a strip twisted past its first branch point ('Stop at first event'):
+#     'fields' writes the event's state and mode (event-01.vtu,
+#     event-01-mode.vtu) with no converged state's VTU (Steps between
+#     outputs = 0 and the run stops at the event); without 'fields', no
+#     event file.
+# usage: postprocess_outputs.sh <rod_cross_section> <strip> <scratch dir>
 set -uo pipefail
-exe=$(realpath "$1") dir=$2
+exe=$(realpath "$1") strip=$(realpath "$2") dir=$3
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 prm() { # name, list, interval
   cat <<PRM
@@ -26,6 +34,7 @@ subsection Continuation
   set Initial step = 0.1
   set Maximum step = 0.1
   set Minimum step = 0.1
+  set Maximum number of steps = ${4:-200}
 end
 subsection Output
   set Output directory = $1
@@ -40,10 +49,52 @@ end
 PRM
 }
 fail=0
+strip_prm() { # name, list
+  cat <<PRM
+subsection Strip
+  set Width = 1
+  set Thickness = 0.02
+  set Number of cells = 10
+end
+subsection Rod strains
+  set Mode = prescribed strains
+  set Strains = 0, 0, 1, 0, 0, 2
+  set Free strains = nu3
+end
+subsection Path following
+  set Method = arclength
+end
+subsection Arclength continuation
+  set Parameter range = 0, 0.8
+  set Initial step = 0.05
+  set Maximum step = 0.1
+  set Stop at first event = true
+end
+subsection Output
+  set Output directory = $1
+end
+subsection Postprocess
+  set List of postprocessors = $2
+  subsection fields
+    set Steps between outputs = 0
+  end
+end
+PRM
+}
 for run in "every3|steps table, fields|3" "table_only|steps table|1" "fields_only|fields|1"; do
   IFS='|' read -r name list interval <<< "$run"
   prm "$name" "$list" "$interval" > "$name.prm"
   timeout 300 "$exe" --quiet "$name.prm" > "$name.txt" 2>&1 || { echo "  FAIL  $name: status $?"; cat "$name.txt"; fail=1; }
+done
+prm stalled "steps table, fields" 0 5 > stalled.prm
+timeout 300 "$exe" --quiet stalled.prm > stalled.txt 2>&1
+status=$?
+[[ $status == 2 ]] && echo "  ok    stalled: exit status 2 (target not reached)" ||
+  { echo "  FAIL  stalled: status $status, not 2"; cat stalled.txt; fail=1; }
+for run in "events|steps table, fields" "no_events|steps table"; do
+  IFS='|' read -r name list <<< "$run"
+  strip_prm "$name" "$list" > "$name.prm"
+  timeout 300 "$strip" --quiet "$name.prm" > "$name.txt" 2>&1 || { echo "  FAIL  $name: status $?"; cat "$name.txt"; fail=1; }
 done
 python3 - <<'PY' || fail=1
 import csv, glob, os, sys
@@ -72,6 +123,17 @@ check("table_only: no VTU or PVD file", not glob.glob("table_only/*.vtu") + glob
       glob.glob("table_only/*.*vt*"))
 check("fields_only: no steps.csv", not os.path.exists("fields_only/steps.csv"))
 check("fields_only: every state's VTU", len(glob.glob("fields_only/solution-*.vtu")) == 11)
+s = steps("stalled")
+check("stalled: steps.csv has steps 0 to 5", s == list(range(6)), s)
+check("stalled: its last converged state's VTU, alone, in solution.pvd",
+      listed("stalled/solution.pvd") == ["solution-0005.vtu"], listed("stalled/solution.pvd"))
+check("stalled: no other VTU", sorted(os.path.basename(f) for f in glob.glob("stalled/*.vtu")) ==
+      ["rod-0005.vtu", "solution-0005.vtu"], glob.glob("stalled/*.vtu"))
+check("events: the event's state and mode", os.path.exists("events/event-01.vtu") and
+      os.path.exists("events/event-01-mode.vtu"), glob.glob("events/*.vtu"))
+check("events: no converged state's VTU (the run stopped at the event)",
+      not glob.glob("events/section-*.vtu") + glob.glob("events/strip-*.vtu"), glob.glob("events/*.vtu"))
+check("no_events: no event file without 'fields'", not glob.glob("no_events/*.vtu"), glob.glob("no_events/*"))
 sys.exit(0 if ok else 1)
 PY
 exit $fail

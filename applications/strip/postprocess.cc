@@ -190,10 +190,15 @@ namespace cosmo
             << ")";
           say(m.str());
         }
-      if (!write_output)
-        return;
-      const std::string tag = Utilities::int_to_string(located_events.size(), 2);
-      write_section(output_directory + "/event-" + tag + ".vtu", U);
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    StripProblem::write_event_fields(const std::string &   tag,
+                                     const Vector<double> &U,
+                                     const Vector<double> *mode) const
+    {
+      std::vector<std::pair<std::string, std::string>> files = {{"event", "event-" + tag + ".vtu"}};
+      write_section(output_directory + "/" + files[0].second, U);
       if (mode)
         {
           // The mode as a perturbation of the state at the event, scaled to
@@ -204,8 +209,10 @@ namespace cosmo
             m = std::max(m, std::abs((*mode)[i]));
           if (m > 0)
             V.add(0.1 * strip_width / m, *mode);
-          write_section(output_directory + "/event-" + tag + "-mode.vtu", V);
+          files.emplace_back("event mode", "event-" + tag + "-mode.vtu");
+          write_section(output_directory + "/" + files[1].second, V);
         }
+      return files;
     }
 
     void

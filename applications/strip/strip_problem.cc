@@ -305,7 +305,6 @@ namespace cosmo
     void
     StripProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
     {
-      write_output = true;
       solvers::start_run(record, *this, options, prm, output_directory, false);
       setup_system();
       std::ostringstream info;
@@ -318,11 +317,9 @@ namespace cosmo
         if (table.enabled())
           {
             io::PhaseTimer::Scope scope(timer, "constitutive table");
-            write_output = false; // no per-point files
             set_load_parameter(1.);
             assembly::run_constitutive_table(table, *this, solution, newton_settings, last_state,
                                              record, output_directory, table_description(prm));
-            write_output = true;
           }
         else if (arclength_settings.enabled)
           {

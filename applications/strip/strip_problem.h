@@ -91,6 +91,11 @@ namespace cosmo
       quantity_columns() const override;
       std::vector<std::pair<std::string, std::string>>
       write_fields(const std::string &tag) const override;
+      /// event-NN.vtu (the section at the event) and event-NN-mode.vtu.
+      std::vector<std::pair<std::string, std::string>>
+      write_event_fields(const std::string &   tag,
+                         const Vector<double> &U,
+                         const Vector<double> *mode) const override;
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
       /// The path so far and the postprocessors' state, for a checkpoint.
@@ -137,8 +142,6 @@ namespace cosmo
 
     private:
       assembly::ConstitutiveTable   table;
-      /// The run writes its files (run()); programmatic use does not.
-      bool                          write_output = false;
 
       // Discretization
       Triangulation<1>             triangulation;

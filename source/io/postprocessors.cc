@@ -80,7 +80,10 @@ namespace cosmo
     Postprocessors::execute(const PostprocessedState &state)
     {
       for (auto &s : selected)
-        s.second->execute(state);
+        if (state.kind == PostprocessedState::Kind::path_end)
+          s.second->path_ended(state);
+        else
+          s.second->execute(state);
     }
 
     void

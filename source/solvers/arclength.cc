@@ -32,8 +32,25 @@ namespace cosmo
       s.n_negative = e.n_negative_after;
       s.event      = e.name();
       s.unknowns   = &U;
+      s.mode       = mode;
       problem.postprocess(s);
     }
+
+    namespace
+    {
+      /// The report of a branch's last converged state s (step `step`).
+      template <typename State>
+      StepReport
+      branch_end_report(const State &s, const unsigned int step, const unsigned int branch)
+      {
+        StepReport last;
+        last.step       = step;
+        last.t          = s.lambda;
+        last.branch     = branch;
+        last.n_negative = s.n_negative;
+        return last;
+      }
+    } // namespace
 
     int
     BifurcationProblem::load_derivative(const Vector<double> &U,
@@ -1349,6 +1366,7 @@ namespace cosmo
                   // The path did not reach its target: the run fails at the end
                   // (after the other branches), never "converged".
                   incomplete.push_back(m.str());
+                  report_path_end(problem, s.U, branch_end_report(s, step, branch));
                   return;
                 }
               --k;

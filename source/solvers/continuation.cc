@@ -62,6 +62,19 @@ namespace cosmo
     }
 
     void
+    report_path_end(const ContinuationProblem &problem, const Vector<double> &U, const StepReport &last)
+    {
+      io::PostprocessedState s;
+      s.kind       = io::PostprocessedState::Kind::path_end;
+      s.step       = last.step;
+      s.branch     = last.branch;
+      s.t          = last.t;
+      s.n_negative = last.n_negative;
+      s.unknowns   = &U;
+      problem.postprocess(s);
+    }
+
+    void
     ContinuationSettings::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Continuation");
@@ -238,6 +251,8 @@ namespace cosmo
           dt_previous = at.dt_previous;
           dt          = at.dt;
           step        = at.step;
+          report.step = step; // (the path's end, should it end before its target)
+          report.t    = t;
         }
       else
         {
@@ -247,44 +262,53 @@ namespace cosmo
           save_point();
         }
 
-      while (t < settings.target - 1e-14)
+      try
         {
-          io::check_interrupt(); // between steps: the last converged state is written
-          check_step_limit(step, settings, t);
-          dt                 = std::min(dt, settings.target - t);
-          const double t_new = (settings.target - (t + dt) < 1e-12) ? settings.target : t + dt;
-
-          Vector<double> U_trial =
-            secant_predictor(problem, U, U_previous, t, t_new, dt_previous, step);
-
-          problem.set_load_parameter(t_new);
-          try
+          while (t < settings.target - 1e-14)
             {
-              const NewtonResult r = newton_solve(problem, U_trial, newton);
-              U_previous           = U;
-              U                    = U_trial;
-              dt_previous          = t_new - t;
-              t                    = t_new;
-              ++step;
-              report.step              = step;
-              report.t                 = t;
-              report.step_length       = dt_previous;
-              report.newton_iterations = r.iterations;
-              report.residual_norm     = r.residual_norm;
-              report.cutbacks          = cutbacks;
-              report.final             = (t >= settings.target - 1e-14);
-              report_converged_step(problem, U, report);
-              cutbacks = 0;
-              if (r.iterations <= settings.easy_iterations)
-                dt = std::min(settings.maximum_step, dt * settings.growth_factor);
-              save_point();
+              io::check_interrupt(); // between steps: the last converged state is written
+              check_step_limit(step, settings, t);
+              dt                 = std::min(dt, settings.target - t);
+              const double t_new = (settings.target - (t + dt) < 1e-12) ? settings.target : t + dt;
+
+              Vector<double> U_trial =
+                secant_predictor(problem, U, U_previous, t, t_new, dt_previous, step);
+
+              problem.set_load_parameter(t_new);
+              try
+                {
+                  const NewtonResult r = newton_solve(problem, U_trial, newton);
+                  U_previous           = U;
+                  U                    = U_trial;
+                  dt_previous          = t_new - t;
+                  t                    = t_new;
+                  ++step;
+                  report.step              = step;
+                  report.t                 = t;
+                  report.step_length       = dt_previous;
+                  report.newton_iterations = r.iterations;
+                  report.residual_norm     = r.residual_norm;
+                  report.cutbacks          = cutbacks;
+                  report.final             = (t >= settings.target - 1e-14);
+                  report_converged_step(problem, U, report);
+                  cutbacks = 0;
+                  if (r.iterations <= settings.easy_iterations)
+                    dt = std::min(settings.maximum_step, dt * settings.growth_factor);
+                  save_point();
+                }
+              catch (NewtonFailure &e)
+                {
+                  ++cutbacks;
+                  problem.set_load_parameter(t);
+                  cut_back(dt, t, t_new, e.what(), settings, progress);
+                }
             }
-          catch (NewtonFailure &e)
-            {
-              ++cutbacks;
-              problem.set_load_parameter(t);
-              cut_back(dt, t, t_new, e.what(), settings, progress);
-            }
+        }
+      catch (io::RunFailure &)
+        {
+          // The target is not reached: the last converged state is the path's end.
+          report_path_end(problem, U, report);
+          throw;
         }
       return step;
     }

@@ -65,6 +65,19 @@ namespace cosmo
       {
         return {};
       }
+      /**
+       * Writes the fields of a located event's state U, and of its critical
+       * mode if there is one, into the run's directory (e.g. event-01.vtu
+       * and event-01-mode.vtu; `tag` numbers the run's events from 01), and
+       * returns each kind with the file name written.
+       */
+      virtual std::vector<std::pair<std::string, std::string>>
+      write_event_fields(const std::string & /*tag*/,
+                         const Vector<double> & /*U*/,
+                         const Vector<double> * /*mode*/) const
+      {
+        return {};
+      }
     };
 
     /// What a postprocessor sees of a state.
@@ -73,7 +86,11 @@ namespace cosmo
       enum class Kind
       {
         converged_state,
-        located_event
+        located_event,
+        /// The last converged state of a path or branch that ended before its
+        /// target (the run then fails), already given to execute(): it goes to
+        /// Postprocessor::path_ended(), never to execute().
+        path_end
       };
       Kind         kind = Kind::converged_state;
       unsigned int step = 0, branch = 0;
@@ -85,6 +102,8 @@ namespace cosmo
       std::string event;
       /// The unknowns (the application's DoF vector at this state).
       const Vector<double> *unknowns = nullptr;
+      /// The critical mode at a located branch point (null otherwise).
+      const Vector<double> *mode = nullptr;
       /// The application's quantities of this state by name: the columns
       /// of its steps.csv row (converged states; empty for events).
       std::vector<std::pair<std::string, double>> quantities;
@@ -111,6 +130,14 @@ namespace cosmo
       /// Called at every converged state and every located event.
       virtual void
       execute(const PostprocessedState &state) = 0;
+      /**
+       * Called when a path or branch ends before its target, with its last
+       * converged state (given to execute() before): what a postprocessor
+       * writes of the last state only is written now, as the run fails.
+       */
+      virtual void
+      path_ended(const PostprocessedState & /*last*/)
+      {}
       /// Called once when the run's path is complete (not after a failure).
       virtual void
       finish(const std::string & /*output_directory*/)

@@ -117,6 +117,10 @@ namespace cosmo
     /// reports a converged state.
     void
     report_converged_step(ContinuationProblem &problem, const Vector<double> &U, const StepReport &report);
+    /// The postprocessors told that the path (or a branch) ends before its
+    /// target at its last converged state U, reported before as `last`.
+    void
+    report_path_end(const ContinuationProblem &problem, const Vector<double> &U, const StepReport &last);
 
 
     struct ContinuationSettings
