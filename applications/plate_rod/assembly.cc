@@ -12,7 +12,7 @@
 #include <cosmo/io/ranks.h>
 #include <cosmo/materials/energy_derivatives.h>
 
-#include "plate_rod_problem.h"
+#include "assembly.h"
 
 #include <cmath>
 #include <limits>
@@ -28,6 +28,7 @@ namespace cosmo
       constexpr int n_rim   = kinematics::rim_local_variables;
 
       using assembly::Drive;
+      using ShearIntegration = PlateRodParameters::ShearIntegration;
 
       Drive
       plate_drive(const unsigned int c, const double N, const Tensor<1, 2> &g)
@@ -50,12 +51,6 @@ namespace cosmo
         return {2, {10, 11, 0}, {N, dS, 0}};
       }
 
-
-
-    } // namespace
-
-    namespace
-    {
       // COSMO_PLATE_NESTED_AD=1: nested AD of the plate energy even where the
       // model has a chain rule (to measure against, benchmarks/README.md).
       const bool nested_ad_only = std::getenv("COSMO_PLATE_NESTED_AD") != nullptr;
@@ -136,7 +131,7 @@ namespace cosmo
     } // namespace
 
     /// Per-thread work space of the cell loop (WorkStream scratch).
-    struct PlateRodProblem::Scratch
+    struct PlateRodAssembly::Scratch
     {
       Scratch(const Mapping<2> &     mapping,
               const FiniteElement<2> &fe,
@@ -203,23 +198,25 @@ namespace cosmo
 
     /// What every cell of one assembly shares: the load, the laws at it, the
     /// assumed shear's tying points and weights.
-    struct PlateRodProblem::CellLoopData
+    struct PlateRodAssembly::CellLoopData
     {
-      CellLoopData(const PlateRodProblem &p, const Quadrature<2> &full, const bool jacobian)
-        : dpc(p.discretization.fe->n_dofs_per_cell())
+      CellLoopData(const PlateRodAssembly &a, const Quadrature<2> &full, const double t,
+                   const bool jacobian)
+        : dpc(a.discretization.fe->n_dofs_per_cell())
         , comp(dpc)
-        , assumed_shear(p.degree, p.shear_integration != ShearIntegration::interior_tying)
+        , assumed_shear(a.parameters.degree,
+                        a.parameters.shear_integration != ShearIntegration::interior_tying)
         , tying_weights(assumed_shear.interpolation(full))
         , n_tying(assumed_shear.n_tying_points())
         , n_locations(assumed_shear.tying_points().size())
         , strains_at(n_locations)
-        , t(p.load_parameter)
-        , rim_natural_curvature(p.rim_growth->natural_curvature(t))
-        , shear_scale(p.model->shear_scale())
+        , t(t)
+        , rim_natural_curvature(a.parameters.rim_growth->natural_curvature(t))
+        , shear_scale(a.parameters.model->shear_scale())
         , jacobian(jacobian)
       {
         for (unsigned int i = 0; i < dpc; ++i)
-          comp[i] = p.discretization.fe->system_to_component_index(i).first;
+          comp[i] = a.discretization.fe->system_to_component_index(i).first;
         // The tied strains at each location (e_0 and e_1 share some), once per assembly.
         for (unsigned int k = 0; k < n_tying; ++k)
           strains_at[assumed_shear.location_of(k)].push_back(k);
@@ -242,9 +239,9 @@ namespace cosmo
     // the tying points' strains e_k only, so its gradient is sum_k mu_k de_k/dU and its Hessian
     // V M V^T + sum_k mu_k d2e_k/dU2, with mu_k = dE/de_k, M_kl = d2E/de_k de_l, V = de/dU.
     double
-    PlateRodProblem::assumed_shear_of_cell(const CellLoopData &        d,
-                                           Scratch &                   sc,
-                                           assembly::CellContribution &c) const
+    PlateRodAssembly::assumed_shear_of_cell(const CellLoopData &        d,
+                                            Scratch &                   sc,
+                                            assembly::CellContribution &c) const
     {
       const unsigned int dpc = d.dpc, n_tying = d.n_tying, n_locations = d.n_locations;
       const auto &       comp          = d.comp;
@@ -270,9 +267,10 @@ namespace cosmo
       for (unsigned int location = 0; location < n_locations; ++location)
         for (const unsigned int k : strains_at[location])
           {
-            tied_strain_derivatives(*model, sc.tying_z[location], sc.fev_tying.jacobian(location),
-                                    assumed_shear.component(k), jacobian, sc.tying_strain[k],
-                                    sc.tying_gradient[k], sc.tying_hessian[k]);
+            tied_strain_derivatives(*parameters.model, sc.tying_z[location],
+                                    sc.fev_tying.jacobian(location), assumed_shear.component(k),
+                                    jacobian, sc.tying_strain[k], sc.tying_gradient[k],
+                                    sc.tying_hessian[k]);
             set_strain_column(sc.V, k, sc.tying_drives[location], sc.tying_gradient[k]);
           }
       double energy = 0;
@@ -282,9 +280,9 @@ namespace cosmo
           std::array<double, 2> e{{0., 0.}};
           for (unsigned int k = 0; k < n_tying; ++k)
             e[assumed_shear.component(k)] += tying_weights(q, k) * sc.tying_strain[k];
-          const auto         gr   = growth_at(fev.quadrature_point(q), t);
+          const auto         gr   = parameters.growth_at(fev.quadrature_point(q), t);
           const Tensor<2, 2> Kinv = fev.inverse_jacobian(q);
-          const auto         law  = plate_law_at(fev.quadrature_point(q));
+          const auto         law  = parameters.plate_law_at(fev.quadrature_point(q));
           double                W = 0;
           std::array<double, 2> dW;
           std::array<double, 4> ddW;
@@ -319,10 +317,10 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::plate_of_cell(const CellLoopData &                         d,
-                                   const DoFHandler<2>::active_cell_iterator &cell,
-                                   Scratch &                                    sc,
-                                   assembly::CellContribution &                 c) const
+    PlateRodAssembly::plate_of_cell(const CellLoopData &                         d,
+                                    const DoFHandler<2>::active_cell_iterator &cell,
+                                    Scratch &                                    sc,
+                                    assembly::CellContribution &                 c) const
     {
       const unsigned int dpc  = d.dpc;
       const auto &       comp = d.comp;
@@ -331,7 +329,8 @@ namespace cosmo
       sc.drives.resize(dpc);
       std::array<double, n_plate>           z, g;
       std::array<double, n_plate * n_plate> H;
-      const bool stabilized_shear = shear_integration == ShearIntegration::stabilized;
+      const auto shear_integration = parameters.shear_integration;
+      const bool stabilized_shear  = shear_integration == ShearIntegration::stabilized;
       for (const bool membrane_bending : {true, false})
         {
           if (!membrane_bending && (shear_integration == ShearIntegration::assumed_strain ||
@@ -344,8 +343,8 @@ namespace cosmo
             membrane_bending || stabilized_shear ? sc.fev_full : sc.fev_reduced;
           const double cell_shear_scale =
             !membrane_bending && stabilized_shear ?
-              kinematics::stabilized_shear_scale(thickness_at(cell->center()), shear_scale,
-                                                 shear_stabilization,
+              kinematics::stabilized_shear_scale(parameters.thickness_at(cell->center()),
+                                                 shear_scale, parameters.shear_stabilization,
                                                  cell->diameter()) :
               shear_scale;
           fev.reinit(cell);
@@ -355,8 +354,8 @@ namespace cosmo
               for (unsigned int i = 0; i < dpc; ++i)
                 sc.drives[i] = plate_drive(comp[i], fev.shape_value(i, q), fev.shape_grad(i, q));
               assembly::gather_local_variables<n_plate>(sc.drives, sc.U_local, z);
-              const auto gr  = growth_at(fev.quadrature_point(q), t);
-              const auto law = plate_law_at(fev.quadrature_point(q));
+              const auto gr  = parameters.growth_at(fev.quadrature_point(q), t);
+              const auto law = parameters.plate_law_at(fev.quadrature_point(q));
               double     W   = 0;
               // The plate energy depends on the gradients of u, on theta and (membrane and
               // bending only) on its gradients: 12 resp. 8 of the 15 local variables are
@@ -366,12 +365,12 @@ namespace cosmo
                 std::array<Number, n_plate> y;
                 for (unsigned int k = 0; k < n_plate; ++k)
                   y[k] = k >= 3 && k < 3 + x.size() ? x[k - 3] : Number(z[k]);
-                return kinematics::plate_energy(y, gr, law, *model, membrane_bending,
+                return kinematics::plate_energy(y, gr, law, *parameters.model, membrane_bending,
                                                 cell_shear_scale);
               };
               // The model's own chain rule if it has one (the Cosserat kinematics).
               if (nested_ad_only ||
-                  !model->plate_energy_derivatives(z, gr, law, membrane_bending, cell_shear_scale,
+                  !parameters.model->plate_energy_derivatives(z, gr, law, membrane_bending, cell_shear_scale,
                                                    jacobian, W, g, H))
                 {
                   if (membrane_bending)
@@ -387,10 +386,10 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::rim_of_cell(const CellLoopData &                         d,
-                                 const DoFHandler<2>::active_cell_iterator &cell,
-                                 Scratch &                                    sc,
-                                 assembly::CellContribution &                 c) const
+    PlateRodAssembly::rim_of_cell(const CellLoopData &                         d,
+                                  const DoFHandler<2>::active_cell_iterator &cell,
+                                  Scratch &                                    sc,
+                                  assembly::CellContribution &                 c) const
     {
       const unsigned int dpc      = d.dpc;
       const auto &       comp     = d.comp;
@@ -413,12 +412,13 @@ namespace cosmo
                   sc.drives[i] = rim_drive(comp[i], sc.fev_face.shape_value(i, q),
                                            sc.fev_face.shape_grad(i, q) * t2);
                 assembly::gather_local_variables<n_rim>(sc.drives, sc.U_local, zr);
-                const auto ring = rim_natural_state(X, frame, d.t);
+                const auto ring = parameters.rim_natural_state(X, frame, d.t);
                 double     W    = 0;
                 materials::internal::differentiate<n_rim>(
                   zr,
                   [&](const auto &x) {
-                    return kinematics::rim_rod_energy(x, frame, *rim_law, ring, *model,
+                    return kinematics::rim_rod_energy(x, frame, *parameters.rim_law, ring,
+                                                      *parameters.model,
                                                       rim_natural_curvature);
                   },
                   jacobian, W, gr, Hr);
@@ -430,14 +430,15 @@ namespace cosmo
     }
 
     int
-    PlateRodProblem::assemble(const Vector<double> &U,
-                              Vector<double> *      R,
-                              const bool            jacobian,
-                              double *              energies)
+    PlateRodAssembly::assemble(const Vector<double> &U,
+                               const double          t,
+                               Vector<double> *      R,
+                               const bool            jacobian)
     {
+      const unsigned int degree = parameters.degree;
       const QGauss<2>    full(degree + 1), reduced(degree);
       const QGauss<1>    face(degree);
-      const CellLoopData data(*this, full, jacobian);
+      const CellLoopData data(*this, full, t, jacobian);
       // The cell's scalars: the plate's energy and the rim's.
       auto worker = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
                         Scratch &                                           sc,
@@ -453,7 +454,7 @@ namespace cosmo
       Vector<double> jacobian_residual;
       if (!R)
         R = &jacobian_residual;
-      R->reinit(n_unknowns());
+      R->reinit(discretization.n_dofs());
       if (jacobian)
         system.clear();
       assembly::AssemblyTarget target;
@@ -467,7 +468,7 @@ namespace cosmo
                 data.assumed_shear.tying_points()),
         assembly::CellContribution(data.dpc, 0, 2), target);
       double plate_energy = totals.scalars[0], rod_energy = totals.scalars[1];
-      if (distributed_mesh)
+      if (parameters.distributed_mesh)
         {
           // Every rank holds the whole residual and energies, the same bits on each.
           if (jacobian)
@@ -481,14 +482,9 @@ namespace cosmo
       // Every assembly evaluates the energy: keep it with its state, so that the
       // output of a converged step need not assemble once more.
       assembled_at       = U;
-      assembled_load     = load_parameter;
+      assembled_load     = t;
       assembled_energy   = {{plate_energy, rod_energy}};
-      residuals.store(U, load_parameter, *R, {plate_energy, rod_energy});
-      if (energies)
-        {
-          energies[0] = plate_energy;
-          energies[1] = rod_energy;
-        }
+      residuals.store(U, t, *R, {plate_energy, rod_energy});
       return std::isfinite(plate_energy + rod_energy) ? 0 : 1;
     }
 

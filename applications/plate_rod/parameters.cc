@@ -318,7 +318,7 @@ namespace cosmo
     void
     PlateRodProblem::parse_parameters(ParameterHandler &prm)
     {
-      residuals.clear();
+      energy_assembly.clear();
       PlateRodParameters::parse_parameters(prm);
     }
   } // namespace plate_rod

@@ -91,7 +91,7 @@ namespace cosmo
     void
     PlateRodProblem::setup_system()
     {
-      residuals.clear();
+      energy_assembly.clear();
       // A stiffness with its constraints eliminated: every diagonal entry is nonzero.
       system.set_nonzero_diagonal(true);
       discretization.reinit();
@@ -104,22 +104,16 @@ namespace cosmo
     {
       Vector<double> R;
       AssertThrow(residual(U, R) == 0, ExcMessage("the energy cannot be evaluated at this state"));
-      return assembled_energy[0] + assembled_energy[1];
+      return energy_assembly.energy();
     }
 
     int
     PlateRodProblem::residual(const Vector<double> &U, Vector<double> &R)
     {
-      if (const auto *e = residuals.find(U, load_parameter))
-        {
-          R                = e->R;
-          assembled_at     = U;
-          assembled_load   = load_parameter;
-          assembled_energy = {{e->scalars[0], e->scalars[1]}};
-          return std::isfinite(assembled_energy[0] + assembled_energy[1]) ? 0 : 1;
-        }
+      if (energy_assembly.recall(U, load_parameter, R))
+        return std::isfinite(energy_assembly.energy()) ? 0 : 1;
       io::PhaseTimer::Scope scope(timer, "assembly (residual)");
-      return assemble(U, &R, false);
+      return energy_assembly.assemble(U, load_parameter, &R, false);
     }
 
     int
@@ -127,7 +121,7 @@ namespace cosmo
     {
       {
         io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
-        if (assemble(U, nullptr, true) != 0)
+        if (energy_assembly.assemble(U, load_parameter, nullptr, true) != 0)
           return 1;
       }
       io::PhaseTimer::Scope scope(timer, "factorization");

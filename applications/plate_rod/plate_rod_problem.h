@@ -26,6 +26,7 @@
 #include <cosmo/materials/rod_growth.h>
 #include <cosmo/materials/rod_law.h>
 
+#include "assembly.h"
 #include "diagnostics.h"
 #include "discretization.h"
 #include "parameters.h"
@@ -60,8 +61,9 @@ namespace cosmo
     /**
      * The problem on the parameters it was parsed from (parameters.h): the
      * run's configuration is a PlateRodParameters, parsed once; the problem
-     * adds the state, its assembly, the path and the run's records. The
-     * mesh, the DoFs and their constraints are its PlateRodDiscretization;
+     * adds the state, its system, the path and the run's records. The
+     * mesh, the DoFs and their constraints are its PlateRodDiscretization,
+     * the energy and its derivatives its PlateRodAssembly (assembly.h);
      * what a state shows (diagnostics, VTU files) is in diagnostics.h, on the
      * discretization alone.
      */
@@ -263,12 +265,10 @@ namespace cosmo
       double                       factorized_load = 0;
       /// converged_step reports with the last factorization (a continued critical point)
       bool                         report_with_last_factorization = false;
-      Vector<double>               assembled_at;   ///< the state of the last assembly
-      double                       assembled_load = 0;
-      std::array<double, 2>        assembled_energy{}; ///< its plate and rim energies
-      /// The last two assemblies' residuals, with their energies (cleared by
-      /// parse_parameters and setup_system, which change what R depends on).
-      solvers::ResidualCache       residuals;
+      /// The energy's assembly into `system`, with what its last assemblies
+      /// found (cleared by parse_parameters and setup_system, which change
+      /// what R depends on).
+      PlateRodAssembly             energy_assembly{*this, discretization, system};
 
       // Run records
       std::vector<PlateRodState>        states;
@@ -284,26 +284,6 @@ namespace cosmo
       /// The path's summary in the log, summary.json (with the closed forms), the run's end.
       void
       finish_run(const io::JSON &closed);
-      int
-      assemble(const Vector<double> &U, Vector<double> *R, bool jacobian, double *energy = nullptr);
-      /// The cell loop's work space and what its cells share (assembly.cc).
-      struct Scratch;
-      struct CellLoopData;
-      /// The plate's membrane, bending and transverse shear on one cell.
-      void
-      plate_of_cell(const CellLoopData &                         d,
-                    const DoFHandler<2>::active_cell_iterator &cell,
-                    Scratch &                                    sc,
-                    assembly::CellContribution &                 c) const;
-      /// The transverse shear of one cell by assumed covariant strains; returns its energy.
-      double
-      assumed_shear_of_cell(const CellLoopData &d, Scratch &sc, assembly::CellContribution &c) const;
-      /// The rim rod on the cell's rim faces.
-      void
-      rim_of_cell(const CellLoopData &                         d,
-                  const DoFHandler<2>::active_cell_iterator &cell,
-                  Scratch &                                    sc,
-                  assembly::CellContribution &                 c) const;
     };
 
     void

@@ -56,13 +56,13 @@ namespace cosmo
           !same_state(factorized_at, factorized_load))
         setup_jacobian(U);
       report_with_last_factorization = false;
-      if (!same_state(assembled_at, assembled_load))
+      if (!energy_assembly.assembled(U, load_parameter))
         {
           Vector<double> R;
-          assemble(U, &R, false);
+          energy_assembly.assemble(U, load_parameter, &R, false);
         }
-      s.plate_energy = assembled_energy[0];
-      s.rod_energy   = assembled_energy[1];
+      s.plate_energy = energy_assembly.energies()[0];
+      s.rod_energy   = energy_assembly.energies()[1];
       {
         io::PhaseTimer::Scope scope(timer, "stability (smallest eigenvalue)");
         Vector<double>        mask, mode;
