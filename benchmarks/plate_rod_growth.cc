@@ -75,7 +75,7 @@ namespace
     auto        per = [&](const std::string &phase) {
       return tm.calls(phase) ? tm.seconds(phase) / tm.calls(phase) * 1e3 : 0.;
     };
-    std::cout << p.n_dofs() << " DoFs: residual " << residual * 1e3 << " ms, Jacobian assembly "
+    std::cout << p.n_unknowns() << " DoFs: residual " << residual * 1e3 << " ms, Jacobian assembly "
               << per("assembly (Jacobian)") << " ms, factorization " << per("factorization")
               << " ms (|R| "
               << R.l2_norm() << ")" << std::endl;
@@ -116,9 +116,9 @@ main(int argc, char **argv)
         };
         const unsigned int steps = p.path().size();
         const solvers::BifurcationProblem::Event *e =
-          p.events().empty() ? nullptr : &p.events()[0].event;
+          p.event_records().empty() ? nullptr : &p.event_records()[0].event;
         std::cout << std::left << std::setw(11) << domain << std::setw(10) << location << std::right
-                  << std::setw(5) << k << std::setw(9) << p.n_dofs() << std::setw(7) << steps
+                  << std::setw(5) << k << std::setw(9) << p.n_unknowns() << std::setw(7) << steps
                   << std::setw(18) << std::setprecision(12) << (e ? e->lambda : NAN)
                   << std::setprecision(3) << std::setw(12)
                   << (e ? solvers::event_resolution(*e) : NAN) << std::setw(22)

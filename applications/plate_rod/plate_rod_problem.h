@@ -228,11 +228,6 @@ namespace cosmo
       {
         return located_events;
       }
-      const std::vector<solvers::EventRecord> &
-      events() const
-      {
-        return located_events;
-      }
       const std::vector<PlateRodState> &
       path() const
       {
@@ -242,11 +237,6 @@ namespace cosmo
       timings() const
       {
         return timer;
-      }
-      unsigned int
-      n_dofs() const
-      {
-        return discretization.n_dofs();
       }
 
     private:

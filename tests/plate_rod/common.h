@@ -92,9 +92,9 @@ namespace plate_rod_test
   {
     p.solve_flat_state(0.);
     p.follow_branches();
-    if (p.events().empty())
+    if (p.event_records().empty())
       return {NAN, NAN};
-    const double t = p.events().front().event.lambda;
+    const double t = p.event_records().front().event.lambda;
     return {t, p.mismatch(t)};
   }
 

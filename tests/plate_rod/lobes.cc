@@ -45,7 +45,7 @@ namespace
           D.push_back(first_event(*p).second /
                         analysis::out_of_plane_critical_mismatch(s.closed_form(), 2) -
                       1);
-          std::cout << "  n = 2, refinements " << k << ", " << p->n_dofs()
+          std::cout << "  n = 2, refinements " << k << ", " << p->n_unknowns()
                     << " DoFs: threshold / closed form - 1 = " << D.back() << "\n";
         }
       // Second order or better (the Kirchhoff model at its element's order;
@@ -62,14 +62,14 @@ namespace
         const double exact = analysis::out_of_plane_critical_mismatch(s.closed_form(), n);
         const auto   e     = first_event(*p);
         check_close("n = " + std::to_string(n) + " (sector pi/" + std::to_string(n) + ", " +
-                      std::to_string(p->n_dofs()) + " DoFs): critical mismatch",
+                      std::to_string(p->n_unknowns()) + " DoFs): critical mismatch",
                     e.second, exact, 6 * std::abs(exact));
         // The closed form linearizes the prestress: it holds to O(|Delta|) relative; the
         // n = 2 refinement series above converges to 3.7 |Delta| from it. Measured: 9.4e-4
         // (n = 2, 3.0 |Delta|) and 3.0e-3 (n = 3, 3.7 |Delta|).
-        if (!p->events().empty())
+        if (!p->event_records().empty())
           {
-            Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
+            Vector<double> mode(p->event_records().front().mode.begin(), p->event_records().front().mode.end());
             const auto c = classify(*p, mode);
             check("n = " + std::to_string(n) + ": out-of-plane mode with n lobes",
                   c.first == n && c.second);
@@ -98,11 +98,11 @@ namespace
     std::cout << "  closed form: first planar mode n = " << first.n << " at Delta = " << first.mismatch
               << "; out of plane n = 2 at " << analysis::out_of_plane_critical_mismatch(s.closed_form(), 2)
               << "\n";
-    check_close("planar n = 16 (sector pi/16, " + std::to_string(p->n_dofs()) + " DoFs): critical mismatch",
+    check_close("planar n = 16 (sector pi/16, " + std::to_string(p->n_unknowns()) + " DoFs): critical mismatch",
                 e.second, analysis::planar_critical_mismatch(s.closed_form(), 16), 0.1);
-    if (!p->events().empty())
+    if (!p->event_records().empty())
       {
-        Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
+        Vector<double> mode(p->event_records().front().mode.begin(), p->event_records().front().mode.end());
         const auto c = classify(*p, mode);
         check("a planar mode with 16 lobes", c.first == 16 && !c.second);
       }
@@ -155,7 +155,7 @@ namespace
     p->solve_flat_state(0.);
     p->follow_branches();
     LobedRun run;
-    for (const auto &e : p->events())
+    for (const auto &e : p->event_records())
       {
         if (e.event.branch == 0 && std::isnan(run.t_branch))
           run.t_branch = e.event.lambda;
@@ -178,7 +178,7 @@ namespace
         run.scale     = std::max({run.scale, state.max_abs_inplane, state.max_abs_w});
       }
     std::cout << std::setprecision(10) << "  sector " << sector_angle << " deg, a = " << amplitude
-              << ", " << p->n_dofs() << " DoFs: branch point t* = " << run.t_branch
+              << ", " << p->n_unknowns() << " DoFs: branch point t* = " << run.t_branch
               << ", first state of the lobed branch t = " << run.t_first
               << ", largest constraint violation " << std::setprecision(3) << run.violation
               << " (displacement scale " << run.scale << "), events on the lobed branch:";

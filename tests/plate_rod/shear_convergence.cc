@@ -127,11 +127,11 @@ namespace
                 }
               const std::pair<double, double> e =
                 setting == "branch" ?
-                  std::pair<double, double>(p->events().empty() ? NAN :
-                                                                  p->events().front().event.lambda,
+                  std::pair<double, double>(p->event_records().empty() ? NAN :
+                                                                  p->event_records().front().event.lambda,
                                             NAN) :
                   first_event(*p);
-              if (p->events().empty())
+              if (p->event_records().empty())
                 {
                   check("h/R = " + std::to_string(h) + " " + setting + ": an event", false);
                   return;
@@ -148,7 +148,7 @@ namespace
               else
                 {
                   values.push_back(e.first);
-                  resolutions.push_back(solvers::event_resolution(p->events().front().event));
+                  resolutions.push_back(solvers::event_resolution(p->event_records().front().event));
                 }
             }
           std::ostringstream what;

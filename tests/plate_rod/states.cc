@@ -233,13 +233,13 @@ namespace
     in_plane.extra = stop_at_first_event + "subsection Model\n set Deformation = in-plane only\nend\n";
     auto       p = make(in_plane);
     const auto e = first_event(*p);
-    check("in-plane only: a critical point", !p->events().empty());
-    if (p->events().empty())
+    check("in-plane only: a critical point", !p->event_records().empty());
+    if (p->event_records().empty())
       return;
-    Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
+    Vector<double> mode(p->event_records().front().mode.begin(), p->event_records().front().mode.end());
     const auto     c = classify(*p, mode);
     check("in-plane only: the first mode is planar with n = 16", c.first == 16 && !c.second);
-    std::cout << "  in-plane only (" << p->n_dofs() << " DoFs): Delta = " << e.second
+    std::cout << "  in-plane only (" << p->n_unknowns() << " DoFs): Delta = " << e.second
               << ", closed form " << planar << " (relative " << e.second / planar - 1 << ")\n";
     // The closed form linearizes the prestress: O(|Delta|) relative (planar_lobes measures
     // 5.9 % at this |Delta| = 0.048 on this mesh); 2 |Delta| relative.
@@ -251,7 +251,7 @@ namespace
     q->solve_flat_state(0.);
     q->follow_branches();
     const solvers::EventRecord *twin = nullptr;
-    for (const auto &x : q->events())
+    for (const auto &x : q->event_records())
       if (!x.mode.empty())
         {
           Vector<double> m(x.mode.begin(), x.mode.end());
@@ -262,18 +262,18 @@ namespace
             twin = &x;
         }
     check("full model: the out-of-plane n = 16 point before any planar point",
-          !q->events().empty() && q->events().front().event.lambda < p->events().front().event.lambda);
+          !q->event_records().empty() && q->event_records().front().event.lambda < p->event_records().front().event.lambda);
     check("full model: a planar critical point on the flat branch", twin != nullptr);
     if (twin)
       {
         const double resolution = solvers::event_resolution(twin->event) +
-                                  solvers::event_resolution(p->events().front().event);
+                                  solvers::event_resolution(p->event_records().front().event);
         std::cout << "  planar point: full " << twin->event.lambda << ", in-plane only "
-                  << p->events().front().event.lambda << ", difference "
-                  << twin->event.lambda - p->events().front().event.lambda
+                  << p->event_records().front().event.lambda << ", difference "
+                  << twin->event.lambda - p->event_records().front().event.lambda
                   << " (resolutions summed " << resolution << ")\n";
         check_close("the same planar critical load in both models", twin->event.lambda,
-                    p->events().front().event.lambda, 0, 2 * resolution);
+                    p->event_records().front().event.lambda, 0, 2 * resolution);
       }
   }
 
@@ -350,9 +350,9 @@ namespace
     check_close("Cosserat/Kirchhoff - 1 = -(1 - 1/p) r/(1 + r)", m.D_cosserat / m.D_kirchhoff - 1,
                 m.mindlin * (1 - 1. / 100), 0.02);
     const auto &c = m.cosserat;
-    if (!c->events().empty())
+    if (!c->event_records().empty())
       {
-        Vector<double> mode(c->events().front().mode.begin(), c->events().front().mode.end());
+        Vector<double> mode(c->event_records().front().mode.begin(), c->event_records().front().mode.end());
         const auto     m = classify(*c, mode);
         check("Cosserat: the axisymmetric mode", m.first == 0 && m.second);
       }

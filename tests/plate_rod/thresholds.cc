@@ -38,10 +38,10 @@ namespace
           const double exact = analysis::axisymmetric_critical_mismatch(s.closed_form());
           const auto   e     = first_event(*p);
           const double resolution =
-            p->events().empty() ? 0. :
-                                  solvers::event_resolution(p->events().front().event) / e.first;
+            p->event_records().empty() ? 0. :
+                                  solvers::event_resolution(p->event_records().front().event) / e.first;
           std::ostringstream what;
-          what << "rho = " << rho << ", " << p->n_dofs() << " DoFs: critical mismatch";
+          what << "rho = " << rho << ", " << p->n_unknowns() << " DoFs: critical mismatch";
           // k = 0, 1 are checked only for convergence below. rho = 1, k = 3:
           // the discretization extrapolated at order 2 from the k = 2
           // difference (1.7e-4 measured, so 1.1e-5 left) plus the
@@ -59,9 +59,9 @@ namespace
               resolutions.push_back(resolution);
               thresholds.push_back(e.second / exact);
             }
-          if (!p->events().empty() && k == 3)
+          if (!p->event_records().empty() && k == 3)
             {
-              Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
+              Vector<double> mode(p->event_records().front().mode.begin(), p->event_records().front().mode.end());
               const auto c = classify(*p, mode);
               check(what.str() + ": axisymmetric out-of-plane mode", c.first == 0 && c.second);
             }
@@ -123,19 +123,19 @@ namespace
         s.refinements  = 3;
         const auto m   = cosserat_and_kirchhoff(s, "",
                                               "subsection Model\n set Shear penalty factor = 10\nend\n");
-        if (m.kirchhoff->events().empty() || m.cosserat->events().empty())
+        if (m.kirchhoff->event_records().empty() || m.cosserat->event_records().empty())
           {
             check("h/R = " + std::to_string(h) + ": both thresholds found", false);
             return;
           }
-        const auto &ek = m.kirchhoff->events().front().event, &ec = m.cosserat->events().front().event;
+        const auto &ek = m.kirchhoff->event_records().front().event, &ec = m.cosserat->event_records().front().event;
         const double difference = m.D_cosserat / m.D_kirchhoff - 1;
         const double expected   = m.mindlin * (1 - 1 / p);
         const double resolution =
           (solvers::event_resolution(ec) + solvers::event_resolution(ek)) / ek.lambda;
         differences.push_back(difference);
         tolerances.push_back(resolution / std::abs(difference));
-        std::cout << std::setprecision(6) << "  h/R = " << h << ", " << m.cosserat->n_dofs()
+        std::cout << std::setprecision(6) << "  h/R = " << h << ", " << m.cosserat->n_unknowns()
                   << " DoFs: Cosserat/Kirchhoff(p = 10) - 1 = " << difference << ", Mindlin "
                   << expected << " (" << std::setprecision(3)
                   << std::abs(difference / expected - 1) * 100 << " %); thresholds t = "
@@ -205,15 +205,15 @@ namespace
         auto p   = make(s);
         p->solve_flat_state(0.);
         p->follow_branches();
-        if (p->events().empty())
+        if (p->event_records().empty())
           {
             check(domain + ": an event", false);
             return;
           }
-        const auto &e = p->events().front();
+        const auto &e = p->event_records().front();
         Vector<double> mode(e.mode.begin(), e.mode.end());
         const auto     c = classify(*p, mode);
-        std::cout << "  " << domain << ", " << p->n_dofs() << " DoFs: first event t = "
+        std::cout << "  " << domain << ", " << p->n_unknowns() << " DoFs: first event t = "
                   << std::setprecision(10) << e.event.lambda << ", count " << e.event.n_negative_before
                   << " -> " << e.event.n_negative_after << ", mode n = " << c.first
                   << (e.event.located_by_newton ? ", Newton" : ", bisection") << "\n";
@@ -298,7 +298,7 @@ namespace
               dome = std::abs((1 - f) * path[i - 1].w_centre + f * path[i].w_centre);
               break;
             }
-        std::cout << "  " << domain << ", " << p->n_dofs() << " DoFs: threshold t = " << e.first
+        std::cout << "  " << domain << ", " << p->n_unknowns() << " DoFs: threshold t = " << e.first
                   << ", |dome height| at t = 0.75: " << dome << "\n";
         result.emplace_back(e.first, dome);
       }
@@ -388,14 +388,14 @@ namespace
                   "subsection Arclength continuation\n set Event tolerance = 1e-10\nend\n";
         auto       p = make(s);
         const auto e = first_event(*p);
-        if (p->events().empty())
+        if (p->event_records().empty())
           {
             check("h/R = " + std::to_string(h) + ": a threshold", false);
             return;
           }
-        Vector<double> mode(p->events().front().mode.begin(), p->events().front().mode.end());
+        Vector<double> mode(p->event_records().front().mode.begin(), p->event_records().front().mode.end());
         const auto     c = classify(*p, mode);
-        std::cout << "  h/R = " << h << ", " << p->n_dofs() << " DoFs: t_cr = " << std::setprecision(10)
+        std::cout << "  h/R = " << h << ", " << p->n_unknowns() << " DoFs: t_cr = " << std::setprecision(10)
                   << e.first << ", mode n = " << c.first << (c.second ? " out of plane" : " planar")
                   << "\n";
         check("h/R = " + std::to_string(h) + ": a saddle (n = 2, out of plane)",
