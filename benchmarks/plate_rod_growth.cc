@@ -14,7 +14,7 @@
 
 #include <cosmo/io/ranks.h>
 
-#include "plate_rod_problem.h"
+#include "run.h"
 
 #include <chrono>
 #include <iomanip>
@@ -51,11 +51,12 @@ namespace
     ParameterHandler prm;
     plate_rod::PlateRodProblem::declare_parameters(prm);
     prm.parse_input_from_string(dome_parameters("sector", refinements, "newton"));
-    plate_rod::PlateRodProblem p;
-    p.parse_parameters(prm);
+    plate_rod::PlateRodRun run;
+    run.parse_parameters(prm);
+    plate_rod::PlateRodProblem &p = run.get_problem();
     p.set_quiet(true);
     p.setup_system();
-    p.solve_flat_state(0.5);
+    run.solve_flat_state(0.5);
     Vector<double> U = p.current_solution(), R(p.n_unknowns());
     for (unsigned int i = 0; i < U.size(); ++i)
       U[i] += 1e-3 * std::sin(0.37 * i);
@@ -101,11 +102,11 @@ main(int argc, char **argv)
         ParameterHandler prm;
         plate_rod::PlateRodProblem::declare_parameters(prm);
         prm.parse_input_from_string(dome_parameters(domain, k, location));
-        plate_rod::PlateRodProblem p;
+        plate_rod::PlateRodRun p;
         p.parse_parameters(prm);
-        p.set_quiet(true);
+        p.get_problem().set_quiet(true);
         const auto start = std::chrono::steady_clock::now();
-        p.setup_system();
+        p.get_problem().setup_system();
         p.solve_flat_state(0.);
         p.follow_branches();
         const double total =
@@ -114,7 +115,7 @@ main(int argc, char **argv)
         auto         per  = [&](const std::string &phase) {
           return tm.calls(phase) ? tm.seconds(phase) / tm.calls(phase) : 0.;
         };
-        const unsigned int steps = p.path().size();
+        const unsigned int steps = p.get_problem().path().size();
         const solvers::BifurcationProblem::Event *e =
           p.event_records().empty() ? nullptr : &p.event_records()[0].event;
         std::cout << std::left << std::setw(11) << domain << std::setw(10) << location << std::right

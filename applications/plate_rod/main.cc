@@ -1,7 +1,7 @@
 // Part 3: a growing circular Cosserat plate bounded by a Cosserat rod.
 #include <cosmo/io/parameters.h>
 
-#include "plate_rod_problem.h"
+#include "run.h"
 
 int
 main(int argc, char **argv)

@@ -1,5 +1,5 @@
-// The plate bounded by a rod (part 3): the problem's driver interface and
-// its run; the assembly is in assembly.cc, the discretization in
+// The plate bounded by a rod (part 3): the problem's driver interface; its
+// run is in run.cc, the assembly in assembly.cc, the discretization in
 // discretization.cc and mesh.cc, the reports in postprocess.cc.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -12,17 +12,14 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <cosmo/solvers/run_start.h>
 #include <cosmo/assembly/energy_assembler.h>
 #include <cosmo/assembly/assumed_shear.h>
 #include <cosmo/assembly/local_variables.h>
 #include <cosmo/config.h>
 #include <cosmo/geometry/mirror_dofs.h>
 #include <cosmo/io/resources.h>
-#include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/ranks.h>
 #include <cosmo/io/run_directory.h>
-#include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/materials/energy_derivatives.h>
 
 #include <cosmo/materials/growth_admissibility.h>
@@ -41,23 +38,6 @@ namespace cosmo
 {
   namespace plate_rod
   {
-    namespace
-    {
-      /// The rim's stiffness file in the log: the full 6x6's diagonal and largest coupling.
-      std::string
-      rim_stiffness_text(const PlateRodParameters &p)
-      {
-        std::ostringstream m;
-        m << "  rim stiffness from " << p.stiffness_file << ", the full 6x6: diagonal";
-        for (const double k : p.rod_stiffness)
-          m << " " << k;
-        m << ", largest coupling K_ab / sqrt(K_aa K_bb) = " << p.stiffness_coupling;
-        if (p.stiffness_coupling > 0)
-          m << " (the closed forms below use the diagonal only)";
-        return m.str();
-      }
-    } // namespace
-
     materials::RodNaturalState
     PlateRodParameters::rim_natural_state(const Point<2> &X, const kinematics::RimFrame &frame,
                                        const double t) const
@@ -181,141 +161,6 @@ namespace cosmo
             return std::numeric_limits<double>::quiet_NaN();
         }
       return analysis::growth_mismatch(g0[0], rod_growth_at(t));
-    }
-
-    void
-    PlateRodProblem::solve_flat_state(const double t)
-    {
-      set_load_parameter(t);
-      solvers::newton_solve(*this, solution, newton_settings);
-    }
-
-    std::vector<solvers::EventRecord>
-    PlateRodProblem::follow_branches()
-    {
-      solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-      driver.progress = [this](const std::string &s) { record.say(s); };
-      if (write_output)
-        {
-          if (record.has_checkpoint())
-            {
-              driver.load(record.checkpoint());
-              load_progress(record.checkpoint());
-            }
-          // After every converged step: the driver's state and what is written so far.
-          driver.checkpoint = [this, &driver]() {
-            io::PhaseTimer::Scope scope(timer, "checkpoint");
-            io::CheckpointWriter  w;
-            driver.save(w);
-            save_progress(w);
-            record.write_checkpoint(w);
-          };
-        }
-      return driver.run(*this, solution, load_parameter);
-    }
-
-    void
-    PlateRodProblem::locate_from_guess()
-    {
-      solvers::ArclengthContinuation driver(arclength_settings, newton_settings);
-      driver.progress = [this](const std::string &s) { record.say(s); };
-      const auto record = solvers::locate_continued_critical_point(driver, *this, *critical_guess,
-                                                                  newton_settings);
-      solution = Vector<double>(record.state.begin(), record.state.end());
-      // The report below takes the inertia and smallest eigenvalue from the
-      // last factorization, of the last Newton iterate: it differs from the
-      // located state by the last update (critical_point.h), on which neither
-      // depends beyond the located precision; not factorizing again is what
-      // the continued point saves.
-      report_with_last_factorization = true;
-      solvers::StepReport report;
-      report.t          = record.event.lambda;
-      report.n_negative = record.event.n_negative_after;
-      set_load_parameter(report.t);
-      solvers::report_converged_step(*this, solution, report);
-    }
-
-    void
-    PlateRodProblem::run(const io::RunOptions &options, const ParameterHandler &prm)
-    {
-      write_output = true;
-      solvers::start_run(record, *this, options, prm, output_directory, distributed_mesh);
-      setup_system();
-      record.say(discretization.describe());
-      if (!stiffness_file.empty())
-        record.say(rim_stiffness_text(*this));
-
-      // The closed forms (Kirchhoff, small strain, uniform isotropic growth).
-      double             first_closed = NAN;
-      std::string        closed_text;
-      const io::JSON     closed = closed_forms(first_closed, closed_text);
-      if (!closed_text.empty())
-        record.say(closed_text);
-
-      steps_columns = plate_rod::steps_columns(discretization);
-
-      record.attempt([&]() {
-        if (critical_guess)
-          return locate_from_guess();
-        if (record.has_checkpoint())
-          {
-            follow_branches();
-            return;
-          }
-        set_load_parameter(path_start);
-        try
-          {
-            solve_flat_state(path_start);
-          }
-        catch (solvers::NewtonFailure &e)
-          {
-            throw io::RunFailure(std::string("the flat state at the start did not converge: ") +
-                                 e.what());
-          }
-        if (setup_jacobian(solution) == 0 && n_negative_eigenvalues() > 0)
-          throw io::InputError(
-            "Growth path", "Start", std::to_string(path_start),
-            "the flat state there is already unstable (" +
-              std::to_string(n_negative_eigenvalues()) +
-              " negative eigenvalues) and no initial guess of a buckled state can be given: "
-              "start the path below the first critical growth (t = 0 always is)");
-        follow_branches();
-      });
-      finish_run(closed);
-    }
-
-    void
-    run_plate_rod(ParameterHandler &prm, const io::RunOptions &options)
-    {
-      io::ParameterSweep sweep;
-      sweep.parse_parameters(prm);
-      sweep.refuse_distributed_mesh(prm, "Mesh");
-      if (sweep.enabled())
-        {
-          solvers::CriticalPointStudy study;
-          study.application        = "plate_rod";
-          study.arclength_sections = false; // its own 'Growth path / Stop at first event'
-          study.mode_columns    = {"mode_number", "mode_out_of_plane"};
-          study.further_columns = {"mismatch_critical", "closed_form_mismatch"};
-          study.describe_mode   = [](const std::vector<double> &c) {
-            std::ostringstream m;
-            m << "n = " << c[0] << (c[1] == 1 ? " out of plane" : c[1] == 0 ? " planar" : "");
-            return m.str();
-          };
-          study.make_run = [](ParameterHandler &p) {
-            return std::make_unique<solvers::CriticalPointRunOf<PlateRodProblem>>(p);
-          };
-          study.declare_parameters = &PlateRodProblem::declare_parameters;
-          return solvers::run_critical_point_study(prm, options, sweep, study);
-        }
-      PlateRodProblem problem;
-      problem.parse_parameters(prm);
-      // A distributed mesh: every rank runs the path on its part of the mesh.
-      if (io::ranks::idle(problem.distributed_mesh))
-        return;
-      if (problem.distributed_mesh && io::ranks::size() > 1)
-        io::collective_interrupts(MPI_COMM_WORLD);
-      problem.run(options, prm);
     }
   } // namespace plate_rod
 } // namespace cosmo

@@ -58,14 +58,18 @@ namespace cosmo
   {
     using namespace dealii;
 
+    class PlateRodRun;
+
     /**
      * The problem on the parameters it was parsed from (parameters.h): the
      * run's configuration is a PlateRodParameters, parsed once; the problem
-     * adds the state, its system, the path and the run's records. The
-     * mesh, the DoFs and their constraints are its PlateRodDiscretization,
-     * the energy and its derivatives its PlateRodAssembly (assembly.h);
-     * what a state shows (diagnostics, VTU files) is in diagnostics.h, on the
-     * discretization alone.
+     * adds the state, its system and what the drivers report of the path
+     * (the converged states, the located events, the log). The mesh, the
+     * DoFs and their constraints are its PlateRodDiscretization, the energy
+     * and its derivatives its PlateRodAssembly (assembly.h); what a state
+     * shows (diagnostics, VTU files) is in diagnostics.h, on the
+     * discretization alone. The run around it (the flat start, the path
+     * with its checkpoint, the summary) is a PlateRodRun (run.h).
      */
     class PlateRodProblem : public solvers::BifurcationProblem, public PlateRodParameters
     {
@@ -76,9 +80,6 @@ namespace cosmo
       /// The discretization of the parameters, the Hessian's sparsity on it, a zero state.
       void
       setup_system();
-      /// The application: the flat state at the start of the path, then the branches.
-      void
-      run(const io::RunOptions &options, const ParameterHandler &prm);
 
       void
       set_quiet(const bool q)
@@ -168,44 +169,14 @@ namespace cosmo
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
 
-      /// Solve the flat state at the load parameter t from the current solution.
-      void
-      solve_flat_state(double t);
-      /// Follow the growth path by arclength continuation from the current solution.
-      std::vector<solvers::EventRecord>
-      follow_branches();
-      /// What the run has written and found so far, for its checkpoint (io/checkpoint.h).
-      void
-      save_progress(io::CheckpointWriter &w) const;
-      /// Restore it (its postprocessors rewrite steps.csv and the PVD files as they were then).
-      void
-      load_progress(io::CheckpointReader &r);
       /// The total energy, plate and rim, at U and the current load parameter (at most one
       /// residual assembly; the residual is its gradient, test plate_rod.tangent_fd).
       double
       energy(const Vector<double> &U);
 
-      /**
-       * A critical point to start from instead of a path from t: run() then
-       * locates the critical point by Newton on the augmented system from
-       * this guess (the next point of a critical curve) and reports it as
-       * the first event. The guess must have this problem's DoFs.
-       */
-      void
-      start_from_critical_point(const solvers::CriticalGuess &g)
-      {
-        critical_guess = std::make_unique<solvers::CriticalGuess>(g);
-      }
-      /// The study's mode columns (critical_point_study.h): mode_number, mode_out_of_plane.
-      std::vector<double>
-      classify_critical_mode(const Vector<double> &mode) const;
-      /// The study's further columns: mismatch_critical, closed_form_mismatch.
-      std::vector<double>
-      critical_point_columns(const solvers::EventRecord &e) const;
-
-      /// Read-only views of the state, the run and its discretization (the
-      /// tests, the benchmarks and CriticalPointRunOf; the diagnostics of a
-      /// state are functions of the discretization, diagnostics.h).
+      /// Read-only views of the state, the path and its discretization (the
+      /// tests, the benchmarks and the run; the diagnostics of a state are
+      /// functions of the discretization, diagnostics.h).
       const PlateRodDiscretization &
       get_discretization() const
       {
@@ -240,9 +211,12 @@ namespace cosmo
       }
 
     private:
-      std::unique_ptr<solvers::CriticalGuess> critical_guess;
-      bool                                    write_output   = false;
-      double                                  load_parameter = 0;
+      /// The run reads and restores the state and the records (its
+      /// checkpoint, its summary) and sets what the drivers' reports write.
+      friend class PlateRodRun;
+
+      bool   write_output   = false;
+      double load_parameter = 0;
 
       /// The mesh, DoFs and constraints of these parameters (this problem's base).
       PlateRodDiscretization discretization{*this};
@@ -268,16 +242,7 @@ namespace cosmo
       io::RunRecord                     record{"plate_rod"};
       /// (mutable: the const output writers time themselves)
       mutable io::PhaseTimer            timer;
-
-      void
-      locate_from_guess();
-      /// The path's summary in the log, summary.json (with the closed forms), the run's end.
-      void
-      finish_run(const io::JSON &closed);
     };
-
-    void
-    run_plate_rod(ParameterHandler &prm, const io::RunOptions &options);
   } // namespace plate_rod
 } // namespace cosmo
 

@@ -1,6 +1,6 @@
-// What part 3 reports: the converged steps and the located events, the
-// checkpoint, the closed forms and the run's summary; what a state shows is
-// in diagnostics.cc, the VTU files in vtu_output.cc.
+// What part 3 reports: the converged steps and the located events and the
+// closed forms; the checkpoint and the run's summary are in run.cc, what a
+// state shows in diagnostics.cc, the VTU files in vtu_output.cc.
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -95,66 +95,6 @@ namespace cosmo
     }
 
     void
-    PlateRodProblem::save_progress(io::CheckpointWriter &w) const
-    {
-      w.put_vector(solution);
-      w.put(load_parameter);
-      w.put(std::uint64_t(states.size()));
-      for (const auto &s : states)
-        {
-          for (const double x : {s.t, s.plate_energy, s.rod_energy, s.w_centre, s.max_abs_w,
-                                 s.max_abs_inplane, s.rim_radial_strain, s.smallest_eigenvalue})
-            w.put(x);
-          w.put_vector(s.rim_w_amplitude);
-          w.put_vector(s.rim_ur_amplitude);
-          w.put(s.n_negative);
-          w.put(s.branch);
-        }
-      w.put(std::uint64_t(located_events.size()));
-      for (const auto &e : located_events)
-        e.save(w);
-      w.put_vector(steps_row);
-      save_postprocessors(w);
-      io::ranks::put_mesh_ranks(w, distributed_mesh);
-
-    }
-
-    void
-    PlateRodProblem::load_progress(io::CheckpointReader &r)
-    {
-      r.get_vector(solution);
-      load_parameter = r.get_double();
-      states.resize(r.get_size());
-      for (auto &s : states)
-        {
-          for (double *x : {&s.t, &s.plate_energy, &s.rod_energy, &s.w_centre, &s.max_abs_w,
-                            &s.max_abs_inplane, &s.rim_radial_strain, &s.smallest_eigenvalue})
-            *x = r.get_double();
-          s.rim_w_amplitude  = r.get_vector();
-          s.rim_ur_amplitude = r.get_vector();
-          s.n_negative       = r.get_int();
-          s.branch           = r.get_unsigned();
-        }
-      located_events.resize(r.get_size());
-      for (auto &e : located_events)
-        e.load(r);
-      steps_row = r.get_vector();
-      load_postprocessors(r);
-      io::ranks::check_mesh_ranks(r, distributed_mesh, "Mesh", "Distributed");
-      if (distributed_mesh)
-        io::ranks::check_checkpoints_agree(states.size(), "their last step");
-
-      if (!r.at_end())
-        throw std::runtime_error("the checkpoint holds more than this run reads");
-      if (solution.size() != discretization.n_dofs())
-        throw std::runtime_error("the checkpoint's state has another number of unknowns");
-      std::ostringstream m;
-      m << "  going on after step " << states.size() - 1 << " at t = " << std::setprecision(10)
-        << load_parameter << " (" << located_events.size() << " events located before)";
-      record.say(m.str());
-    }
-
-    void
     PlateRodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
     {
       solvers::EventRecord r;
@@ -237,103 +177,6 @@ namespace cosmo
       closed["first"]["t"]        = t_of(first_mismatch);
       text                        = c.str();
       return closed;
-    }
-
-    std::vector<double>
-    PlateRodProblem::classify_critical_mode(const Vector<double> &mode) const
-    {
-      const auto c = classify_mode(discretization, mode);
-      return {double(c.first), double(c.second)};
-    }
-
-    std::vector<double>
-    PlateRodProblem::critical_point_columns(const solvers::EventRecord &e) const
-    {
-      double      closed = NAN;
-      std::string text;
-      closed_forms(closed, text);
-      return {mismatch(e.event.lambda), closed};
-    }
-
-    void
-    PlateRodProblem::finish_run(const io::JSON &closed)
-    {
-      if (!states.empty())
-        {
-          std::vector<solvers::PathRow>                 rows;
-          std::vector<solvers::BifurcationProblem::Event> ev;
-          for (const auto &st : states)
-            rows.push_back({st.branch, st.t, st.n_negative});
-          for (const auto &e : located_events)
-            ev.push_back(e.event);
-          record.say(solvers::path_summary(rows, ev, [this](const unsigned int k) {
-            std::string words = ", mismatch Delta = " + io::format_significant(mismatch(located_events[k].event.lambda), 6);
-            if (!located_events[k].mode.empty())
-              {
-                const Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
-                const auto           c = classify_mode(discretization, mode);
-                words += ", mode n = " + std::to_string(c.first) + (c.second ? " out of plane" : " planar");
-              }
-            return words;
-          }));
-        }
-
-      io::JSON j       = record.summary();
-      j["model"]       = model->name();
-      j["domain"]      = domain == "sector" ? "sector" : "full disc";
-      if (domain == "sector")
-        j["sector_n"] = sector_n;
-      j["radius"]    = radius;
-      j["thickness"] = thickness;
-      j["dofs"]      = discretization.n_dofs();
-      j["cells"]     = discretization.triangulation.get().n_global_active_cells();
-      if (distributed_mesh)
-        j["distributed_mesh_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      j["closed_form"] = closed;
-      if (!states.empty())
-        {
-          // The last converged state (of an interrupted run: where it stopped).
-          const auto &s     = states.back();
-          io::JSON    last  = io::JSON::object();
-          last["step"]      = static_cast<unsigned int>(states.size() - 1);
-          last["branch"]    = s.branch;
-          last["t"]         = s.t;
-          last["dome_height"] = s.w_centre;
-          last["n_negative_eigenvalues"] = s.n_negative;
-          j["last_state"] = last;
-        }
-      io::JSON ev      = io::JSON::array();
-      for (unsigned int k = 0; k < located_events.size(); ++k)
-        {
-          const auto &e = located_events[k].event;
-          io::JSON    x = io::JSON::object();
-          x["kind"]              = e.name();
-          x["t"]                 = e.lambda;
-          x["mismatch"]          = mismatch(e.lambda);
-          x["branch"]            = e.branch;
-          x["n_negative_before"] = e.n_negative_before;
-          x["n_negative_after"]  = e.n_negative_after;
-          const std::string tag  = Utilities::int_to_string(k + 1, 2);
-          const std::string vtu  = distributed_mesh ? ".pvtu" : ".vtu";
-          x["state_vtu"]         = "event-" + tag + vtu;
-          if (!located_events[k].mode.empty())
-            {
-              Vector<double> mode(located_events[k].mode.begin(), located_events[k].mode.end());
-              ModeMargins    margins;
-              const auto     c = classify_mode(discretization, mode, &margins);
-              x["mode_number"]  = c.first;
-              x["mode_type"]    = c.second ? "out of plane" : "planar";
-              x["mode_type_out_of_plane"] = c.second ? 1 : 0;
-              x["mode_type_margin"]   = margins.type;
-              x["mode_number_margin"] = margins.number;
-              x["mode_vtu"]     = "event-" + tag + "-mode" + vtu;
-              x["eigenvalue"]   = e.eigenvalue;
-            }
-          solvers::add_location_to_json(e, x);
-          ev.push_back(x);
-        }
-      j["events"] = ev;
-      record.finish(j, timer, states.size());
     }
   } // namespace plate_rod
 } // namespace cosmo

@@ -7,7 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <cosmo/analysis/plate_rod_thresholds.h>
 #include <cosmo/io/ranks.h>
-#include "plate_rod_problem.h"
+#include "run.h"
 #include "../test_tools.h"
 #include <fstream>
 #include <iomanip>
@@ -55,7 +55,7 @@ namespace plate_rod_test
     }
   };
 
-  inline std::unique_ptr<plate_rod::PlateRodProblem>
+  inline std::unique_ptr<plate_rod::PlateRodRun>
   make(const Setup &s)
   {
     ParameterHandler prm;
@@ -79,30 +79,30 @@ namespace plate_rod_test
       << "\nend\n"
       << s.extra;
     prm.parse_input_from_string(t.str());
-    auto p = std::make_unique<plate_rod::PlateRodProblem>();
+    auto p = std::make_unique<plate_rod::PlateRodRun>();
     p->parse_parameters(prm);
-    p->set_quiet(true);
-    p->setup_system();
+    p->get_problem().set_quiet(true);
+    p->get_problem().setup_system();
     return p;
   }
 
   /// Follow the flat branch from t = 0; the first located event (t, mismatch) or NaNs.
   inline std::pair<double, double>
-  first_event(plate_rod::PlateRodProblem &p)
+  first_event(plate_rod::PlateRodRun &p)
   {
     p.solve_flat_state(0.);
     p.follow_branches();
     if (p.event_records().empty())
       return {NAN, NAN};
     const double t = p.event_records().front().event.lambda;
-    return {t, p.mismatch(t)};
+    return {t, p.get_problem().mismatch(t)};
   }
 
   /// Mode number and whether out of plane (plate_rod::classify_mode on p's discretization).
   inline std::pair<unsigned int, bool>
-  classify(const plate_rod::PlateRodProblem &p, const Vector<double> &mode)
+  classify(const plate_rod::PlateRodRun &p, const Vector<double> &mode)
   {
-    return plate_rod::classify_mode(p.get_discretization(), mode);
+    return plate_rod::classify_mode(p.get_problem().get_discretization(), mode);
   }
 
   /// Growth factor of the plate that puts the closed-form threshold at t = 0.5.
@@ -119,7 +119,7 @@ namespace plate_rod_test
   /// (the rim restrains the director, as the Reissner-Mindlin edge condition does).
   struct ModelPair
   {
-    std::unique_ptr<plate_rod::PlateRodProblem> kirchhoff, cosserat;
+    std::unique_ptr<plate_rod::PlateRodRun> kirchhoff, cosserat;
     double                                       D_kirchhoff = 0, D_cosserat = 0, mindlin = 0;
   };
 

@@ -167,10 +167,10 @@ namespace
       }
     // The first branch of depth 2 is the one switched to from the lobed branch (branch 1),
     // followed right after it (depth first): the branch after 1.
-    for (const auto &state : p->path())
+    for (const auto &state : p->get_problem().path())
       if (state.branch == 2 && !run.secondary.empty())
         run.depth2.emplace_back(state.t, state.max_abs_w);
-    for (const auto &state : p->path())
+    for (const auto &state : p->get_problem().path())
       {
         if (state.branch == 1 && std::isnan(run.t_first))
           run.t_first = state.t;

@@ -140,8 +140,8 @@ namespace
                 {
                   double     error = 0;
                   const auto dome  = on_switched_branch_at(
-                    *p, 0.75, [](const plate_rod::PlateRodState &x) { return std::abs(x.w_centre); },
-                    error);
+                    p->get_problem(), 0.75,
+                    [](const plate_rod::PlateRodState &x) { return std::abs(x.w_centre); }, error);
                   values.push_back(dome);
                   resolutions.push_back(error);
                 }

@@ -22,7 +22,8 @@ namespace
           s.refinements  = 2;
           auto p         = make(s);
           p->solve_flat_state(1.);
-          const auto st = plate_rod::analyse(p->get_discretization(), p->current_solution(), 1.);
+          const auto &problem = p->get_problem();
+          const auto  st = plate_rod::analyse(problem.get_discretization(), problem.current_solution(), 1.);
           // Small strain: growth strains 2e-5 and -1e-5.
           const auto   ref = analysis::prebuckled_state(s.closed_form(), 2e-5, -1e-5);
           std::ostringstream what;
@@ -53,7 +54,7 @@ namespace
     s.maximum_step = 0.25;
     auto p         = make(s);
     first_event(*p);
-    const auto &path = p->path();
+    const auto &path = p->get_problem().path();
     for (unsigned int i = 1; i < path.size(); ++i)
       if (path[i - 1].t < 1 && path[i].t >= 1)
         {
@@ -129,27 +130,28 @@ namespace
                   " set Natural curvature = 0.3*x; 0.1 - 0.2*y; 0.05*r\nend\n"
                   "subsection Plate\n set Thickness profile = 1 - 0.5*r^2 + 0.1*x\nend\n"
                   "subsection Rim rod\n set Natural curvature = 0.2, -0.1, 0.3\nend\n";
-        auto p = make(s);
-        p->set_load_parameter(1.);
-        const unsigned int n = p->n_unknowns();
+        auto  run     = make(s);
+        auto &problem = run->get_problem();
+        problem.set_load_parameter(1.);
+        const unsigned int n = problem.n_unknowns();
         std::mt19937       gen(42);
         std::uniform_real_distribution<double> d(-1, 1);
         Vector<double> U(n), V(n);
         for (unsigned int i = 0; i < n; ++i)
           U[i] = 0.05 * d(gen), V[i] = d(gen);
-        p->get_discretization().constraints.distribute(U);
-        p->get_discretization().constraints.distribute(V);
-        p->setup_jacobian(U);
+        problem.get_discretization().constraints.distribute(U);
+        problem.get_discretization().constraints.distribute(V);
+        problem.setup_jacobian(U);
         Vector<double> JV(n), Rp(n), Rm(n), Up = U, Um = U;
-        p->system_matrix().vmult(JV, V);
+        problem.system_matrix().vmult(JV, V);
         const double eps = 1e-6;
         Up.add(eps, V);
         Um.add(-eps, V);
-        p->residual(Up, Rp);
-        p->residual(Um, Rm);
+        problem.residual(Up, Rp);
+        problem.residual(Um, Rm);
         double err = 0, scale = 0;
         for (unsigned int i = 0; i < n; ++i)
-          if (!p->get_discretization().constraints.is_constrained(i))
+          if (!problem.get_discretization().constraints.is_constrained(i))
             {
               err   = std::max(err, std::abs(JV[i] - (Rp[i] - Rm[i]) / (2 * eps)));
               scale = std::max(scale, std::abs(JV[i]));
@@ -162,9 +164,9 @@ namespace
         // (measured: 4e-11 to 1.4e-10); tolerance 1e-8.
         {
           Vector<double> R0(n);
-          p->residual(U, R0);
+          problem.residual(U, R0);
           const double Rv = R0 * V;
-          const double dE = (p->energy(Up) - p->energy(Um)) / (2 * eps);
+          const double dE = (problem.energy(Up) - problem.energy(Um)) / (2 * eps);
           std::cout << std::setprecision(12) << "  " << model << ": R.v " << Rv << ", dE/d(eps) "
                     << dE << "\n";
           check_close(model + ": R.v = dE along v (central difference)", dE, Rv, 1e-8, 0);
@@ -176,9 +178,9 @@ namespace
         // three models on the full disc); tolerance 1e-12.
         {
           Vector<double> R_residual(n), R_jacobian(n);
-          p->residual(U, R_residual); // (assembled above, without a Jacobian)
-          p->setup_jacobian(U);
-          p->residual(U, R_jacobian); // kept from the Jacobian assembly
+          problem.residual(U, R_residual); // (assembled above, without a Jacobian)
+          problem.setup_jacobian(U);
+          problem.residual(U, R_jacobian); // kept from the Jacobian assembly
           double d = 0, m = 0;
           for (unsigned int i = 0; i < n; ++i)
             {
@@ -190,7 +192,7 @@ namespace
           check_close(model + ": residual kept from the Jacobian assembly", d / m, 0, 0, 1e-12);
         }
         double asym = 0, big = 0;
-        const auto &J = p->system_matrix();
+        const auto &J = problem.system_matrix();
         for (unsigned int i = 0; i < n; ++i)
           for (auto it = J.begin(i); it != J.end(i); ++it)
             {
@@ -292,9 +294,9 @@ namespace
     Setup s;
     s.refinements = 1;
     s.extra       = "subsection Rim rod\n set Stiffness file = rim_summary.json\nend\n";
-    const auto problem = make(s);
-    const auto p       = problem->closed_form_setting();
-    const auto K       = problem->rod_law().natural_stiffness();
+    const auto run     = make(s);
+    const auto p       = run->get_problem().closed_form_setting();
+    const auto K       = run->get_problem().rod_law().natural_stiffness();
     // Exact copies (the file's symmetric part of a symmetric matrix).
     check_close("coupling K(nu3, kappa1) from the file", K[6 * 2 + 3], 1e-7, 0, 0);
     check_close("coupling K(kappa1, nu3) from the file", K[6 * 3 + 2], 1e-7, 0, 0);
@@ -306,9 +308,9 @@ namespace
         Setup sm = s;
         sm.model = model;
         const auto pm    = make(sm);
-        const auto Km    = pm->rod_law().natural_stiffness();
+        const auto Km    = pm->get_problem().rod_law().natural_stiffness();
         const auto frame = kinematics::circular_rim_frame(Point<2>(1, 0), Tensor<1, 2>({1., 0.}));
-        const auto ring  = pm->rim_natural_state(Point<2>(1, 0), frame, 0.);
+        const auto ring  = pm->get_problem().rim_natural_state(Point<2>(1, 0), frame, 0.);
         const double GA1 = ring.weights[0] * ring.weights[0] * Km[0];
         const double K05 = ring.weights[0] * ring.weights[5] * Km[5];
         std::cout << "  " << model << ": effective GA1 " << GA1 << ", K(nu1, kappa3) " << K05 << "\n";

@@ -227,7 +227,7 @@ namespace
         // own error is estimated by its difference from the linear one (the
         // steps, up to 0.1 apart, differ between the meshes and threads).
         const unsigned int k2 = 2 / (domain == "sector" ? 2 : 1);
-        const auto &       path = p->path();
+        const auto &       path = p->get_problem().path();
         double             a = NAN, linear = NAN;
         for (unsigned int i = 2; i < path.size(); ++i)
           if (path[i].branch == 1 && path[i - 1].branch == 1 && path[i - 2].branch == 1 &&
@@ -289,7 +289,7 @@ namespace
         const auto e  = first_event(*p);
         // |dome height| on the first bifurcated branch at t = 0.75, interpolated.
         double dome = NAN;
-        const auto &path = p->path();
+        const auto &path = p->get_problem().path();
         for (unsigned int i = 1; i < path.size(); ++i)
           if (path[i].t >= 0.75 && path[i - 1].t < 0.75 && std::abs(path[i].w_centre) > 0 &&
               std::abs(path[i - 1].w_centre) > 0)
@@ -328,7 +328,7 @@ namespace
         auto p  = make(s);
         const auto e = first_event(*p);
         std::vector<plate_rod::PlateRodState> branch;
-        for (const auto &x : p->path())
+        for (const auto &x : p->get_problem().path())
           if (std::abs(x.w_centre) > 0)
             branch.push_back(x);
         result.emplace_back(e.first, branch);
