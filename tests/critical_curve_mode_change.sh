@@ -11,13 +11,28 @@
 # difference of t_critical in x over three consecutive values of that mode
 # (the larger); a factor 2 covers the change of t'' between the intervals it
 # is estimated on and the one it is used on.
-# The mode found there must be one of the two.
+# The mode found there must be one of the two. Every point's event files
+# are the ones its summary.json names.
 # usage: critical_curve_mode_change.sh <plate_rod> <curve.prm> <scratch dir>
 set -euo pipefail
 exe=$(realpath "$1") prm=$(realpath "$2") dir=$(realpath -m "$3")
 rm -rf "$dir" && mkdir -p "$dir"
 sed -e "s|^\( *set Output directory *=\).*|\1 $dir/curve|" "$prm" > "$dir/curve.prm"
 "$exe" --quiet "$dir/curve.prm" > "$dir/curve.log" 2>&1 || { tail -5 "$dir/curve.log"; exit 1; }
+# A point whose continued critical point failed is run again independently:
+# its event files are that run's, the ones its summary.json names, and no
+# others (the failed attempt's are written over, not numbered on); the run
+# that continues a new mode back (point-K/back) writes the files its
+# summary.json names too.
+python3 - "$dir/curve" <<'PY'
+import glob, json, os, sys
+for d in sorted(glob.glob(sys.argv[1] + "/point-*") + glob.glob(sys.argv[1] + "/point-*/back")):
+    events = json.load(open(d + "/summary.json")).get("events", [])
+    named = {e[k] for e in events for k in ("state_vtu", "mode_vtu") if k in e}
+    files = {os.path.basename(f) for f in glob.glob(d + "/event-*.*vtu")}
+    assert files == named, "%s: event files %s, summary.json names %s" % (d, sorted(files), sorted(named))
+print("every point's event files are those its summary.json names")
+PY
 read -r value t_star n_before n_after bound < <(python3 - "$dir/curve/critical_curve.csv" <<'PY'
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

@@ -91,8 +91,8 @@ namespace cosmo
               const Vector<double> &        U,
               double                        t);
     /// A located event's plate files: event-`tag` of U and, with a mode,
-    /// event-`tag`-mode of U plus the mode.
-    void
+    /// event-`tag`-mode of U plus the mode (each kind with its file name).
+    std::vector<std::pair<std::string, std::string>>
     write_event(const PlateRodDiscretization &d,
                 const std::string &           tag,
                 const Vector<double> &        U,

@@ -115,12 +115,11 @@ namespace cosmo
           // anything else ends this rank, and so all)
           if (distributed_mesh && dynamic_cast<const solvers::FactorizationFailure *>(&e) == nullptr)
             throw;
-          factorized_at.reinit(0);
+          factorization.clear();
           record.say(std::string("  factorization failed: ") + e.what());
           return 1;
         }
-      factorized_at   = U;
-      factorized_load = load_parameter;
+      factorization.set(U, load_parameter);
       return 0;
     }
 

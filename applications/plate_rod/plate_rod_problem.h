@@ -25,12 +25,14 @@
 #include <cosmo/materials/plate_law.h>
 #include <cosmo/materials/rod_growth.h>
 #include <cosmo/materials/rod_law.h>
+#include <cosmo/solvers/factorization_mark.h>
 
 #include "assembly.h"
 #include "diagnostics.h"
 #include "discretization.h"
 #include "parameters.h"
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/factorization_mark.h>
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/solvers/replicated_vector.h>
 
@@ -152,6 +154,11 @@ namespace cosmo
       }
       std::vector<std::pair<std::string, std::string>>
       write_fields(const std::string &tag) const override;
+      /// event-NN (the plate at a located event) and event-NN-mode (the mode added).
+      std::vector<std::pair<std::string, std::string>>
+      write_event_fields(const std::string &   tag,
+                         const Vector<double> &U,
+                         const Vector<double> *mode) const override;
       int
       n_negative_eigenvalues() override
       {
@@ -225,10 +232,9 @@ namespace cosmo
       /// system.distributed_matrix, factorized by MUMPS with distributed input).
       assembly::BorderedSystem     system;
       Vector<double>               solution;
-      Vector<double>               factorized_at;  ///< the state of the last factorization
-      double                       factorized_load = 0;
-      /// converged_step reports with the last factorization (a continued critical point)
-      bool                         report_with_last_factorization = false;
+      /// The state of the last factorization; with_last: converged_step
+      /// reports with it (a continued critical point).
+      solvers::FactorizationMark   factorization;
       /// The energy's assembly into `system`, with what its last assemblies
       /// found (cleared by parse_parameters and setup_system, which change
       /// what R depends on).

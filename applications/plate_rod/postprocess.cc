@@ -47,15 +47,12 @@ namespace cosmo
       s.n_negative    = report.n_negative;
       s.branch        = report.branch;
       s.constraint_violation = discretization.constraint_violation(U);
-      auto same_state = [&](const Vector<double> &V, const double load) {
-        return load == load_parameter && solvers::same_point(U, V);
-      };
       // The driver has just factorized at this state (or at its predictor,
       // one small Newton step away), unless it located an event since.
-      if (!report_with_last_factorization && !report.factorized_at_predictor &&
-          !same_state(factorized_at, factorized_load))
+      if (!factorization.with_last && !report.factorized_at_predictor &&
+          !factorization.here(U, load_parameter))
         setup_jacobian(U);
-      report_with_last_factorization = false;
+      factorization.with_last = false;
       if (!energy_assembly.assembled(U, load_parameter))
         {
           Vector<double> R;
@@ -103,9 +100,14 @@ namespace cosmo
       if (mode)
         r.mode.assign(mode->begin(), mode->end());
       located_events.push_back(r);
-      if (write_output)
-        write_event(discretization, Utilities::int_to_string(located_events.size(), 2), U, mode,
-                    load_parameter);
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    PlateRodProblem::write_event_fields(const std::string &   tag,
+                                        const Vector<double> &U,
+                                        const Vector<double> *mode) const
+    {
+      return write_event(discretization, tag, U, mode, load_parameter);
     }
 
     io::JSON

@@ -7,6 +7,7 @@
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/solvers/newton.h>
+#include <cosmo/solvers/path_checkpoints.h>
 #include <cosmo/solvers/run_start.h>
 
 #include "run.h"
@@ -46,24 +47,15 @@ namespace cosmo
     std::vector<solvers::EventRecord>
     PlateRodRun::follow_branches()
     {
-      auto &record = problem.record;
       solvers::ArclengthContinuation driver(problem.arclength_settings, problem.newton_settings);
       driver.progress = [this](const std::string &s) { problem.record.say(s); };
+      // After every converged step: the driver's state and what is written so
+      // far (a run's, not a programmatic path's); --resume goes on from it.
+      solvers::PathCheckpoints checkpoints;
       if (problem.write_output)
         {
-          if (record.has_checkpoint())
-            {
-              driver.load(record.checkpoint());
-              load_progress(record.checkpoint());
-            }
-          // After every converged step: the driver's state and what is written so far.
-          driver.checkpoint = [this, &driver]() {
-            io::PhaseTimer::Scope scope(problem.timer, "checkpoint");
-            io::CheckpointWriter  w;
-            driver.save(w);
-            save_progress(w);
-            problem.record.write_checkpoint(w);
-          };
+          checkpoints.connect_to(problem.record);
+          checkpoints.connect(driver, *this, problem.timer);
         }
       return driver.run(problem, problem.solution, problem.load_parameter);
     }
@@ -81,10 +73,11 @@ namespace cosmo
       // located state by the last update (critical_point.h), on which neither
       // depends beyond the located precision; not factorizing again is what
       // the continued point saves.
-      problem.report_with_last_factorization = true;
+      problem.factorization.with_last = true;
       solvers::StepReport report;
       report.t          = record.event.lambda;
       report.n_negative = record.event.n_negative_after;
+      report.final      = true; // the path's only state: written whatever 'Steps between outputs'
       problem.set_load_parameter(report.t);
       solvers::report_converged_step(problem, problem.solution, report);
     }

@@ -96,18 +96,19 @@ namespace cosmo
         return problem;
       }
 
+      /// What the run has written and found so far, for its checkpoint (solvers::PathCheckpoints).
+      void
+      save_progress(io::CheckpointWriter &w) const;
+      /// Restore it (its postprocessors rewrite steps.csv and the PVD files as they were then).
+      void
+      load_progress(io::CheckpointReader &r);
+
     private:
       PlateRodProblem                         problem;
       std::unique_ptr<solvers::CriticalGuess> critical_guess;
 
       void
       locate_from_guess();
-      /// What the run has written and found so far, for its checkpoint (io/checkpoint.h).
-      void
-      save_progress(io::CheckpointWriter &w) const;
-      /// Restore it (its postprocessors rewrite steps.csv and the PVD files as they were then).
-      void
-      load_progress(io::CheckpointReader &r);
       /// The path's summary in the log, summary.json (with the closed forms), the run's end.
       void
       finish_run(const io::JSON &closed);

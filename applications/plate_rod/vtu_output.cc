@@ -240,14 +240,15 @@ namespace cosmo
       return vtu.write_output(p.output_directory, name, p.distributed_mesh);
     }
 
-    void
+    std::vector<std::pair<std::string, std::string>>
     write_event(const PlateRodDiscretization &discretization,
                 const std::string &           tag,
                 const Vector<double> &        U,
                 const Vector<double> *        mode,
                 const double                  t)
     {
-      write_plate(discretization, "event-" + tag, U, t);
+      std::vector<std::pair<std::string, std::string>> files = {
+        {"event", write_plate(discretization, "event-" + tag, U, t)}};
       if (mode)
         {
           // The mode added to the state, scaled to a tenth of the radius.
@@ -258,8 +259,9 @@ namespace cosmo
               m = std::max(m, std::abs((*mode)[i]));
           if (m > 0)
             V.add(0.1 * discretization.parameters.radius / m, *mode);
-          write_plate(discretization, "event-" + tag + "-mode", V, t);
+          files.emplace_back("event mode", write_plate(discretization, "event-" + tag + "-mode", V, t));
         }
+      return files;
     }
   } // namespace plate_rod
 } // namespace cosmo

@@ -3,6 +3,7 @@
 #include <cosmo/io/fault_injection.h>
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_point.h>
+#include <cosmo/solvers/step_control.h>
 
 #include <algorithm>
 #include <functional>
@@ -277,12 +278,7 @@ namespace cosmo
       enabled = prm.get("Method") == "arclength";
       prm.leave_subsection();
       prm.enter_subsection("Arclength continuation");
-      initial_step     = prm.get_double("Initial step");
-      minimum_step     = prm.get_double("Minimum step");
-      maximum_step     = prm.get_double("Maximum step");
-      maximum_steps    = prm.get_integer("Maximum number of steps");
-      easy_iterations  = prm.get_integer("Easy step iterations");
-      growth_factor    = prm.get_double("Step growth factor");
+      parse_step_control(prm, *this);
       const auto range = io::get_double_list(prm, "Parameter range", 2, "Arclength continuation");
       lambda_min       = range[0];
       lambda_max       = range[1];

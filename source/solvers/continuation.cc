@@ -1,6 +1,7 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/continuation.h>
+#include <cosmo/solvers/step_control.h>
 
 #include <cmath>
 #include <sstream>
@@ -47,31 +48,35 @@ namespace cosmo
         postprocessors->load(r, postprocessor_directory);
     }
 
+    namespace
+    {
+      /// What the postprocessors see of a state the driver reported.
+      io::PostprocessedState
+      postprocessed(const io::PostprocessedState::Kind kind, const Vector<double> &U, const StepReport &report)
+      {
+        io::PostprocessedState s;
+        s.kind       = kind;
+        s.step       = report.step;
+        s.branch     = report.branch;
+        s.t          = report.t;
+        s.n_negative = report.n_negative;
+        s.final      = report.final;
+        s.unknowns   = &U;
+        return s;
+      }
+    } // namespace
+
     void
     report_converged_step(ContinuationProblem &problem, const Vector<double> &U, const StepReport &report)
     {
       problem.converged_step(U, report);
-      io::PostprocessedState s;
-      s.step       = report.step;
-      s.branch     = report.branch;
-      s.t          = report.t;
-      s.n_negative = report.n_negative;
-      s.final      = report.final;
-      s.unknowns   = &U;
-      problem.postprocess(s);
+      problem.postprocess(postprocessed(io::PostprocessedState::Kind::converged_state, U, report));
     }
 
     void
     report_path_end(const ContinuationProblem &problem, const Vector<double> &U, const StepReport &last)
     {
-      io::PostprocessedState s;
-      s.kind       = io::PostprocessedState::Kind::path_end;
-      s.step       = last.step;
-      s.branch     = last.branch;
-      s.t          = last.t;
-      s.n_negative = last.n_negative;
-      s.unknowns   = &U;
-      problem.postprocess(s);
+      problem.postprocess(postprocessed(io::PostprocessedState::Kind::path_end, U, last));
     }
 
     void
@@ -100,12 +105,7 @@ namespace cosmo
     ContinuationSettings::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Continuation");
-      initial_step    = prm.get_double("Initial step");
-      minimum_step    = prm.get_double("Minimum step");
-      maximum_step    = prm.get_double("Maximum step");
-      maximum_steps   = prm.get_integer("Maximum number of steps");
-      easy_iterations = prm.get_integer("Easy step iterations");
-      growth_factor   = prm.get_double("Step growth factor");
+      parse_step_control(prm, *this);
       if (minimum_step > initial_step)
         throw io::InputError("Continuation", "Minimum step", prm.get("Minimum step"),
                              "must not exceed 'Initial step' = " + prm.get("Initial step"));

@@ -119,9 +119,10 @@ namespace cosmo
         auto       run   = study.make_run(*point);
         run->start_from_critical_point(g);
         ContinuedBack back;
-        // (an auxiliary run: the point's postprocessors are the point's own)
-        io::RunOptions auxiliary = options;
-        auxiliary.postprocessors.reset();
+        // (a run of its own in its own directory, with postprocessors of its
+        // own: the point's are the point's; the event files its summary.json
+        // names are written by its 'fields')
+        const io::RunOptions auxiliary = io::PointLoop::point_options(options, *point);
         try
           {
             run->run(auxiliary, *point);
@@ -305,6 +306,10 @@ namespace cosmo
                     f.previous_mode_t = x.event.lambda;
                 f.factorizations += run->factorizations();
                 run = study.make_run(*point_prm);
+                // The independent run writes the point's files afresh: new
+                // postprocessors, not the attempt's (its events would number
+                // the run's, and summary.json names event-01).
+                quiet = io::PointLoop::point_options(options, *point_prm);
               }
           }
         if (f.continued == 0)
