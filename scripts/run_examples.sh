@@ -28,12 +28,14 @@ mkdir -p output/logs
 failed=0
 strips=(parameter_files/strip/*.prm parameter_files/strip/studies/*.prm)
 plates=(parameter_files/plate_rod/*.prm parameter_files/plate_rod/studies/*.prm)
-for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}" "${plates[@]}"; do
+rods=(parameter_files/rod/*.prm)
+for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}" "${plates[@]}" "${rods[@]}"; do
   name="$(basename "$prm" .prm)"
   exe="$EXE"
   case "$prm" in
     parameter_files/strip/*) name="strip_$name"; exe="$BUILD/strip" ;;
     parameter_files/plate_rod/*) name="plate_rod_$name"; exe="$BUILD/plate_rod" ;;
+    parameter_files/rod/*) name="rod_$name"; exe="$BUILD/rod" ;;
   esac
   logfile="output/logs/$name.log"
   start=$EPOCHREALTIME

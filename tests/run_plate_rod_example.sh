@@ -11,7 +11,7 @@
 # A json path is dotted, list entries by index: events.0.t,
 # closed_form.axisymmetric.mismatch. A study (sweep.csv) is checked row by
 # row with '# sweep check: <python expression of the columns>'.
-# usage: run_plate_rod_example.sh <plate_rod> <file.prm> <reference.output> <scratch dir>
+# usage: run_plate_rod_example.sh <plate_rod or rod> <file.prm> <reference.output> <scratch dir>
 set -euo pipefail
 exe=$(realpath "$1") prm=$(realpath "$2") ref=$(realpath -m "$3") dir=$(realpath -m "$4")
 rm -rf "$dir" && mkdir -p "$dir"

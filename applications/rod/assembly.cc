@@ -1,0 +1,240 @@
+// The rod's energy and its derivatives: the helicoidal element's strains
+// (kinematics/rod_element.h), the law, the dead loads and the quaternions'
+// norm penalty, differentiated by Sacado per element and assembled by the
+// library's EnergyAssembler (doc/theory-rod.md 2-4).
+#include <cosmo/assembly/energy_assembler.h>
+#include <cosmo/materials/energy_derivatives.h>
+
+#include "rod_problem.h"
+
+#include <cmath>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    namespace
+    {
+      constexpr unsigned int n_local = 14; ///< (r_a, q_a, r_b, q_b)
+
+      struct Scratch
+      {
+        std::array<double, n_local> x{};
+      };
+
+      template <typename Number>
+      kinematics::Quaternion<Number>
+      as_numbers(const kinematics::Quaternion<double> &q)
+      {
+        return {{Number(q[0]), Number(q[1]), Number(q[2]), Number(q[3])}};
+      }
+
+      /**
+       * The element's energy: h psi(strains) of the law at its midpoint's
+       * natural state, minus the dead loads' work, plus (k/2)(|q|^2 - 1)^2 of
+       * the nodes it owns. The penalty holds the quaternions' norm, which no
+       * other term sees (R depends on q/|q|): the Hessian gains one positive
+       * eigenvalue per node along q, where it had a zero one, so the inertia
+       * is the rod's (doc/theory-rod.md 3).
+       */
+      template <typename Number>
+      Number
+      element_energy(const std::array<Number, n_local> &x,
+                     const RodElementData &              d,
+                     const materials::RodLaw &           law,
+                     const materials::RodNaturalState &  natural,
+                     const Tensor<1, 3> &                f,
+                     const unsigned int                  e)
+      {
+        Tensor<1, 3, Number>           r_a, r_b;
+        kinematics::Quaternion<Number> q_a, q_b;
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            r_a[i] = x[i];
+            r_b[i] = x[7 + i];
+          }
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            q_a[i] = x[3 + i];
+            q_b[i] = x[10 + i];
+          }
+        const bool seam = d.ring && e + 1 == d.n_elements;
+        const auto q_b_seen = seam ? kinematics::quaternion_product(q_b, as_numbers<Number>(d.seam)) : q_b;
+        Number W = d.h * materials::grown_rod_energy(law, kinematics::helicoidal_strains(r_a, q_a, r_b, q_b_seen, d.h),
+                                                      natural);
+        for (unsigned int i = 0; i < 3; ++i)
+          W -= 0.5 * d.h * f[i] * (r_a[i] + r_b[i]);
+        if (e == 0 && d.free_end[0])
+          for (unsigned int i = 0; i < 3; ++i)
+            W -= d.end_force[0][i] * r_a[i];
+        const bool last = !d.ring && e + 1 == d.n_elements;
+        if (last && d.free_end[1])
+          for (unsigned int i = 0; i < 3; ++i)
+            W -= d.end_force[1][i] * r_b[i];
+        // (returns a Number, not a Sacado expression of its local m)
+        auto penalty = [&](const kinematics::Quaternion<Number> &q) -> Number {
+          const Number m = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] - 1.;
+          return 0.5 * d.penalty * m * m;
+        };
+        W += penalty(q_a);
+        if (last)
+          W += penalty(q_b);
+        if (e == 0 && d.spin_gauge)
+          {
+            // A penalty on a symmetry's orbit: zero at equilibrium, where the
+            // rest of the energy does not change along the spin; the spin's
+            // zero eigenvalue becomes positive and no other changes sign
+            // (doc/theory-rod.md 5).
+            const auto p    = kinematics::quaternion_product(q_a, as_numbers<Number>(d.reference_0_conjugate));
+            Number     spin = p[1] * d.spin_axis[0];
+            spin += p[2] * d.spin_axis[1];
+            spin += p[3] * d.spin_axis[2];
+            W += 0.5 * d.penalty * spin * spin;
+          }
+        return W;
+      }
+
+      /// The force and moment conjugate to a node's (r, q) gradient: the
+      /// moment of a rotation delta_phi in the fixed axes, q -> (1, delta_phi/2) q.
+      std::array<double, 6>
+      nodal_load(const double *g, const kinematics::Quaternion<double> &q)
+      {
+        std::array<double, 6> load{};
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            load[i] = g[i];
+            kinematics::Quaternion<double> e{{0, 0, 0, 0}};
+            e[i + 1]      = 1;
+            const auto eq = kinematics::quaternion_product(e, q);
+            for (unsigned int k = 0; k < 4; ++k)
+              load[3 + i] += 0.5 * g[3 + k] * eq[k];
+          }
+        return load;
+      }
+    } // namespace
+
+    RodElementData
+    RodProblem::element_data(const double t) const
+    {
+      RodElementData d;
+      d.t          = t;
+      d.h          = element_length();
+      d.n_elements = n_elements;
+      d.ring       = ring;
+      d.penalty    = largest_moment_stiffness() / d.h;
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          d.free_end[k] = !ring && (ends[k].support == RodEnd::Support::free ||
+                                     ends[k].support == RodEnd::Support::rotation);
+          const auto F  = evaluate(ends[k].force, 0, t);
+          for (unsigned int i = 0; i < 3; ++i)
+            d.end_force[k][i] = F[i];
+        }
+      if (ring)
+        d.seam = kinematics::twist_quaternion(evaluate(seam_twist, 0, t)[0]);
+      if (spin_gauge)
+        {
+          const Vector<double> X0 = configuration(reference, t);
+          d.spin_gauge            = true;
+          d.spin_axis             = position(X0, n_nodes() - 1) - position(X0, 0);
+          d.spin_axis /= d.spin_axis.norm();
+          const auto q0           = quaternion(reference, 0);
+          d.reference_0_conjugate = {{q0[0], -q0[1], -q0[2], -q0[3]}};
+        }
+      return d;
+    }
+
+    void
+    RodProblem::element_contribution(const RodElementData &      d,
+                                     const Vector<double> &      X,
+                                     const unsigned int          e,
+                                     std::array<double, 14> &    x,
+                                     const bool                  jacobian,
+                                     assembly::CellContribution &c) const
+    {
+      for (unsigned int i = 0; i < n_local; ++i)
+        x[local_slot[i]] = X[c.dof_indices[i]];
+      // Refused: a quaternion far from the unit sphere or a relative rotation past the limit.
+      kinematics::Quaternion<double> q_a{{x[3], x[4], x[5], x[6]}}, q_b{{x[10], x[11], x[12], x[13]}};
+      if (ring && e + 1 == n_elements)
+        q_b = kinematics::quaternion_product(q_b, d.seam);
+      const auto norm2 = [](const kinematics::Quaternion<double> &q) {
+        return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+      };
+      if (norm2(q_a) < 0.25 || norm2(q_b) < 0.25 ||
+          !kinematics::relative_rotation_admissible(kinematics::relative_quaternion(q_a, q_b), rotation_limit))
+        {
+          c.admissible = false;
+          return;
+        }
+      const double         s       = (e + 0.5) * d.h;
+      const auto           natural = natural_state(s, d.t);
+      const Vector<double> fv      = evaluate(distributed_force, s, d.t);
+      Tensor<1, 3>         f;
+      for (unsigned int i = 0; i < 3; ++i)
+        f[i] = fv[i];
+      double                                W = 0;
+      std::array<double, n_local>           g{};
+      std::array<double, n_local * n_local> H{};
+      materials::internal::differentiate<n_local>(
+        x, [&](const auto &y) { return element_energy(y, d, *law, natural, f, e); }, jacobian, W, g, H);
+      if (!std::isfinite(W))
+        {
+          c.admissible = false;
+          return;
+        }
+      // Scalars: the energy, then the loads of the supports at A and B.
+      c.scalars[0] = W;
+      for (unsigned int i = 0; i < n_local; ++i)
+        {
+          c.residual(i) = g[local_slot[i]];
+          if (jacobian)
+            for (unsigned int j = 0; j < n_local; ++j)
+              c.hessian(i, j) = H[n_local * local_slot[i] + local_slot[j]];
+        }
+      if (!ring && e == 0 && ends[0].support != RodEnd::Support::free)
+        {
+          const auto load = nodal_load(&g[0], q_a);
+          std::copy(load.begin(), load.end(), c.scalars.begin() + 1);
+        }
+      if (!ring && e + 1 == n_elements && ends[1].support != RodEnd::Support::free)
+        {
+          const auto load = nodal_load(&g[7], q_b);
+          std::copy(load.begin(), load.end(), c.scalars.begin() + 7);
+        }
+    }
+
+    int
+    RodProblem::assemble(const Vector<double> &U, const double t, Vector<double> *R, const bool jacobian)
+    {
+      const Vector<double> X = configuration(U, t);
+      const RodElementData d = element_data(t);
+      auto worker = [&](const DoFHandler<1, 3>::active_cell_iterator &cell, Scratch &sc,
+                        assembly::CellContribution &c) {
+        element_contribution(d, X, cell->active_cell_index(), sc.x, jacobian, c);
+      };
+      Vector<double> jacobian_residual;
+      if (!R)
+        R = &jacobian_residual;
+      R->reinit(n_unknowns());
+      if (jacobian)
+        system.clear();
+      assembly::AssemblyTarget target;
+      target.residual    = R;
+      target.jacobian    = jacobian;
+      target.system      = &system;
+      target.constraints = &constraints;
+      const auto totals  = assembly::EnergyAssembler<1, 3>::assemble(dof_handler, worker, Scratch(),
+                                                                    assembly::CellContribution(n_local, 0, 13),
+                                                                    target);
+      if (!totals.admissible)
+        return 1;
+      assembled_energy = totals.scalars[0];
+      for (unsigned int k = 0; k < 2; ++k)
+        std::copy(totals.scalars.begin() + 1 + 6 * k, totals.scalars.begin() + 7 + 6 * k,
+                  assembled_end_loads[k].begin());
+      residuals.store(U, t, *R, totals.scalars);
+      return std::isfinite(assembled_energy) ? 0 : 1;
+    }
+  } // namespace rod
+} // namespace cosmo

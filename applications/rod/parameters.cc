@@ -1,0 +1,231 @@
+// The parameters of the rod application: what it reads and checks.
+#include <deal.II/base/exceptions.h>
+
+#include <cosmo/io/parameters.h>
+
+#include "parameters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    namespace
+    {
+      /// n muparser expressions of s and t in `entry` of `section`; io::InputError if they do not parse.
+      Expression
+      parse_expression(ParameterHandler &prm, const std::string &section, const std::string &entry,
+                       const unsigned int n)
+      {
+        const std::string text = prm.get(entry);
+        auto              f    = std::make_shared<FunctionParser<2>>(n);
+        try
+          {
+            f->initialize("s,t", text, {{"pi", M_PI}});
+            Vector<double> v(n);
+            f->vector_value(Point<2>(0.1, 0.2), v);
+          }
+        catch (ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            throw io::InputError(section, entry, text,
+                                 std::to_string(n) +
+                                   " muparser expression(s) of s and t (and pi), separated by ';'; "
+                                   "the parser said: " + info.str());
+          }
+        return f;
+      }
+
+      void
+      declare_end(ParameterHandler &prm, const std::string &name, const std::string &support)
+      {
+        prm.enter_subsection(name);
+        prm.declare_entry("Support", support, Patterns::Selection("clamped|pinned|rotation only|free"),
+                          "clamped: position and rotation prescribed; pinned: position "
+                          "prescribed, the rotation free (a spherical joint); rotation only: "
+                          "the rotation prescribed, the position free (a cantilever rolled up "
+                          "by its end's rotation); free: nothing prescribed.");
+        prm.declare_entry("Displacement", "0; 0; 0", Patterns::Anything(),
+                          "Clamped or pinned: the end's displacement from its reference "
+                          "position, 3 expressions of t (e.g. '0; 0; -0.1*t' pushes an end "
+                          "of a rod along e3 by 0.1 t).");
+        prm.declare_entry("Rotation", "0; 0; 0", Patterns::Anything(),
+                          "Clamped or rotation only: the rotation vector (axis times angle, in the fixed "
+                          "axes) applied to the end's reference frame, 3 expressions of t; "
+                          "any angle (e.g. '0; 0; 2*pi*t' twists a rod along e3 by t turns).");
+        prm.declare_entry("Force", "0; 0; 0", Patterns::Anything(),
+                          "A dead force on the end (it keeps its direction), 3 expressions "
+                          "of t; it works on a free end only.");
+        prm.leave_subsection();
+      }
+
+      RodEnd
+      parse_end(ParameterHandler &prm, const std::string &name)
+      {
+        prm.enter_subsection(name);
+        RodEnd      end;
+        const auto  s = prm.get("Support");
+        end.support   = s == "clamped" ? RodEnd::Support::clamped :
+                        s == "pinned"  ? RodEnd::Support::pinned :
+                        s == "free"    ? RodEnd::Support::free :
+                                         RodEnd::Support::rotation;
+        end.displacement = parse_expression(prm, name, "Displacement", 3);
+        end.rotation     = parse_expression(prm, name, "Rotation", 3);
+        end.force        = parse_expression(prm, name, "Force", 3);
+        // A dead force does no work where the position is prescribed: say so
+        // rather than ignore it.
+        if (end.support == RodEnd::Support::clamped || end.support == RodEnd::Support::pinned)
+          for (const double t : {0., 0.37, 1.})
+            if (RodParameters::evaluate(end.force, 0, t).l2_norm() != 0)
+              throw io::InputError(name, "Force", prm.get("Force"),
+                                   "zero at a clamped or pinned end (its position is "
+                                   "prescribed: a force there does no work)");
+        prm.leave_subsection();
+        return end;
+      }
+    } // namespace
+
+    void
+    RodParameters::check_supports(ParameterHandler &prm) const
+    {
+      // The supports must hold the rigid motions (the Hessian is singular
+      // otherwise): a clamp, two pins (their spin is gauged), or a pin and
+      // a held rotation.
+      using S = RodEnd::Support;
+      if (ring)
+        return;
+      const S a = ends[0].support, b = ends[1].support;
+      const bool held = a == S::clamped || b == S::clamped || (a == S::pinned && b != S::free) ||
+                        (b == S::pinned && a != S::free);
+      if (!held)
+        {
+          prm.enter_subsection("End B");
+          const std::string value = prm.get("Support");
+          prm.leave_subsection();
+          throw io::InputError("End B", "Support", value,
+                               "supports that hold the rod's rigid motions: one end clamped, "
+                               "both pinned, or one pinned and the other 'rotation only' "
+                               "(End A is '" + std::string(a == S::pinned ? "pinned" : a == S::free ? "free" : "rotation only") + "')");
+        }
+    }
+
+    void
+    RodParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Rod");
+      prm.declare_entry("Length", "1", Patterns::Double(0), "Reference length L of the rod.");
+      prm.declare_entry("Number of elements", "40", Patterns::Integer(1, 10000000),
+                        "Two-node helicoidal elements of equal reference length L/N.");
+      prm.declare_entry("Shape", "straight", Patterns::Selection("straight|natural|ring"),
+                        "The reference and starting state. straight: along e3 from the "
+                        "origin, directors the fixed axes; natural: the stress-free shape "
+                        "of the natural strains at the path's start, element by element "
+                        "(a helix for constant strains); ring: a circle of circumference L "
+                        "in the (e1, e2) plane, d2 = e3 its normal, d3 its tangent, closed "
+                        "on itself (no ends).");
+      prm.declare_entry("Natural strains", "0; 0; 1; 0; 0; 0", Patterns::Anything(),
+                        "nu1; nu2; nu3; kappa1; kappa2; kappa3 of the stress-free rod per "
+                        "reference length, in the director frame: 6 expressions of s and t.");
+      prm.declare_entry("Growth", "1", Patterns::Anything(),
+                        "The natural stretch g(s, t) (axial growth): the stress-free rod has "
+                        "strains g nu0 and kappa0 and the law is applied to "
+                        "(nu/g - nu0, (kappa - kappa0)/g), times g.");
+      prm.declare_entry("Distributed force", "0; 0; 0", Patterns::Anything(),
+                        "A dead force per reference length (weight: '0; 0; -rho*g*t'), "
+                        "3 expressions of s and t.");
+      prm.declare_entry("Ring twist", "0", Patterns::Anything(),
+                        "Shape = ring: the twist added at the ring's seam, in turns, an "
+                        "expression of t (the link of the closed rod is this number).");
+      prm.declare_entry("Largest element rotation", "135", Patterns::Double(1, 179),
+                        "Degrees: a state whose relative rotation between the two nodes of "
+                        "an element exceeds this is refused (the step is cut); the "
+                        "element's rotation must stay below 180 degrees. Refine the mesh "
+                        "if the start is refused.");
+      prm.enter_subsection("Material");
+      materials::declare_rod_law_parameters(prm);
+      prm.leave_subsection();
+      prm.leave_subsection();
+      declare_end(prm, "End A", "clamped");
+      declare_end(prm, "End B", "free");
+      solvers::NewtonSettings::declare_parameters(prm);
+      solvers::ContinuationSettings::declare_parameters(prm);
+      solvers::ArclengthSettings::declare_parameters(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory", "output/rod", Patterns::Anything(),
+                        "Directory for parameters.prm, summary.json, steps.csv, rod-NNNN.vtu "
+                        "and log.txt (created if needed).");
+      prm.leave_subsection();
+    }
+
+    void
+    RodParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Rod");
+      length     = prm.get_double("Length");
+      n_elements = prm.get_integer("Number of elements");
+      shape      = prm.get("Shape");
+      ring       = shape == "ring";
+      if (!(length > 0))
+        throw io::InputError("Rod", "Length", prm.get("Length"), "must be positive");
+      if (ring && n_elements < 3)
+        throw io::InputError("Rod", "Number of elements", prm.get("Number of elements"),
+                             "at least 3 for a ring");
+      natural_strains   = parse_expression(prm, "Rod", "Natural strains", 6);
+      growth            = parse_expression(prm, "Rod", "Growth", 1);
+      distributed_force = parse_expression(prm, "Rod", "Distributed force", 3);
+      seam_twist        = parse_expression(prm, "Rod", "Ring twist", 1);
+      rotation_limit    = prm.get_double("Largest element rotation") * M_PI / 180.;
+      prm.enter_subsection("Material");
+      law = materials::create_rod_law(prm, "Rod/Material");
+      prm.leave_subsection();
+      prm.leave_subsection();
+      ends[0] = parse_end(prm, "End A");
+      ends[1] = parse_end(prm, "End B");
+      check_supports(prm);
+      newton_settings.parse_parameters(prm);
+      continuation_settings.parse_parameters(prm);
+      arclength_settings.parse_parameters(prm);
+      // Arclength continuation starts where the natural-parameter path would.
+      start = continuation_settings.start;
+      prm.enter_subsection("Output");
+      output_directory = prm.get("Output directory");
+      prm.leave_subsection();
+    }
+
+    Vector<double>
+    RodParameters::evaluate(const Expression &f, const double s, const double t)
+    {
+      Vector<double> v(f->n_components);
+      f->vector_value(Point<2>(s, t), v);
+      return v;
+    }
+
+    materials::RodNaturalState
+    RodParameters::natural_state(const double s, const double t) const
+    {
+      materials::RodNaturalState n;
+      const Vector<double>       e = evaluate(natural_strains, s, t);
+      std::copy(e.begin(), e.end(), n.reference_strains.begin());
+      n.growth = evaluate(growth, s, t)[0];
+      return n;
+    }
+
+    double
+    RodParameters::largest_force_stiffness() const
+    {
+      const auto K = law->natural_stiffness();
+      return std::max({K[0], K[7], K[14]});
+    }
+
+    double
+    RodParameters::largest_moment_stiffness() const
+    {
+      const auto K = law->natural_stiffness();
+      return std::max({K[21], K[28], K[35]});
+    }
+  } // namespace rod
+} // namespace cosmo

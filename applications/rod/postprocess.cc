@@ -1,0 +1,246 @@
+// What the rod shows of a state: steps.csv's row, the VTU of its
+// centreline with directors, strains and resultants, the located events.
+#include <deal.II/base/utilities.h>
+
+#include <cosmo/io/vtu_patches.h>
+#include <cosmo/kinematics/framed_curve.h>
+#include <cosmo/kinematics/helix.h>
+
+#include "rod_problem.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+#include <cmath>
+
+namespace cosmo
+{
+  namespace rod
+  {
+    namespace
+    {
+      const std::array<const char *, 6> strain_names{{"nu1", "nu2", "nu3", "kappa1", "kappa2", "kappa3"}};
+    } // namespace
+
+    RodState
+    RodProblem::describe(const Vector<double> &U, const double t)
+    {
+      RodState s;
+      s.t = t;
+      Vector<double> R;
+      AssertThrow(assemble(U, t, &R, false) == 0, ExcMessage("a converged state that cannot be evaluated"));
+      s.energy = assembled_energy;
+      for (unsigned int k = 0; k < 2; ++k)
+        s.end_loads[k] = assembled_end_loads[k];
+      const Vector<double> X = configuration(U, t);
+      s.end_position         = position(X, ring ? n_nodes() / 2 : n_nodes() - 1);
+      for (unsigned int e = 0; e < n_elements; ++e)
+        {
+          const auto strain = element_strains(X, e, t);
+          s.max_rotation    = std::max(s.max_rotation, element_length() *
+                                                      std::sqrt(strain[3] * strain[3] + strain[4] * strain[4] +
+                                                                strain[5] * strain[5]));
+        }
+      if (ring)
+        {
+          std::vector<Tensor<1, 3>> x, m;
+          const Tensor<1, 3>        closure = ribbon(X, t, x, m);
+          // The frame is continuous across the seam up to its turn by
+          // 2 pi Tw0: the link is Tw0 (plus the reference's, 0 for the
+          // circle), the topology's; twist and writhe are measured.
+          s.twist  = kinematics::twist(x, m, closure);
+          s.writhe = kinematics::writhe(x);
+          s.link   = evaluate(seam_twist, 0, t)[0];
+        }
+      return s;
+    }
+
+    Tensor<1, 3>
+    RodProblem::ribbon(const Vector<double> &X, const double t, std::vector<Tensor<1, 3>> &x,
+                       std::vector<Tensor<1, 3>> &m) const
+    {
+      auto normal = [](const Tensor<1, 3> &d, const Tensor<1, 3> &tangent) {
+        Tensor<1, 3> n = d - (d * tangent) * tangent;
+        return Tensor<1, 3>(n / n.norm());
+      };
+      Tensor<1, 3> closure;
+      x.resize(n_nodes());
+      m.resize(n_elements);
+      for (unsigned int k = 0; k < n_nodes(); ++k)
+        x[k] = position(X, k);
+      for (unsigned int e = 0; e < n_elements; ++e)
+        {
+          const kinematics::RodStrains xi(element_strains(X, e, t));
+          const Tensor<2, 3> R = kinematics::quaternion_rotation(quaternion(X, e)) *
+                                 kinematics::helix_rotation(xi.kappa, 0.5 * element_length());
+          Tensor<1, 3> t_e = x[(e + 1) % n_nodes()] - x[e], d1;
+          t_e /= t_e.norm();
+          for (unsigned int i = 0; i < 3; ++i)
+            d1[i] = R[i][0];
+          m[e] = normal(d1, t_e);
+          if (e == 0)
+            {
+              // The last element's frame continues into node 0's turned by
+              // the seam's 2 pi Tw0: m_0 turned by that angle about the
+              // segment (not about d3, which shear tilts from it: so that
+              // Tw + Wr = Tw0 holds for the polygon, theory-rod.md 8).
+              const double a = 2 * M_PI * evaluate(seam_twist, 0, t)[0];
+              closure        = std::cos(a) * m[e] + std::sin(a) * cross_product_3d(t_e, m[e]);
+            }
+        }
+      return closure;
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    RodProblem::quantity_columns() const
+    {
+      std::vector<std::pair<std::string, std::string>> c;
+      for (const char *n : {"step", "branch", "t", "newton_iterations", "energy", "end_x", "end_y", "end_z"})
+        c.emplace_back(n, "");
+      for (const char *end : {"A", "B"})
+        for (const char *q : {"force", "moment"})
+          for (const char *x : {"x", "y", "z"})
+            c.emplace_back(std::string(q) + "_" + end + "_" + x, "");
+      c.emplace_back("max_element_rotation", "rad");
+      if (ring)
+        for (const char *n : {"link", "twist", "writhe"})
+          c.emplace_back(n, "turns");
+      c.emplace_back("n_negative_eigenvalues", "");
+      return c;
+    }
+
+    void
+    RodProblem::converged_step(const Vector<double> &U, const solvers::StepReport &report)
+    {
+      solution       = U;
+      load_parameter = report.t;
+      RodState s     = describe(U, report.t);
+      // The inertia of the state's own factorization, or of the predictor's
+      // one Newton step away (report.n_negative), as the drivers give it.
+      s.n_negative = report.n_negative;
+      s.branch     = report.branch;
+      states.push_back(s);
+      steps_row = {double(report.step), double(report.branch), report.t, double(report.newton_iterations),
+                   s.energy, s.end_position[0], s.end_position[1], s.end_position[2]};
+      for (unsigned int k = 0; k < 2; ++k)
+        steps_row.insert(steps_row.end(), s.end_loads[k].begin(), s.end_loads[k].end());
+      std::ostringstream line;
+      line << "step " << std::setw(3) << report.step << "  branch " << report.branch << "  t = " << std::setprecision(8)
+           << std::setw(10) << report.t << "  Newton " << report.newton_iterations << "  end " << std::setprecision(4)
+           << s.end_position[0] << " " << s.end_position[1] << " " << s.end_position[2] << "  neg.eig. " << s.n_negative
+           << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
+      record.say(line.str());
+      steps_row.push_back(s.max_rotation);
+      if (ring)
+        steps_row.insert(steps_row.end(), {s.link, s.twist, s.writhe});
+      steps_row.push_back(s.n_negative);
+    }
+
+    void
+    RodProblem::located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode)
+    {
+      solvers::EventRecord r;
+      r.event = e;
+      r.state.assign(U.begin(), U.end());
+      if (mode)
+        r.mode.assign(mode->begin(), mode->end());
+      located_events.push_back(r);
+    }
+
+    namespace
+    {
+      /**
+       * The centreline as quadratic Lagrange curves, one per element, its
+       * midpoint on the element's helicoid (H_a exp(xi h / 2)): the
+       * directors at the nodes and the midpoint, the element's strains and
+       * resultants (constant on it); with a mode, the mode's displacement.
+       */
+      io::VTUPatches<1>
+      centreline(const RodProblem &p, const Vector<double> &X, const double t, const Vector<double> *mode)
+      {
+        std::vector<std::pair<std::string, unsigned int>> fields = {{"d1", 3}, {"d2", 3}, {"d3", 3}};
+        for (const char *n : strain_names)
+          fields.emplace_back(n, 1);
+        fields.emplace_back("force", 3);
+        fields.emplace_back("moment", 3);
+        if (mode)
+          fields.emplace_back("mode_displacement", 3);
+        io::VTUPatches<1> out(fields);
+        out.set_time(t);
+        const double h = p.element_length();
+        for (unsigned int e = 0; e < p.n_elements; ++e)
+          {
+            const unsigned int b      = (e + 1) % p.n_nodes();
+            const auto         strain = p.element_strains(X, e, t);
+            const auto         nm     = materials::grown_rod_resultants(*p.law, strain, p.natural_state((e + 0.5) * h, t));
+            const Tensor<2, 3> R_a    = kinematics::quaternion_rotation(p.quaternion(X, e));
+            const kinematics::RodStrains xi(strain);
+            const Tensor<2, 3> R_mid = R_a * kinematics::helix_rotation(xi.kappa, 0.5 * h);
+            const Tensor<1, 3> r_mid = p.position(X, e) + R_a * kinematics::helix_position(xi.nu, xi.kappa, 0.5 * h);
+            // The far node's frame as the element sees it (a ring's seam turned back).
+            const Tensor<2, 3> R_b = R_a * kinematics::helix_rotation(xi.kappa, h);
+            out.begin_patch(2);
+            const std::array<Point<3>, 3>     x{{Point<3>(p.position(X, e)), Point<3>(r_mid), Point<3>(p.position(X, b))}};
+            const std::array<Tensor<2, 3>, 3> frames{{R_a, R_mid, R_b}};
+            // Lagrange points in order: the two ends, then the midpoint.
+            const std::array<unsigned int, 3> point{{0, 2, 1}};
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                std::vector<double> v;
+                for (unsigned int d = 0; d < 3; ++d)
+                  for (unsigned int i = 0; i < 3; ++i)
+                    v.push_back(frames[k][i][d]);
+                v.insert(v.end(), strain.begin(), strain.end());
+                for (unsigned int i = 0; i < 6; ++i)
+                  {
+                    // Resultants in the fixed axes: n = R (n1, n2, n3).
+                    double s = 0;
+                    for (unsigned int j = 0; j < 3; ++j)
+                      s += frames[k][i % 3][j] * nm[3 * (i / 3) + j];
+                    v.push_back(s);
+                  }
+                if (mode)
+                  for (unsigned int i = 0; i < 3; ++i)
+                    v.push_back(k == 1 ? 0.5 * (p.position(*mode, e)[i] + p.position(*mode, b)[i]) :
+                                         p.position(*mode, k == 0 ? e : b)[i]);
+                out.set_position(point[k], x[k]);
+                out.set_values(point[k], v);
+              }
+            out.end_patch();
+          }
+        return out;
+      }
+    } // namespace
+
+    std::vector<std::pair<std::string, std::string>>
+    RodProblem::write_fields(const std::string &tag) const
+    {
+      io::PhaseTimer::Scope scope(timer, "output");
+      const auto out = centreline(*this, configuration(solution, load_parameter), load_parameter, nullptr);
+      return {{"rod", out.write_output(output_directory, "rod-" + tag, false)}};
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    RodProblem::write_event_fields(const std::string &tag, const Vector<double> &U, const Vector<double> *mode) const
+    {
+      io::PhaseTimer::Scope scope(timer, "output");
+      const double          t     = load_parameter;
+      const Vector<double>  X     = configuration(U, t);
+      std::vector<std::pair<std::string, std::string>> files = {
+        {"event", centreline(*this, X, t, mode).write_output(output_directory, "event-" + tag, false)}};
+      if (mode)
+        {
+          // The mode added to the state, its largest displacement a tenth of the length.
+          double m = 0;
+          for (unsigned int k = 0; k < n_nodes(); ++k)
+            m = std::max(m, position(*mode, k).norm());
+          Vector<double> V = X;
+          if (m > 0)
+            V.add(0.1 * length / m, *mode);
+          files.emplace_back("event mode", centreline(*this, configuration(V, t), t, nullptr)
+                                             .write_output(output_directory, "event-" + tag + "-mode", false));
+        }
+      return files;
+    }
+  } // namespace rod
+} // namespace cosmo

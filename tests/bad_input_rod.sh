@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Bad input of the rod application: a clear message naming the entry and
+# exit status 1; a start the element cannot represent is refused, not
+# followed. usage: bad_input_rod.sh <rod> <scratch dir>
+set -uo pipefail
+exe=$1 dir=$2
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+fail=0
+source "$here/expect.sh"
+rod() { printf 'subsection Rod\n%s\nend\n%s\nsubsection Output\n set Output directory = out\nend\n' "$1" "${2:-}"; }
+rod ' set Length = -1' > length.prm
+expect "negative length" "Length" length.prm
+rod ' set Natural strains = 0; 0; 1; 0; 0' > strains.prm
+expect "five natural strains for six" "6 muparser expression" strains.prm
+rod ' set Natural strains = 0; 0; 1; 0; sin(; 0' > parse.prm
+expect "an expression that does not parse" "Natural strains" parse.prm
+rod ' set Shape = spiral' > shape.prm
+expect "unknown shape (names the allowed values)" "straight|natural|ring" shape.prm
+rod '' 'subsection End A
+ set Support = free
+end' > free.prm
+expect "both ends free (rigid motions not held)" "supports that hold the rod" free.prm
+rod '' 'subsection End A
+ set Support = pinned
+end' > pinned_free.prm
+expect "a pin and a free end (the rod turns about the pin)" "supports that hold the rod" pinned_free.prm
+rod '' 'subsection End B
+ set Support = clamped
+ set Force = 0; 0; t
+end' > force.prm
+expect "a dead force on a clamped end" "a force there does no work" force.prm
+rod ' subsection Material
+  set Law = cubic
+ end' > law.prm
+expect "an unknown rod law" "quadratic" law.prm
+rod ' set Shape = ring
+ set Number of elements = 2' > ring.prm
+expect "a ring of two elements" "at least 3 for a ring" ring.prm
+rod ' set Number of elements = 2
+ set Natural strains = 0; 0; 1; 0; 8; 0
+ set Shape = natural' > coarse.prm
+expect "an element of the start turned by 229 degrees (too coarse a mesh)" "use at least 4 elements" coarse.prm
+exit $fail

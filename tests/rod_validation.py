@@ -1,0 +1,246 @@
+#!/usr/bin/env python3
+"""Validation of the rod application against closed forms (doc/theory-rod.md 7).
+
+usage: rod_validation.py <rod executable> <case> <scratch directory>
+
+Cases:
+  helix   a rod clamped at one end, its natural strains (with shear, stretch
+          and a coupled 6x6 law) ramped from straight: at t = 1 the free end
+          is where the exact constant-strain curve H(s) = exp(s xi) puts it,
+          on every mesh (3, 8 and 40 elements), the energy zero.
+  rollup  a cantilever whose end is turned by 2 pi t about e2, its position
+          free: at t = 1 an exact circle on every mesh (4, 7 and 30
+          elements): the end back at the clamp, the end moment 2 pi B2 / L,
+          no end force.
+  euler   clamped-clamped, the end pushed by t L: the first branch point at
+          the exact threshold of the discrete rod, P_h [lambda (1 + T^2/3)
+          + P_h / GA] = 4 B T^2 / h^2 with T = tan(pi h / L) and lambda =
+          1 - P_h / EA (theory-rod.md 7.3), on 8, 20 and 40 elements; the
+          threshold converging to the continuum's P [lambda + P / GA] =
+          4 pi^2 B / L^2 at second order in h.
+"""
+import csv, json, math, os, subprocess, sys
+
+import numpy as np
+from scipy.optimize import brentq
+
+exe, case, scratch = sys.argv[1], sys.argv[2], sys.argv[3]
+os.makedirs(scratch, exist_ok=True)
+failures = 0
+
+
+def check(what, value, reference, tol):
+    global failures
+    ok = abs(value - reference) <= tol
+    print("  %s  %-52s value %.15g  reference %.15g  tol %.3g" %
+          ("ok  " if ok else "FAIL", what, value, reference, tol))
+    failures += not ok
+
+
+def prm_text(entries):
+    """Nested dict -> a ParameterHandler file."""
+    out = []
+    def walk(d, indent):
+        for k, v in d.items():
+            if isinstance(v, dict):
+                out.append(" " * indent + "subsection " + k)
+                walk(v, indent + 2)
+                out.append(" " * indent + "end")
+            else:
+                out.append(" " * indent + "set %s = %s" % (k, v))
+    walk(entries, 0)
+    return "\n".join(out) + "\n"
+
+
+def run(name, entries):
+    directory = os.path.join(scratch, name)
+    entries = dict(entries)
+    entries["Output"] = {"Output directory": directory}
+    prm = os.path.join(scratch, name + ".prm")
+    open(prm, "w").write(prm_text(entries))
+    r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
+    if r.returncode != 0:
+        print(r.stdout, r.stderr)
+        raise SystemExit("%s: exit status %d" % (name, r.returncode))
+    return json.load(open(os.path.join(directory, "summary.json")))
+
+
+def twist_exponential(nu, kappa, s):
+    """exp of the 4x4 twist [[s [kappa]x, s nu], [0, 0]] (scaling and squaring)."""
+    A = np.zeros((4, 4))
+    k = np.asarray(kappa, float)
+    A[:3, :3] = s * np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    A[:3, 3] = s * np.asarray(nu, float)
+    A /= 2.0 ** 10
+    E, term = np.eye(4), np.eye(4)
+    for n in range(1, 25):
+        term = term @ A / n
+        E = E + term
+    for _ in range(10):
+        E = E @ E
+    return E
+
+
+def write_stiffness(K):
+    path = os.path.join(scratch, "stiffness.json")
+    json.dump({"stiffness": [list(map(float, row)) for row in K]}, open(path, "w"))
+    return path
+
+
+def helix():
+    # A coupled, symmetric positive definite 6x6 (extension-twist and
+    # bending-bending couplings, as a chiral or unsymmetric section has).
+    K = np.diag([40., 50., 100., 1.2, 0.8, 0.6])
+    K[2, 5] = K[5, 2] = 2.5
+    K[3, 4] = K[4, 3] = 0.3
+    K[0, 4] = K[4, 0] = 1.0
+    assert np.all(np.linalg.eigvalsh(K) > 0)
+    xi = [0.05, -0.03, 1.1, 0.9, -0.4, 1.3]
+    strains = "; ".join("%r*t" % x if i != 2 else "1 + %r*t" % (x - 1) for i, x in enumerate(xi))
+    E = twist_exponential(xi[:3], xi[3:], 1.0)
+    for n in (3, 8, 40):
+        s = run("helix-%d" % n, {
+            "Rod": {"Length": 1, "Number of elements": n, "Natural strains": strains,
+                    "Material": {"Law": "quadratic", "Stiffness file": write_stiffness(K)}},
+            "End A": {"Support": "clamped"}, "End B": {"Support": "free"},
+            "Continuation": {"Initial step": 0.25, "Maximum step": 0.25}})
+        last = s["last_state"]
+        check("%d elements: t at the end" % n, last["t"], 1.0, 0)
+        # The exact end, to round-off of the element's strains (~1e-15 of L).
+        err = np.linalg.norm(np.array(last["end_position"]) - E[:3, 3])
+        check("%d elements: end on the exact helix" % n, err, 0, 1e-11)
+        check("%d elements: stress-free (energy / K_max)" % n, last["energy"] / 100, 0, 1e-20)
+
+
+def rollup():
+    B2 = 0.8
+    for n in (4, 7, 30):
+        s = run("rollup-%d" % n, {
+            "Rod": {"Length": 2, "Number of elements": n,
+                    "Material": {"Law": "quadratic", "Stiffnesses": "40, 50, 100, 1.2, %r, 0.6" % B2}},
+            "End A": {"Support": "clamped"},
+            "End B": {"Support": "rotation only", "Rotation": "0; 2*pi*t; 0"},
+            "Continuation": {"Initial step": 0.125, "Maximum step": 0.125}})
+        last = s["last_state"]
+        L = 2.0
+        check("%d elements: t at the end" % n, last["t"], 1.0, 0)
+        # Round-off: the strains' and the end position's ~1e-15 L.
+        # Newton stops at a weighted residual of 1e-10: the end's position
+        # and the loads carry errors of that order (measured up to 2e-12 and
+        # 1.3e-11 on these meshes); the tolerances are 1e-9.
+        check("%d elements: the circle closes (|end|)" % n, np.linalg.norm(last["end_position"]), 0, 1e-9)
+        check("%d elements: end moment 2 pi B2 / L" % n, last["loads_B"][4], 2 * math.pi * B2 / L, 1e-9)
+        check("%d elements: clamp moment -2 pi B2 / L" % n, last["loads_A"][4], -2 * math.pi * B2 / L, 1e-9)
+        check("%d elements: no end force" % n, max(abs(x) for x in last["loads_B"][:3]), 0, 1e-9)
+
+
+def discrete_euler(n, L, B, EA, GA, k):
+    h = L / n
+    T = math.tan(k * h / 2)
+    f = lambda P: P * ((1 - P / EA) * (1 + T * T / 3) + P / GA) - 4 * B * T * T / h ** 2
+    return brentq(f, 1e-9 * B / L ** 2, 10 * B * k * k)
+
+
+def euler(pinned=False):
+    L, GA, EA, B1, B2 = 1.0, 500.0, 1000.0, 2.0, 1.0
+    k = (1 if pinned else 2) * math.pi / L
+    support = "pinned" if pinned else "clamped"
+    continuum = brentq(lambda P: P * ((1 - P / EA) + P / GA) - B2 * k * k, 1e-9, 10 * B2 * k * k)
+    errors = []
+    for n in (8, 20, 40):
+        s = run("euler-%s-%d" % (support, n), {
+            "Rod": {"Length": L, "Number of elements": n,
+                    "Material": {"Law": "quadratic", "Stiffnesses": "%r, %r, %r, %r, %r, 0.8" % (GA, GA, EA, B1, B2)}},
+            "End A": {"Support": support},
+            "End B": {"Support": support, "Displacement": "0; 0; -%r*t" % L},
+            "Path following": {"Method": "arclength"},
+            "Arclength continuation": {"Initial step": 0.01 if not pinned else 0.003,
+                                       "Maximum step": 0.01 if not pinned else 0.003,
+                                       "Parameter range": "0, 0.08", "Stop at first event": "true"}})
+        assert s["events"], "no event located"
+        e = s["events"][0]
+        P = EA * e["t"]
+        P_h = discrete_euler(n, L, B2, EA, GA, k)
+        check("%d elements: event is a branch point" % n, e["kind"] == "branch point", True, 0)
+        check("%d elements: count 0 -> 1" % n, e["n_negative_before"] * 10 + e["n_negative_after"], 1, 0)
+        # Located by Newton to ~1e-12 of t; the tolerance is 100x that.
+        check("%d elements: P at the discrete closed form (relative)" % n, P / P_h - 1, 0, 1e-9)
+        errors.append(abs(P / continuum - 1))
+    rate = math.log(errors[1] / errors[2]) / math.log(2)
+    check("convergence order to the continuum (20 -> 40 elements)", rate, 2.0, 0.05)
+
+
+def growth():
+    # The law (4.1) with natural stretch g is a rod of stiffnesses K/g whose
+    # natural extension is g; held at its length (stretch 1) it carries P =
+    # EA (g - 1)/g, and (7.2) with lambda = 1, GA/g and B/g gives g_c.
+    L, GA, EA, B1, B2 = 1.0, 500.0, 1000.0, 2.0, 1.0
+    k = 2 * math.pi / L
+    for n in (8, 40):
+        h = L / n
+        T = math.tan(k * h / 2)
+        def f(t):
+            g = 1 + t
+            P = EA * (g - 1) / g
+            return P * ((1 + T * T / 3) + P * g / GA) - 4 * (B2 / g) * T * T / h ** 2
+        t_h = brentq(f, 1e-9, 0.5)
+        s = run("growth-%d" % n, {
+            "Rod": {"Length": L, "Number of elements": n, "Growth": "1 + t",
+                    "Material": {"Law": "quadratic", "Stiffnesses": "%r, %r, %r, %r, %r, 0.8" % (GA, GA, EA, B1, B2)}},
+            "End A": {"Support": "clamped"}, "End B": {"Support": "clamped"},
+            "Path following": {"Method": "arclength"},
+            "Arclength continuation": {"Initial step": 0.01, "Maximum step": 0.01,
+                                       "Parameter range": "0, 0.1", "Stop at first event": "true"}})
+        assert s["events"], "no event located"
+        e = s["events"][0]
+        check("%d elements: growth at the first branch point (relative)" % n, e["t"] / t_h - 1, 0, 1e-9)
+
+
+def michell():
+    # An isotropic ring (B1 = B2 = B, C = B/1.3), nearly inextensible and
+    # unshearable, twisted at its seam by 3 t turns: the planar ring loses
+    # stability at Tw = sqrt(3) B/C turns (Michell 1889; Goriely, J Elast 84
+    # (2006) 281). On 48 and 96 elements the thresholds converge at second
+    # order; their Richardson limit is within the extension and shear
+    # corrections, O(B/(EA R^2)) = 1e-4, of Michell's value.
+    B, C, EA = 1.0, 1.0 / 1.3, 1e4
+    michell_turns = math.sqrt(3) * B / C
+    found = []
+    for n in (48, 96):
+        s = run("michell-%d" % n, {
+            "Rod": {"Length": 2 * math.pi, "Number of elements": n, "Shape": "ring", "Ring twist": "3*t",
+                    "Material": {"Law": "quadratic", "Stiffnesses": "%r, %r, %r, %r, %r, %r" % (EA, EA, EA, B, B, C)}},
+            "Path following": {"Method": "arclength"},
+            "Arclength continuation": {"Initial step": 0.02, "Maximum step": 0.05,
+                                       "Parameter range": "0, 1", "Stop at first event": "true"}})
+        assert s["events"], "no event located"
+        found.append(3 * s["events"][0]["t"])
+        print("  %d elements: Tw at the first event %.9f (Michell %.9f)" % (n, found[-1], michell_turns))
+    limit = found[1] + (found[1] - found[0]) / 3
+    check("Richardson limit of the threshold / Michell's", limit / michell_turns - 1, 0, 1e-3)
+    check("96 elements within 1% of Michell's", found[1] / michell_turns - 1, 0, 1e-2)
+
+
+def link():
+    # A ring whose natural curvature out of its plane and natural twist grow
+    # (kappa1 = 1.5 t sin 2s, kappa3 = 0.75 t) leaves its plane without a
+    # bifurcation and writhes; its frame is continuous (no seam twist), so
+    # its link stays 0: twist and writhe, measured independently on the
+    # polygon, must add up to it at every state (to round-off: the discrete
+    # Calugareanu-White identity, theory-rod.md 8).
+    s = run("link", {
+        "Rod": {"Length": 2 * math.pi, "Number of elements": 48, "Shape": "ring",
+                "Natural strains": "0; 0; 1; 1.5*t*sin(2*s); 0; 0.75*t",
+                "Material": {"Law": "quadratic", "Stiffnesses": "1e4, 1e4, 1e4, 1, 1, 0.769"}},
+        "Continuation": {"Initial step": 0.1, "Maximum step": 0.1}})
+    rows = list(csv.DictReader(open(os.path.join(scratch, "link", "steps.csv"))))
+    gap = max(abs(float(r["link [turns]"]) - float(r["twist [turns]"]) - float(r["writhe [turns]"])) for r in rows)
+    check("t reaches 1", float(rows[-1]["t"]), 1, 0)
+    check("Tw + Wr = Lk = 0 at all %d states (max gap)" % len(rows), gap, 0, 1e-9)
+    check("the ring writhes (|Wr| at t = 1 > 0.05)", abs(float(rows[-1]["writhe [turns]"])) > 0.05, True, 0)
+
+
+{"helix": helix, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
+ "growth": growth, "michell": michell, "link": link}[case]()
+print("%d check(s) failed" % failures if failures else "all checks passed")
+sys.exit(1 if failures else 0)
