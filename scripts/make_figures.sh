@@ -23,6 +23,11 @@
 #                                   Cosserat and Kirchhoff against h/R
 #   doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
 #                                   the critical curve against the independent study
+#   doc/figures/rod_{helix,rollup,euler_clamped}.png
+#                                   output/rod/<example>: its last state (the
+#                                   buckled branch's for euler_clamped) drawn
+#                                   by ParaView (scripts/render_paraview.py on
+#                                   an Xvfb display)
 # It then records what made each figure (the example's parameter file, the
 # regression key numbers of that example, the plotting script) in
 # doc/figures/provenance.json; the test doc.figures_current fails when any of
@@ -52,7 +57,9 @@ for f in output/strip_shearing/branches.png output/strip_torque_buckling/branche
          output/plate_rod/dome/bifurcation.png output/plate_rod/lobes/bifurcation.png \
          output/plate_rod/heated_lenticular_disc/bifurcation.png \
          output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
-         output/plate_rod/studies/critical_growth_vs_thickness.png; do
+         output/plate_rod/studies/critical_growth_vs_thickness.png \
+         output/rod/helix/summary.json output/rod/rollup/summary.json \
+         output/rod/euler_clamped/summary.json; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -76,6 +83,15 @@ done
 for s in rim_stiffness thickness; do
   cp "output/plate_rod/studies/critical_growth_vs_$s.png" "doc/figures/plate_rod_critical_growth_vs_$s.png"
 done
+# The rod's shapes, rendered by ParaView on a display of their own.
+display=$((90 + RANDOM % 100))
+Xvfb ":$display" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 & xvfb=$!
+sleep 2
+for n in helix rollup euler_clamped; do
+  DISPLAY=":$display" pvbatch scripts/render_paraview.py "output/rod/$n" "doc/figures/rod_$n.png" >/dev/null 2>&1 \
+    || { kill $xvfb; log "rendering output/rod/$n FAILED" >&2; exit 1; }
+done
+kill $xvfb
 curve=output/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat/critical_curve.png
 if [[ -f "$curve" ]]; then
   cp "$curve" doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png

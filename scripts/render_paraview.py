@@ -13,7 +13,9 @@ The application is read from RUN_DIR/summary.json:
 - strip: strip-branch-K.pvd (K = BRANCH, default the last branch written),
   coloured by the Z component of the director;
 - plate_rod: plate-branch-K.pvd coloured by the deflection (displacement Z),
-  with the rim (rim-branch-K.pvd) as a tube.
+  with the rim (rim-branch-K.pvd) as a tube;
+- rod: rod-branch-K.pvd (its points are the deformed centreline), drawn as a
+  thick shaded line coloured by the curvature kappa2.
 
 Debian: apt-get install paraview python3-paraview xvfb xauth (scripts/setup.sh
 installs them). tests/vtu_readable.py runs it on one example of each
@@ -24,8 +26,8 @@ import json
 import os
 import sys
 
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, PVDReader, SaveScreenshot, Show,
-                             Tube, WarpByVector)
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, PVDReader, SaveScreenshot,
+                             Show, Tube, WarpByVector)
 
 
 class NoRender(Exception):
@@ -104,6 +106,22 @@ def main(argv):
         view.CameraPosition = [1.5, -2.5, 2.0]
         view.CameraViewUp = [0, 0, 1]
         what = "%s at t = %g, deflection" % (os.path.basename(pvd), t)
+    elif app == "rod":
+        pvd = branch_file(run, "rod", branch)
+        reader = PVDReader(FileName=pvd)
+        t = last_time(reader)
+        reader.UpdatePipeline(t)
+        view.ViewTime = t
+        # The centreline as thick shaded lines (ParaView's Render Lines As
+        # Tubes): the Tube filter would draw each element as a piece of its own.
+        d = Show(reader, view)
+        d.SetRepresentationType("Surface")
+        d.LineWidth = 8
+        d.RenderLinesAsTubes = 1
+        ColorBy(d, ("POINTS", "kappa2"))
+        view.CameraPosition = [3, -4, 3]
+        view.CameraViewUp = [0, 0, 1]
+        what = "%s at t = %g, curvature kappa2" % (os.path.basename(pvd), t)
     else:
         sys.stderr.write("render_paraview.py: unknown application '%s'\n" % app)
         return 1

@@ -15,7 +15,7 @@ namespace cosmo
   {
     namespace
     {
-      constexpr unsigned int n_local = 14; ///< (r_a, q_a, r_b, q_b)
+      constexpr unsigned int n_local = 14; ///< (u_a, q_a, u_b, q_b): displacements and quaternions
 
       struct Scratch
       {
@@ -44,14 +44,18 @@ namespace cosmo
                      const materials::RodLaw &           law,
                      const materials::RodNaturalState &  natural,
                      const Tensor<1, 3> &                f,
+                     const Tensor<1, 3> &                reference_chord,
                      const unsigned int                  e)
       {
-        Tensor<1, 3, Number>           r_a, r_b;
+        // x holds the nodes' displacements u (and quaternions): the chord
+        // is the reference's plus u_b - u_a, and the dead loads' work is
+        // that of the displacements (the positions' less a constant).
+        Tensor<1, 3, Number>           u_a, u_b, chord;
         kinematics::Quaternion<Number> q_a, q_b;
         for (unsigned int i = 0; i < 3; ++i)
           {
-            r_a[i] = x[i];
-            r_b[i] = x[7 + i];
+            u_a[i] = x[i];
+            u_b[i] = x[7 + i];
           }
         for (unsigned int i = 0; i < 4; ++i)
           {
@@ -60,17 +64,19 @@ namespace cosmo
           }
         const bool seam = d.ring && e + 1 == d.n_elements;
         const auto q_b_seen = seam ? kinematics::quaternion_product(q_b, as_numbers<Number>(d.seam)) : q_b;
-        Number W = d.h * materials::grown_rod_energy(law, kinematics::helicoidal_strains(r_a, q_a, r_b, q_b_seen, d.h),
-                                                      natural);
         for (unsigned int i = 0; i < 3; ++i)
-          W -= 0.5 * d.h * f[i] * (r_a[i] + r_b[i]);
+          chord[i] = reference_chord[i] + (u_b[i] - u_a[i]);
+        Number W = d.h * materials::grown_rod_energy(
+                           law, kinematics::helicoidal_strains(Tensor<1, 3, Number>(), q_a, chord, q_b_seen, d.h), natural);
+        for (unsigned int i = 0; i < 3; ++i)
+          W -= 0.5 * d.h * f[i] * (u_a[i] + u_b[i]);
         if (e == 0 && d.free_end[0])
           for (unsigned int i = 0; i < 3; ++i)
-            W -= d.end_force[0][i] * r_a[i];
+            W -= d.end_force[0][i] * u_a[i];
         const bool last = !d.ring && e + 1 == d.n_elements;
         if (last && d.free_end[1])
           for (unsigned int i = 0; i < 3; ++i)
-            W -= d.end_force[1][i] * r_b[i];
+            W -= d.end_force[1][i] * u_b[i];
         // (returns a Number, not a Sacado expression of its local m)
         auto penalty = [&](const kinematics::Quaternion<Number> &q) -> Number {
           const Number m = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] - 1.;
@@ -170,6 +176,8 @@ namespace cosmo
       const double         s       = (e + 0.5) * d.h;
       const auto           natural = natural_state(s, d.t);
       const Vector<double> fv      = evaluate(distributed_force, s, d.t);
+      const unsigned int   b       = (e + 1) % n_nodes();
+      const Tensor<1, 3>   chord0  = reference_positions[b] - reference_positions[e];
       Tensor<1, 3>         f;
       for (unsigned int i = 0; i < 3; ++i)
         f[i] = fv[i];
@@ -177,7 +185,7 @@ namespace cosmo
       std::array<double, n_local>           g{};
       std::array<double, n_local * n_local> H{};
       materials::internal::differentiate<n_local>(
-        x, [&](const auto &y) { return element_energy(y, d, *law, natural, f, e); }, jacobian, W, g, H);
+        x, [&](const auto &y) { return element_energy(y, d, *law, natural, f, chord0, e); }, jacobian, W, g, H);
       if (!std::isfinite(W))
         {
           c.admissible = false;

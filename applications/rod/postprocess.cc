@@ -182,8 +182,6 @@ namespace cosmo
             out.begin_patch(2);
             const std::array<Point<3>, 3>     x{{Point<3>(p.position(X, e)), Point<3>(r_mid), Point<3>(p.position(X, b))}};
             const std::array<Tensor<2, 3>, 3> frames{{R_a, R_mid, R_b}};
-            // Lagrange points in order: the two ends, then the midpoint.
-            const std::array<unsigned int, 3> point{{0, 2, 1}};
             for (unsigned int k = 0; k < 3; ++k)
               {
                 std::vector<double> v;
@@ -201,10 +199,11 @@ namespace cosmo
                   }
                 if (mode)
                   for (unsigned int i = 0; i < 3; ++i)
-                    v.push_back(k == 1 ? 0.5 * (p.position(*mode, e)[i] + p.position(*mode, b)[i]) :
-                                         p.position(*mode, k == 0 ? e : b)[i]);
-                out.set_position(point[k], x[k]);
-                out.set_values(point[k], v);
+                    v.push_back(k == 1 ? 0.5 * (p.displacement(*mode, e)[i] + p.displacement(*mode, b)[i]) :
+                                         p.displacement(*mode, k == 0 ? e : b)[i]);
+                // (points in lexicographic order: node a, the midpoint, node b)
+                out.set_position(k, x[k]);
+                out.set_values(k, v);
               }
             out.end_patch();
           }
@@ -233,7 +232,7 @@ namespace cosmo
           // The mode added to the state, its largest displacement a tenth of the length.
           double m = 0;
           for (unsigned int k = 0; k < n_nodes(); ++k)
-            m = std::max(m, position(*mode, k).norm());
+            m = std::max(m, displacement(*mode, k).norm());
           Vector<double> V = X;
           if (m > 0)
             V.add(0.1 * length / m, *mode);

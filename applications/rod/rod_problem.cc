@@ -90,6 +90,7 @@ namespace cosmo
       // Node k's frame and position: straight, a ring, or the natural
       // strains integrated element by element (H_k+1 = H_k exp(h xi)).
       reference.reinit(dof_handler.n_dofs());
+      reference_positions.assign(n_nodes(), Tensor<1, 3>());
       const double       h = element_length();
       Tensor<2, 3>       R = unit_symmetric_tensor<3>();
       Tensor<1, 3>       r;
@@ -128,8 +129,7 @@ namespace cosmo
             for (auto &x : q)
               x = -x;
           previous = q;
-          for (unsigned int c = 0; c < 3; ++c)
-            reference[node_dofs[k][c]] = r[c];
+          reference_positions[k] = r;
           for (unsigned int c = 0; c < 4; ++c)
             reference[node_dofs[k][3 + c]] = q[c];
         }
@@ -172,7 +172,7 @@ namespace cosmo
                            const bool rotation, const bool position = true) {
         if (position)
           for (unsigned int c = 0; c < 3; ++c)
-            v.emplace_back(node_dofs[node][c], reference[node_dofs[node][c]] + u[c]);
+            v.emplace_back(node_dofs[node][c], u[c]);
         if (!rotation)
           return;
         const auto q = kinematics::quaternion_product(kinematics::quaternion_of_rotation_vector(phi),
@@ -185,7 +185,7 @@ namespace cosmo
           // Node 0 clamped where it is: the ring's rigid motions.
           prescribe(0, Tensor<1, 3>(), Tensor<1, 3>(), true);
           if (roll_gauge)
-            v.emplace_back(node_dofs[n_nodes() / 2][2], reference[node_dofs[n_nodes() / 2][2]]);
+            v.emplace_back(node_dofs[n_nodes() / 2][2], 0.);
           return v;
         }
       for (unsigned int k = 0; k < 2; ++k)
@@ -215,12 +215,25 @@ namespace cosmo
     }
 
     Tensor<1, 3>
+    RodProblem::displacement(const Vector<double> &X, const unsigned int node) const
+    {
+      Tensor<1, 3> u;
+      for (unsigned int c = 0; c < 3; ++c)
+        u[c] = X[node_dofs[node][c]];
+      return u;
+    }
+
+    Tensor<1, 3>
     RodProblem::position(const Vector<double> &X, const unsigned int node) const
     {
-      Tensor<1, 3> r;
-      for (unsigned int c = 0; c < 3; ++c)
-        r[c] = X[node_dofs[node][c]];
-      return r;
+      return reference_positions[node] + displacement(X, node);
+    }
+
+    Tensor<1, 3>
+    RodProblem::chord(const Vector<double> &X, const unsigned int e) const
+    {
+      const unsigned int b = (e + 1) % n_nodes();
+      return (reference_positions[b] - reference_positions[e]) + (displacement(X, b) - displacement(X, e));
     }
 
     kinematics::Quaternion<double>
@@ -315,8 +328,7 @@ namespace cosmo
           const double turns = evaluate(seam_twist, 0, t)[0];
           q_b = kinematics::quaternion_product(q_b, kinematics::twist_quaternion(turns));
         }
-      return kinematics::helicoidal_strains(position(X, e), quaternion(X, e), position(X, b), q_b,
-                                            element_length());
+      return kinematics::helicoidal_strains(Tensor<1, 3>(), quaternion(X, e), chord(X, e), q_b, element_length());
     }
   } // namespace rod
 } // namespace cosmo

@@ -142,9 +142,19 @@ namespace cosmo
       /// U with the prescribed values at t: what the element energies see.
       Vector<double>
       configuration(const Vector<double> &U, double t) const;
-      /// Node k's position and quaternion in a configuration.
+      /// Node k's position (its reference position plus its displacement,
+      /// which is what a state's vector holds) and quaternion in a configuration.
       Tensor<1, 3>
       position(const Vector<double> &X, unsigned int node) const;
+      /// Node k's displacement in a state or a mode.
+      Tensor<1, 3>
+      displacement(const Vector<double> &X, unsigned int node) const;
+      /// Element e's chord r_b - r_a in a configuration: the reference's
+      /// chord plus the difference of the displacements, so that its
+      /// round-off is that of the displacements, not of the positions
+      /// (eps L/h of the strain with positions on a fine mesh).
+      Tensor<1, 3>
+      chord(const Vector<double> &X, unsigned int element) const;
       kinematics::Quaternion<double>
       quaternion(const Vector<double> &X, unsigned int node) const;
       /// Element e's strains in a configuration X at t (the seam's rotation included).
@@ -187,8 +197,10 @@ namespace cosmo
       std::vector<std::array<types::global_dof_index, 7>> node_dofs;
       /// local_slot[i]: where the cell's DoF i goes in (r_a, q_a, r_b, q_b).
       std::array<unsigned int, 14> local_slot{};
-      /// The reference configuration (positions and unit quaternions).
+      /// The reference configuration (zero displacements and unit quaternions)
+      /// and the nodes' reference positions.
       Vector<double>            reference;
+      std::vector<Tensor<1, 3>> reference_positions;
       assembly::BorderedSystem  system;
       solvers::FactorizationMark factorization;
       solvers::ResidualCache    residuals;
