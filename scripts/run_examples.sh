@@ -28,7 +28,7 @@ mkdir -p output/logs
 failed=0
 strips=(parameter_files/strip/*.prm parameter_files/strip/studies/*.prm)
 plates=(parameter_files/plate_rod/*.prm parameter_files/plate_rod/studies/*.prm)
-rods=(parameter_files/rod/*.prm)
+rods=(parameter_files/rod/*.prm parameter_files/rod/studies/*.prm)
 for prm in "${prms[@]}" "${studies[@]}" "${strips[@]}" "${plates[@]}" "${rods[@]}"; do
   name="$(basename "$prm" .prm)"
   exe="$EXE"

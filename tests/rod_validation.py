@@ -240,7 +240,32 @@ def link():
     check("the ring writhes (|Wr| at t = 1 > 0.05)", abs(float(rows[-1]["writhe [turns]"])) > 0.05, True, 0)
 
 
+def study():
+    # The critical curve of parameter_files/rod/studies/euler_vs_length.prm
+    # (the clamped rod's threshold against its length, each point continued
+    # from the previous ones): every point at the discrete closed form, the
+    # supports' axial force there -P_h, the mode in the (e1, e3) plane.
+    prm = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "parameter_files", "rod", "studies",
+                       "euler_vs_length.prm")
+    out = os.path.join(scratch, "study")
+    text = open(prm).read().replace("output/rod/studies/euler_vs_length", out)
+    open(os.path.join(scratch, "study.prm"), "w").write(text)
+    r = subprocess.run([exe, "--quiet", os.path.join(scratch, "study.prm")], capture_output=True, text=True)
+    if r.returncode != 0:
+        print(r.stdout, r.stderr)
+        raise SystemExit("study: exit status %d" % r.returncode)
+    rows = list(csv.DictReader(open(os.path.join(out, "sweep.csv"))))
+    col = lambda r, name: float(next(v for k, v in r.items() if k.split(" [")[0] == name))
+    check("six points", len(rows), 6, 0)
+    for r in rows:
+        L = col(r, "value")
+        P = discrete_euler(40, L, 1.0, 1000.0, 500.0, 2 * math.pi / L)
+        check("L = %g: t_critical = L P_h / EA (relative)" % L, col(r, "t_critical") / (L * P / 1000.0) - 1, 0, 1e-9)
+        check("L = %g: force at B = -P_h (relative)" % L, col(r, "force_B_z") / -P - 1, 0, 1e-8)
+        check("L = %g: mode along e1" % L, col(r, "mode_direction"), 1, 0)
+
+
 {"helix": helix, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
- "growth": growth, "michell": michell, "link": link}[case]()
+ "growth": growth, "michell": michell, "link": link, "study": study}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)

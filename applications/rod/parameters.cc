@@ -1,6 +1,7 @@
 // The parameters of the rod application: what it reads and checks.
 #include <deal.II/base/exceptions.h>
 
+#include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
 
 #include "parameters.h"
@@ -154,6 +155,7 @@ namespace cosmo
       solvers::NewtonSettings::declare_parameters(prm);
       solvers::ContinuationSettings::declare_parameters(prm);
       solvers::ArclengthSettings::declare_parameters(prm);
+      io::ParameterSweep::declare_parameters(prm);
       prm.enter_subsection("Output");
       prm.declare_entry("Output directory", "output/rod", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, rod-NNNN.vtu "

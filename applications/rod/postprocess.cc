@@ -145,6 +145,8 @@ namespace cosmo
       if (mode)
         r.mode.assign(mode->begin(), mode->end());
       located_events.push_back(r);
+      // (an assembly of the residual at the event: the factorization in place stays)
+      event_states.push_back(describe(U, e.lambda));
     }
 
     namespace

@@ -183,6 +183,8 @@ namespace cosmo
       double                               load_parameter = 0;
       std::vector<RodState>                states;
       std::vector<solvers::EventRecord>    located_events;
+      /// What each located event shows (its supports' loads, end, topology).
+      std::vector<RodState>                event_states;
       io::RunRecord                        record{"rod"};
       mutable io::PhaseTimer               timer;
 

@@ -1,12 +1,15 @@
 // The rod's run: the start, the path with its events and checkpoints, the summary.
 #include <deal.II/base/utilities.h>
 
+#include <cosmo/io/parameter_sweep.h>
+#include <cosmo/solvers/critical_point_study.h>
 #include <cosmo/solvers/newton.h>
 #include <cosmo/solvers/path_checkpoints.h>
 #include <cosmo/solvers/run_start.h>
 
 #include "run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -121,11 +124,51 @@ namespace cosmo
       record.say(m.str());
       check_start();
       record.attempt([&]() {
+        if (critical_guess)
+          return locate_from_guess();
         if (!record.has_checkpoint())
           solve_start();
         follow_path();
       });
       finish_run();
+    }
+
+    void
+    RodRun::locate_from_guess()
+    {
+      solvers::ArclengthContinuation driver(problem.arclength_settings, problem.newton_settings);
+      driver.progress   = [this](const std::string &s) { problem.record.say(s); };
+      const auto record = solvers::locate_continued_critical_point(driver, problem, *critical_guess,
+                                                                  problem.newton_settings);
+      problem.solution  = Vector<double>(record.state.begin(), record.state.end());
+      solvers::StepReport report;
+      report.t          = record.event.lambda;
+      report.n_negative = record.event.n_negative_after;
+      report.final      = true; // the path's only state: written whatever 'Steps between outputs'
+      problem.set_load_parameter(report.t);
+      solvers::report_converged_step(problem, problem.solution, report);
+    }
+
+    std::vector<double>
+    RodRun::classify_critical_mode(const Vector<double> &mode) const
+    {
+      std::array<double, 3> weight{};
+      for (unsigned int k = 0; k < problem.n_nodes(); ++k)
+        {
+          const Tensor<1, 3> u = problem.displacement(mode, k);
+          for (unsigned int i = 0; i < 3; ++i)
+            weight[i] += u[i] * u[i];
+        }
+      return {double(1 + std::max_element(weight.begin(), weight.end()) - weight.begin())};
+    }
+
+    std::vector<double>
+    RodRun::critical_point_columns(const solvers::EventRecord &e) const
+    {
+      for (unsigned int k = 0; k < problem.located_events.size(); ++k)
+        if (problem.located_events[k].event.lambda == e.event.lambda)
+          return {problem.event_states[k].end_loads[1][2]};
+      return {NAN};
     }
 
     void
@@ -180,6 +223,10 @@ namespace cosmo
       problem.located_events.resize(r.get_size());
       for (auto &e : problem.located_events)
         e.load(r);
+      problem.event_states.clear();
+      for (const auto &e : problem.located_events)
+        problem.event_states.push_back(
+          problem.describe(Vector<double>(e.state.begin(), e.state.end()), e.event.lambda));
       problem.steps_row = r.get_vector();
       problem.load_postprocessors(r);
       if (problem.solution.size() != problem.n_unknowns())
@@ -209,8 +256,7 @@ namespace cosmo
           x["eigenvalue"] = e.eigenvalue;
         }
       // The loads of the supports, the end and the ring's topology at the event.
-      const Vector<double> U(record.state.begin(), record.state.end());
-      const RodState       s = problem.describe(U, e.lambda);
+      const RodState &s = problem.event_states[k];
       x["loads_A"]           = vector_json(s.end_loads[0].data(), 6);
       x["loads_B"]           = vector_json(s.end_loads[1].data(), 6);
       x["end_position"]      = vector_json(&s.end_position[0], 3);
@@ -276,6 +322,24 @@ namespace cosmo
     void
     run_rod(ParameterHandler &prm, const io::RunOptions &options)
     {
+      io::ParameterSweep sweep;
+      sweep.parse_parameters(prm);
+      if (sweep.enabled())
+        {
+          // A study of the rod is one of its first critical point.
+          solvers::CriticalPointStudy study;
+          study.application     = "rod";
+          study.mode_columns    = {"mode_direction"};
+          study.further_columns = {"force_B_z"};
+          study.describe_mode   = [](const std::vector<double> &c) {
+            return "along e" + std::to_string(static_cast<int>(c[0]));
+          };
+          study.make_run = [](ParameterHandler &p) {
+            return std::make_unique<solvers::CriticalPointRunOf<RodRun>>(p);
+          };
+          study.declare_parameters = &RodParameters::declare_parameters;
+          return solvers::run_critical_point_study(prm, options, sweep, study);
+        }
       RodRun run;
       run.parse_parameters(prm);
       run.run(options, prm);
