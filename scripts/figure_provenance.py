@@ -70,6 +70,9 @@ def _figures():
         f"{REF}/plate_rod_critical_curve_vs_rim_stiffness_cosserat.output",
         f"{PR}/studies/critical_growth_vs_rim_stiffness_cosserat.prm",
         f"{REF}/plate_rod_critical_growth_vs_rim_stiffness_cosserat.output"] + PLATE_STUDY_PLOT
+    f["rod_euler_clamped_bifurcation.png"] = ["parameter_files/rod/euler_clamped.prm",
+                                              f"{REF}/rod_euler_clamped.output", "scripts/plot_rod.py",
+                                              "scripts/plot_plate_rod.py", "scripts/plot_steps.py"]
     for n in ["helix", "rollup", "euler_clamped"]:
         f[f"rod_{n}.png"] = [f"parameter_files/rod/{n}.prm", f"{REF}/rod_{n}.output",
                              "scripts/render_paraview.py"]

@@ -23,6 +23,8 @@
 #                                   Cosserat and Kirchhoff against h/R
 #   doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png
 #                                   the critical curve against the independent study
+#   doc/figures/rod_euler_clamped_bifurcation.png
+#                                   output/rod/euler_clamped/bifurcation.png
 #   doc/figures/rod_{helix,rollup,euler_clamped}.png
 #                                   output/rod/<example>: its last state (the
 #                                   buckled branch's for euler_clamped) drawn
@@ -59,7 +61,7 @@ for f in output/strip_shearing/branches.png output/strip_torque_buckling/branche
          output/plate_rod/studies/critical_growth_vs_rim_stiffness.png \
          output/plate_rod/studies/critical_growth_vs_thickness.png \
          output/rod/helix/summary.json output/rod/rollup/summary.json \
-         output/rod/euler_clamped/summary.json; do
+         output/rod/euler_clamped/summary.json output/rod/euler_clamped/bifurcation.png; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -83,6 +85,7 @@ done
 for s in rim_stiffness thickness; do
   cp "output/plate_rod/studies/critical_growth_vs_$s.png" "doc/figures/plate_rod_critical_growth_vs_$s.png"
 done
+cp output/rod/euler_clamped/bifurcation.png doc/figures/rod_euler_clamped_bifurcation.png
 # The rod's shapes, rendered by ParaView on a display of their own.
 display=$((90 + RANDOM % 100))
 Xvfb ":$display" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 & xvfb=$!

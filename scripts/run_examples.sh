@@ -73,6 +73,15 @@ if ((${#strips[@]})); then
   fi
 fi
 
+if ((${#rods[@]})); then
+  log "plotting rods (bifurcation diagrams)"
+  for d in output/rod/*/; do
+    if [[ -f "$d/steps.csv" ]] && head -1 "$d/steps.csv" | grep -q branch; then
+      python3 scripts/plot_rod.py "$d" || { log "plotting $d FAILED" >&2; failed=1; }
+    fi
+  done
+fi
+
 if ((${#plates[@]})); then
   log "plotting plate_rod (bifurcation diagrams, critical growth study)"
   for d in output/plate_rod/*/; do
