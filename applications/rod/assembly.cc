@@ -37,53 +37,39 @@ namespace cosmo
        * eigenvalue per node along q, where it had a zero one, so the inertia
        * is the rod's (doc/theory-rod.md 3).
        */
+      constexpr unsigned int n_ad = 11; ///< (chord, q_a, q_b): what the energy's curvature depends on
+
       template <typename Number>
       Number
-      element_energy(const std::array<Number, n_local> &x,
+      element_energy(const std::array<Number, n_ad> &    y,
                      const RodElementData &              d,
                      const materials::RodLaw &           law,
                      const materials::RodNaturalState &  natural,
-                     const Tensor<1, 3> &                f,
-                     const Tensor<1, 3> &                reference_chord,
                      const unsigned int                  e)
       {
-        // x holds the nodes' displacements u (and quaternions): the chord
-        // is the reference's plus u_b - u_a, and the dead loads' work is
-        // that of the displacements (the positions' less a constant).
-        Tensor<1, 3, Number>           u_a, u_b, chord;
+        // y holds the chord r_b - r_a and the quaternions: the positions
+        // enter the strains through the chord alone, and the dead loads,
+        // linear in them, are added outside the differentiation.
+        Tensor<1, 3, Number>           chord;
         kinematics::Quaternion<Number> q_a, q_b;
         for (unsigned int i = 0; i < 3; ++i)
-          {
-            u_a[i] = x[i];
-            u_b[i] = x[7 + i];
-          }
+          chord[i] = y[i];
         for (unsigned int i = 0; i < 4; ++i)
           {
-            q_a[i] = x[3 + i];
-            q_b[i] = x[10 + i];
+            q_a[i] = y[3 + i];
+            q_b[i] = y[7 + i];
           }
         const bool seam = d.ring && e + 1 == d.n_elements;
         const auto q_b_seen = seam ? kinematics::quaternion_product(q_b, as_numbers<Number>(d.seam)) : q_b;
-        for (unsigned int i = 0; i < 3; ++i)
-          chord[i] = reference_chord[i] + (u_b[i] - u_a[i]);
         Number W = d.h * materials::grown_rod_energy(
                            law, kinematics::helicoidal_strains(Tensor<1, 3, Number>(), q_a, chord, q_b_seen, d.h), natural);
-        for (unsigned int i = 0; i < 3; ++i)
-          W -= 0.5 * d.h * f[i] * (u_a[i] + u_b[i]);
-        if (e == 0 && d.free_end[0])
-          for (unsigned int i = 0; i < 3; ++i)
-            W -= d.end_force[0][i] * u_a[i];
-        const bool last = !d.ring && e + 1 == d.n_elements;
-        if (last && d.free_end[1])
-          for (unsigned int i = 0; i < 3; ++i)
-            W -= d.end_force[1][i] * u_b[i];
         // (returns a Number, not a Sacado expression of its local m)
         auto penalty = [&](const kinematics::Quaternion<Number> &q) -> Number {
           const Number m = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] - 1.;
           return 0.5 * d.penalty * m * m;
         };
         W += penalty(q_a);
-        if (last)
+        if (!d.ring && e + 1 == d.n_elements)
           W += penalty(q_b);
         if (e == 0 && d.spin_gauge)
           {
@@ -98,6 +84,67 @@ namespace cosmo
             W += 0.5 * d.penalty * spin * spin;
           }
         return W;
+      }
+
+      /**
+       * The dead loads' energy of element e and its gradient in the local
+       * (u_a, q_a, u_b, q_b), which they change by a constant: minus the work
+       * of the distributed force (its midpoint value, shared by the nodes)
+       * and of the forces on free ends, in the displacements.
+       */
+      double
+      load_energy(const std::array<double, 14> &x, const RodElementData &d, const Tensor<1, 3> &f,
+                  const unsigned int e, std::array<double, 14> &g)
+      {
+        g.fill(0.);
+        double W = 0;
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            g[i] -= 0.5 * d.h * f[i];
+            g[7 + i] -= 0.5 * d.h * f[i];
+            if (e == 0 && d.free_end[0])
+              g[i] -= d.end_force[0][i];
+            if (!d.ring && e + 1 == d.n_elements && d.free_end[1])
+              g[7 + i] -= d.end_force[1][i];
+            W += g[i] * x[i] + g[7 + i] * x[7 + i];
+          }
+        return W;
+      }
+
+      /// The differentiated variables of an element from its local
+      /// (u_a, q_a, u_b, q_b): the chord (the reference's plus u_b - u_a) and
+      /// the quaternions.
+      std::array<double, n_ad>
+      chord_variables(const std::array<double, n_local> &x, const Tensor<1, 3> &reference_chord)
+      {
+        std::array<double, n_ad> y;
+        for (unsigned int i = 0; i < 3; ++i)
+          y[i] = reference_chord[i] + (x[7 + i] - x[i]);
+        for (unsigned int k = 0; k < 4; ++k)
+          {
+            y[3 + k] = x[3 + k];
+            y[7 + k] = x[10 + k];
+          }
+        return y;
+      }
+
+      /// The gradient and Hessian in the 11 variables added to those in the
+      /// local unknowns: u_a enters the chord with -1, u_b with +1.
+      void
+      spread_to_nodes(const std::array<double, n_ad> &       gy,
+                      const std::array<double, n_ad * n_ad> &Hy,
+                      const bool                             jacobian,
+                      std::array<double, n_local> &          g,
+                      std::array<double, n_local * n_local> &H)
+      {
+        static constexpr std::array<unsigned int, n_local> index{{0, 1, 2, 3, 4, 5, 6, 0, 1, 2, 7, 8, 9, 10}};
+        static constexpr std::array<double, n_local>       sign{{-1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}};
+        for (unsigned int a = 0; a < n_local; ++a)
+          g[a] += sign[a] * gy[index[a]];
+        if (jacobian)
+          for (unsigned int a = 0; a < n_local; ++a)
+            for (unsigned int b = 0; b < n_local; ++b)
+              H[n_local * a + b] = sign[a] * sign[b] * Hy[n_ad * index[a] + index[b]];
       }
 
       /// The force and moment conjugate to a node's (r, q) gradient: the
@@ -176,21 +223,25 @@ namespace cosmo
       const double         s       = (e + 0.5) * d.h;
       const auto           natural = natural_state(s, d.t);
       const Vector<double> fv      = evaluate(distributed_force, s, d.t);
-      const unsigned int   b       = (e + 1) % n_nodes();
-      const Tensor<1, 3>   chord0  = reference_positions[b] - reference_positions[e];
+      const Tensor<1, 3>   chord0  = reference_positions[(e + 1) % n_nodes()] - reference_positions[e];
       Tensor<1, 3>         f;
       for (unsigned int i = 0; i < 3; ++i)
         f[i] = fv[i];
-      double                                W = 0;
-      std::array<double, n_local>           g{};
-      std::array<double, n_local * n_local> H{};
-      materials::internal::differentiate<n_local>(
-        x, [&](const auto &y) { return element_energy(y, d, *law, natural, f, chord0, e); }, jacobian, W, g, H);
+      const std::array<double, n_ad>  y = chord_variables(x, chord0);
+      double                          W = 0;
+      std::array<double, n_ad>        gy{};
+      std::array<double, n_ad * n_ad> Hy{};
+      materials::internal::differentiate<n_ad>(
+        y, [&](const auto &z) { return element_energy(z, d, *law, natural, e); }, jacobian, W, gy, Hy);
       if (!std::isfinite(W))
         {
           c.admissible = false;
           return;
         }
+      std::array<double, n_local>           g;
+      std::array<double, n_local * n_local> H{};
+      W += load_energy(x, d, f, e, g);
+      spread_to_nodes(gy, Hy, jacobian, g, H);
       // Scalars: the energy, then the loads of the supports at A and B.
       c.scalars[0] = W;
       for (unsigned int i = 0; i < n_local; ++i)
