@@ -289,9 +289,6 @@ namespace cosmo
       if (!totals.admissible)
         return 1;
       assembled_energy = totals.scalars[0];
-      for (unsigned int k = 0; k < 2; ++k)
-        std::copy(totals.scalars.begin() + 1 + 6 * k, totals.scalars.begin() + 7 + 6 * k,
-                  assembled_end_loads[k].begin());
       residuals.store(U, t, *R, totals.scalars);
       return std::isfinite(assembled_energy) ? 0 : 1;
     }

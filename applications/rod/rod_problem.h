@@ -207,7 +207,6 @@ namespace cosmo
       solvers::FactorizationMark factorization;
       solvers::ResidualCache    residuals;
       double                    assembled_energy = 0;
-      std::array<double, 6>     assembled_end_loads[2]{};
 
       void
       make_mesh();
