@@ -288,9 +288,11 @@ namespace cosmo
                                                                     target);
       if (!totals.admissible)
         return 1;
-      assembled_energy = totals.scalars[0];
+      if (!std::isfinite(totals.scalars[0]))
+        return 1;
+      // (kept for the drivers' next request and the state's description)
       residuals.store(U, t, *R, totals.scalars);
-      return std::isfinite(assembled_energy) ? 0 : 1;
+      return 0;
     }
   } // namespace rod
 } // namespace cosmo

@@ -309,14 +309,6 @@ namespace cosmo
       constraints.set_zero(mask);
     }
 
-    double
-    RodProblem::energy(const Vector<double> &U)
-    {
-      Vector<double> R;
-      AssertThrow(assemble(U, load_parameter, &R, false) == 0,
-                  ExcMessage("the energy cannot be evaluated at this state"));
-      return assembled_energy;
-    }
 
     std::array<double, 6>
     RodProblem::element_strains(const Vector<double> &X, const unsigned int e, const double t) const

@@ -136,9 +136,6 @@ namespace cosmo
       void
       located_event(const Event &e, const Vector<double> &U, const Vector<double> *mode) override;
 
-      /// The energy at U (and t): elastic minus the dead loads' work.
-      double
-      energy(const Vector<double> &U);
       /// U with the prescribed values at t: what the element energies see.
       Vector<double>
       configuration(const Vector<double> &U, double t) const;
@@ -206,7 +203,6 @@ namespace cosmo
       assembly::BorderedSystem  system;
       solvers::FactorizationMark factorization;
       solvers::ResidualCache    residuals;
-      double                    assembled_energy = 0;
 
       void
       make_mesh();
