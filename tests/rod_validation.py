@@ -18,6 +18,15 @@ Cases:
           1 - P_h / EA (theory-rod.md 7.3), on 8, 20 and 40 elements; the
           threshold converging to the continuum's P [lambda + P / GA] =
           4 pi^2 B / L^2 at second order in h.
+  section a rod on the law of part-1 sections computed by the run itself (a
+          rod_cross_section sweep of a disc with growth 1 + p X1, whose
+          natural curvature is kappa2 = -p exactly): the family interpolated
+          in p = 0.25 t s along a cantilever of length 2; at t = 1 the
+          clothoid theta(s) = -s^2/8, whose end (Fresnel integrals) the
+          meshes of 10, 20 and 40 elements approach at second order; the
+          sections reused by a second run; a p past the family stops the
+          path (exit 2, the range named); one section (p = 0.3) closes a
+          cantilever of length 2 pi / 0.3 into a circle.
 """
 import csv, json, math, os, subprocess, sys
 
@@ -309,7 +318,78 @@ def loads():
     check("small end force: Timoshenko's deflection (relative)", w / timoshenko - 1, 0, 1e-3)
 
 
-{"helix": helix, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
+SECTION_SWEEP = """# A disc growing axially by 1 + p X1 (doc/theory-rod-cross-section.md 6.2:
+# kappa2 = -p exactly, on any mesh), swept over p.
+subsection Cross-section
+  set Shape              = circle
+  set Radius             = 1
+  set Global refinements = 1
+end
+subsection Material 1
+  set Young's modulus = 1
+  set Poisson's ratio = 0.3
+  set Growth kind     = axial
+  set Growth factor   = 1 + 0.3*x
+end
+subsection Rod strains
+  set Mode = natural shape
+end
+subsection Parameter sweep
+  set Entry    = Material 1/Growth factor
+  set Template = 1 + {}*x
+  set Range    = 0, 0.5, 6
+end
+"""
+
+
+def section():
+    from scipy.integrate import quad
+    sweep = os.path.join(scratch, "disc-sweep.prm")
+    open(sweep, "w").write(SECTION_SWEEP)
+    law = {"Law": "section", "Section file": sweep, "Section parameter": "0.25*t*s"}
+    base = {"End A": {"Support": "clamped"}, "End B": {"Support": "free"},
+            "Continuation": {"Initial step": 0.25, "Maximum step": 0.25}, **NEWTON}
+    # theta(s) = int_0^s kappa2 = -s^2/8; the tangent e3 turned about e2 by theta.
+    exact = np.array([quad(lambda s: math.sin(-s * s / 8), 0, 2, epsabs=1e-14)[0], 0,
+                      quad(lambda s: math.cos(-s * s / 8), 0, 2, epsabs=1e-14)[0]])
+    errors = []
+    for n in (10, 20, 40):
+        s = run("family-%d" % n, dict(base, Rod={"Length": 2, "Number of elements": n, "Material": law}))
+        errors.append(np.linalg.norm(np.array(s["last_state"]["end_position"]) - exact))
+        print("  %d elements: end error %.3e" % (n, errors[-1]))
+    # Second order: each element's natural curvature is the midpoint's.
+    for k in (1, 2):
+        check("order of the end's error, %d -> %d elements" % (10 * 2 ** (k - 1), 10 * 2 ** k),
+              math.log2(errors[k - 1] / errors[k]), 2, 0.1)
+    # The same parameters again: the sections are reused, not computed.
+    run("family-10", dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law}))
+    log = open(os.path.join(scratch, "family-10", "log.txt")).read()
+    check("a second run reuses the sections", "reused from an earlier run" in log, True, 0)
+    # p past the family's range [0, 0.5] at t = 0.64: the path stops there.
+    over = dict(law, **{"Section parameter": "0.4*t*s"})
+    directory = os.path.join(scratch, "family-over")
+    prm = os.path.join(scratch, "family-over.prm")
+    open(prm, "w").write(prm_text(dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": over},
+                                       Output={"Output directory": directory})))
+    r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
+    summary = json.load(open(os.path.join(directory, "summary.json")))
+    check("p past the family: exit status 2", r.returncode, 2, 0)
+    check("p past the family: status failed, the range named",
+          summary["status"] == "failed" and "outside the family's range [0, 0.5]" in summary["message"], True, 0)
+    # The last state is inside: p = 0.4 t s at the last element's midpoint s = 1.9 is at most 0.5.
+    check("p past the family: the path ends inside the range", 0.4 * summary["last_state"]["t"] * 1.9 <= 0.5, True, 0)
+    # One section: p = 0.3, kappa2 = -0.3; a cantilever of length 2 pi / 0.3 is a closed circle.
+    one = os.path.join(scratch, "family-10", "section", "point-03", "summary.json")
+    L = 2 * math.pi / 0.3
+    # (Shape natural: the section's natural curvature is not a function of t to ramp.)
+    s = run("one-section", dict(base, Rod={"Length": L, "Number of elements": 16, "Shape": "natural",
+                                           "Material": {"Law": "section", "Section file": one}}))
+    K = json.load(open(one))["stiffness"]
+    check("one section: the cantilever closes into a circle (|r_B|)", np.linalg.norm(s["last_state"]["end_position"]), 0,
+          statics_bound(16, K[2][2], K[4][4], L) * L / K[4][4])
+
+
+{"helix": helix, "section": section, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
  "growth": growth, "michell": michell, "link": link, "study": study, "loads": loads}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)

@@ -254,6 +254,13 @@ namespace cosmo
 
       prm.enter_subsection("Rim rod");
       rim_law    = materials::create_rod_law(prm, "Rim rod");
+      // The rim's natural state is the plate's edge: a law with natural
+      // strains of its own, or varying along the rod, would be ignored.
+      if (rim_law->gives_natural_strains())
+        throw io::InputError("Rim rod", "Law", prm.get("Law"),
+                             "a law without natural strains of its own (the rim's natural state is "
+                             "the plate's edge): quadratic, with a part-1 'Stiffness file' for a "
+                             "section's stiffness");
       rim_growth = materials::create_rod_growth(prm, "Rim rod");
       stiffness_coupling = diagonal_and_coupling(rim_law->natural_stiffness(), rod_stiffness);
       // The stiffnesses in use are named by the quadratic law's entry they

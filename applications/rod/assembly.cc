@@ -220,8 +220,20 @@ namespace cosmo
           c.admissible = false;
           return;
         }
-      const double         s       = (e + 0.5) * d.h;
-      const auto           natural = natural_state(s, d.t);
+      const double               s = (e + 0.5) * d.h;
+      materials::RodNaturalState natural;
+      try
+        {
+          natural = natural_state(s, d.t);
+        }
+      catch (materials::LawRangeError &error)
+        {
+          // Outside the law's range: refused (the step is cut), and the
+          // reason kept for the message if the path cannot go on.
+          c.admissible = false;
+          refusals.note(error.what());
+          return;
+        }
       const Vector<double> fv      = evaluate(distributed_force, s, d.t);
       const Tensor<1, 3>   chord0  = reference_positions[(e + 1) % n_nodes()] - reference_positions[e];
       Tensor<1, 3>         f;

@@ -1,8 +1,12 @@
 // The parameters of the rod application: what it reads and checks.
 #include <deal.II/base/exceptions.h>
 
+#include <cosmo/io/nested_run.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
+#include <cosmo/materials/rod_laws/section.h>
+
+#include "cross_section_problem.h"
 
 #include "parameters.h"
 
@@ -87,6 +91,26 @@ namespace cosmo
                                    "prescribed: a force there does no work)");
         prm.leave_subsection();
         return end;
+      }
+
+      /**
+       * A 'section' law whose 'Section file' is a rod_cross_section
+       * parameter file: part 1 runs here, in this process, into the run's
+       * directory 'section' (reused while that file's parameters are the
+       * same), and the law reads its result.
+       */
+      void
+      compute_sections(materials::RodLaw &law, const std::string &output_directory)
+      {
+        auto *section = dynamic_cast<materials::SectionRodLaw *>(&law);
+        if (!section || !section->computed_by_the_run())
+          return;
+        const auto run = io::run_nested(&CrossSectionProblem::declare_parameters, &rod::run_study,
+                                        section->section_file(), output_directory + "/section",
+                                        "Rod/Material", "Section file");
+        section->read_result(run.directory);
+        section->computed_note = run.reused ? "reused from an earlier run of the same parameters" :
+                                              "computed by this run";
       }
     } // namespace
 
@@ -182,8 +206,13 @@ namespace cosmo
       seam_twist        = parse_expression(prm, "Rod", "Ring twist", 1);
       rotation_limit    = prm.get_double("Largest element rotation") * M_PI / 180.;
       prm.enter_subsection("Material");
-      law = materials::create_rod_law(prm, "Rod/Material");
+      std::shared_ptr<materials::RodLaw> new_law = materials::create_rod_law(prm, "Rod/Material");
       prm.leave_subsection();
+      // A law with natural strains of its own (part-1 sections) replaces the entry.
+      if (new_law->gives_natural_strains() && prm.get("Natural strains") != "0; 0; 1; 0; 0; 0")
+        throw io::InputError("Rod", "Natural strains", prm.get("Natural strains"),
+                             "the default '0; 0; 1; 0; 0; 0' with 'Material / Law = section' "
+                             "(the sections' natural strains are the rod's)");
       prm.leave_subsection();
       ends[0] = parse_end(prm, "End A");
       ends[1] = parse_end(prm, "End B");
@@ -196,6 +225,24 @@ namespace cosmo
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       prm.leave_subsection();
+      compute_sections(*new_law, output_directory);
+      law = new_law;
+      // The start lies in the law's range (a family's parameter at every element).
+      for (unsigned int e = 0; e < n_elements; ++e)
+        try
+          {
+            natural_state((e + 0.5) * length / n_elements, start);
+          }
+        catch (materials::LawRangeError &error)
+          {
+            prm.enter_subsection("Rod");
+            prm.enter_subsection("Material");
+            const std::string value = prm.get("Section parameter");
+            prm.leave_subsection();
+            prm.leave_subsection();
+            throw io::InputError("Rod/Material", "Section parameter", value,
+                                 std::string("values inside the family's range at the start: ") + error.what());
+          }
     }
 
     Vector<double>
@@ -212,7 +259,10 @@ namespace cosmo
       materials::RodNaturalState n;
       const Vector<double>       e = evaluate(natural_strains, s, t);
       std::copy(e.begin(), e.end(), n.reference_strains.begin());
-      n.growth = evaluate(growth, s, t)[0];
+      n.growth    = evaluate(growth, s, t)[0];
+      n.parameter = law->parameter_at(s, t);
+      if (const auto e = law->natural_strains_at(n.parameter))
+        n.reference_strains = *e;
       return n;
     }
 

@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -203,6 +204,28 @@ namespace cosmo
       assembly::BorderedSystem  system;
       solvers::FactorizationMark factorization;
       solvers::ResidualCache    residuals;
+      /// Why the last refused state was refused by the law (thread-safe: noted by the assembly's workers).
+      class Refusals
+      {
+      public:
+        void
+        note(const std::string &why) const
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          last = why;
+        }
+        /// `message`, with the last refusal's reason if there was one.
+        std::string
+        explain(const std::string &message) const
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          return last.empty() ? message : "the law refused the next state: " + last + " (" + message + ")";
+        }
+
+      private:
+        mutable std::mutex  mutex;
+        mutable std::string last;
+      } refusals;
 
       void
       make_mesh();

@@ -124,11 +124,19 @@ namespace cosmo
       record.say(m.str());
       check_start();
       record.attempt([&]() {
-        if (critical_guess)
-          return locate_from_guess();
-        if (!record.has_checkpoint())
-          solve_start();
-        follow_path();
+        try
+          {
+            if (critical_guess)
+              return locate_from_guess();
+            if (!record.has_checkpoint())
+              solve_start();
+            follow_path();
+          }
+        catch (io::RunFailure &e)
+          {
+            // A path stopped by the law's range says so.
+            throw io::RunFailure(problem.refusals.explain(e.what()));
+          }
       });
       finish_run();
     }

@@ -39,7 +39,7 @@ namespace cosmo
       double                 W = 0;
       std::array<double, 6>  dW{};
       std::array<double, 36> ddW{};
-      law.energy_derivatives(elastic_rod_strains(strains, n), false, W, dW, ddW);
+      law.energy_derivatives_at(n.parameter, elastic_rod_strains(strains, n), false, W, dW, ddW);
       // d(g psi)/dnu_k = g psi_k w_k / g, d(g psi)/dkappa_k = g psi_k w_k / g.
       for (unsigned int k = 0; k < 6; ++k)
         dW[k] *= n.weights[k];

@@ -8,6 +8,8 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -40,6 +42,19 @@ namespace cosmo
      * state; grown_rod_energy() evaluates it on Sacado numbers through its
      * second-order Taylor expansion there.
      */
+    /**
+     * A law asked for a state it does not cover (a table's strain outside
+     * its grid, a family's parameter outside its range): the message names
+     * the quantity, its value and the range. Not an error of the run by
+     * itself (a Newton iterate may stray): the state is refused, and the
+     * message says why a path that cannot go on stopped.
+     */
+    class LawRangeError : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
     class RodLaw
     {
     public:
@@ -58,6 +73,44 @@ namespace cosmo
       /// A line for the log: what the law is and where its numbers come from.
       virtual std::string
       description() const = 0;
+
+      /**
+       * A law that varies along the rod (a family of sections over a growth
+       * parameter p): p at the reference arclength s and load parameter t.
+       * 0 for a law that does not vary.
+       */
+      virtual double
+      parameter_at(const double /*s*/, const double /*t*/) const
+      {
+        return 0;
+      }
+      /**
+       * The natural strains (nu, kappa) the law itself gives at parameter p
+       * (a part-1 section's natural shape), or nothing: then the rod's own
+       * 'Natural strains'. LawRangeError outside the law's range.
+       */
+      virtual std::optional<std::array<double, 6>>
+      natural_strains_at(const double /*p*/) const
+      {
+        return std::nullopt;
+      }
+      /// Does natural_strains_at() give them (whatever p)?
+      virtual bool
+      gives_natural_strains() const
+      {
+        return false;
+      }
+      /// energy_derivatives() of the member at parameter p (LawRangeError outside its range).
+      virtual void
+      energy_derivatives_at(const double                 /*p*/,
+                            const std::array<double, 6> &e,
+                            const bool                   with_hessian,
+                            double &                     W,
+                            std::array<double, 6> &      dW,
+                            std::array<double, 36> &     ddW) const
+      {
+        energy_derivatives(e, with_hessian, W, dW, ddW);
+      }
 
       /// The tangent stiffness in the natural state (e = 0), 6 x 6 row-major:
       /// the small-strain stiffnesses of the closed forms and the checks.
@@ -87,6 +140,8 @@ namespace cosmo
       std::array<double, 6> reference_strains{{0, 0, 1, 0, 0, 0}};
       double                growth = 1;
       std::array<double, 6> weights{{1, 1, 1, 1, 1, 1}};
+      /// The law's parameter here (RodLaw::parameter_at; 0 for a law that does not vary).
+      double parameter = 0;
     };
 
     /// The weighted elastic strains w_k e_k, e = (nu/g - nu0, (kappa - kappa0)/g).
@@ -118,12 +173,12 @@ namespace cosmo
       double W = 0;
       if constexpr (std::is_same_v<Number, double>)
         {
-          law.energy_derivatives(e0, false, W, dW, ddW);
+          law.energy_derivatives_at(n.parameter, e0, false, W, dW, ddW);
           return n.growth * W;
         }
       else
         {
-          law.energy_derivatives(e0, true, W, dW, ddW);
+          law.energy_derivatives_at(n.parameter, e0, true, W, dW, ddW);
           std::array<Number, 6> de;
           Number                w(W); // no derivatives
           for (unsigned int k = 0; k < 6; ++k)
