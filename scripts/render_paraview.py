@@ -15,7 +15,7 @@ The application is read from RUN_DIR/summary.json:
 - plate_rod: plate-branch-K.pvd coloured by the deflection (displacement Z),
   with the rim (rim-branch-K.pvd) as a tube;
 - rod: rod-branch-K.pvd (its points are the deformed centreline), drawn as a
-  thick shaded line coloured by the curvature kappa2.
+  thick shaded line coloured by the curvature component of largest magnitude.
 
 Debian: apt-get install paraview python3-paraview xvfb xauth (scripts/setup.sh
 installs them). tests/vtu_readable.py runs it on one example of each
@@ -118,10 +118,16 @@ def main(argv):
         d.SetRepresentationType("Surface")
         d.LineWidth = 8
         d.RenderLinesAsTubes = 1
-        ColorBy(d, ("POINTS", "kappa2"))
+        # Coloured by the curvature the shape has most of (a helix bent about
+        # d1 is coloured by kappa1, not by a kappa2 at round-off).
+        def largest(name):
+            lo, hi = reader.PointData[name].GetRange()
+            return max(abs(lo), abs(hi))
+        field = max(["kappa1", "kappa2", "kappa3"], key=largest)
+        ColorBy(d, ("POINTS", field))
         view.CameraPosition = [3, -4, 3]
         view.CameraViewUp = [0, 0, 1]
-        what = "%s at t = %g, curvature kappa2" % (os.path.basename(pvd), t)
+        what = "%s at t = %g, curvature %s" % (os.path.basename(pvd), t, field)
     else:
         sys.stderr.write("render_paraview.py: unknown application '%s'\n" % app)
         return 1
