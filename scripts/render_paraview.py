@@ -14,8 +14,9 @@ The application is read from RUN_DIR/summary.json:
   coloured by the Z component of the director;
 - plate_rod: plate-branch-K.pvd coloured by the deflection (displacement Z),
   with the rim (rim-branch-K.pvd) as a tube;
-- rod: rod-branch-K.pvd (its points are the deformed centreline), drawn as a
-  thick shaded line coloured by the curvature component of largest magnitude.
+- rod: tube-branch-K.pvd (the rod's body, a tube about its centreline), or
+  rod-branch-K.pvd drawn as a thick shaded line, coloured by the curvature
+  component of largest magnitude.
 
 Debian: apt-get install paraview python3-paraview xvfb xauth (scripts/setup.sh
 installs them). tests/vtu_readable.py runs it on one example of each
@@ -107,17 +108,22 @@ def main(argv):
         view.CameraViewUp = [0, 0, 1]
         what = "%s at t = %g, deflection" % (os.path.basename(pvd), t)
     elif app == "rod":
-        pvd = branch_file(run, "rod", branch)
+        # The body the rod writes (tube-branch-K.pvd), else the centreline
+        # as thick shaded lines (ParaView's Render Lines As Tubes; its Tube
+        # filter would draw each element as a piece of its own).
+        try:
+            pvd, body = branch_file(run, "tube", branch), True
+        except NoRender:
+            pvd, body = branch_file(run, "rod", branch), False
         reader = PVDReader(FileName=pvd)
         t = last_time(reader)
         reader.UpdatePipeline(t)
         view.ViewTime = t
-        # The centreline as thick shaded lines (ParaView's Render Lines As
-        # Tubes): the Tube filter would draw each element as a piece of its own.
         d = Show(reader, view)
         d.SetRepresentationType("Surface")
-        d.LineWidth = 8
-        d.RenderLinesAsTubes = 1
+        if not body:
+            d.LineWidth = 8
+            d.RenderLinesAsTubes = 1
         # Coloured by the curvature the shape has most of (a helix bent about
         # d1 is coloured by kappa1, not by a kappa2 at round-off).
         def largest(name):

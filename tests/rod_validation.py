@@ -27,6 +27,17 @@ Cases:
           sections reused by a second run; a p past the family stops the
           path (exit 2, the range named); one section (p = 0.3) closes a
           cantilever of length 2 pi / 0.3 into a circle.
+  table   a ribbon on the strip's nonlinear law (a strip table.h5 of (kappa1,
+          kappa3), w/h = 20, the rest free): bent and twisted uniformly by
+          its end's rotation, its end moment against the strip computed
+          directly there, within the cubic Hermite bound on tables of 11
+          and 21 points in kappa1; bent past the grid, the path stops with
+          the strain and the range named (exit 2).
+  elastica the pinned-pinned rod pushed past its Euler threshold and
+          followed on its buckled branch (arclength, branch switching) to
+          35 % end shortening: the end load against Euler's elastica,
+          P = 4 K(k)^2 B/L^2 at D/L = 2 E(k)/K(k) - 1 (complete elliptic
+          integrals), converging at second order on 20, 40, 80 elements.
 """
 import csv, json, math, os, subprocess, sys
 
@@ -34,6 +45,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 exe, case, scratch = sys.argv[1], sys.argv[2], sys.argv[3]
+# (the strip beside the rod: the table case computes its law)
+strip = os.path.join(os.path.dirname(os.path.abspath(exe)), "strip")
 os.makedirs(scratch, exist_ok=True)
 failures = 0
 
@@ -389,7 +402,124 @@ def section():
           statics_bound(16, K[2][2], K[4][4], L) * L / K[4][4])
 
 
-{"helix": helix, "section": section, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
+def strip_table(name, kappa1_points):
+    """A strip's constitutive table of (kappa1, kappa3), w/h = 20, the rest free."""
+    directory = os.path.join(scratch, name)
+    prm = os.path.join(scratch, name + ".prm")
+    open(prm, "w").write(prm_text({
+        "Strip": {"Width": 1, "Thickness": 0.05, "Number of cells": 20},
+        "Rod strains": {"Mode": "prescribed strains", "Free strains": "nu1, nu2, nu3, kappa2"},
+        "Constitutive table": {"Enabled": "true", "First strain": "kappa1",
+                               "First range": "-1, 1, %d" % kappa1_points, "Second strain": "kappa3",
+                               "Second range": "-0.4, 0.4, 21"},
+        "Output": {"Output directory": directory}}))
+    subprocess.run([strip, "--quiet", prm], check=True, capture_output=True)
+    return os.path.join(directory, "table.h5")
+
+
+def strip_direct(name, strains):
+    """The strip's resultants at prescribed (kappa1, kappa3), the rest free."""
+    directory = os.path.join(scratch, name)
+    prm = os.path.join(scratch, name + ".prm")
+    open(prm, "w").write(prm_text({
+        "Strip": {"Width": 1, "Thickness": 0.05, "Number of cells": 20},
+        "Rod strains": {"Mode": "prescribed strains", "Strains": "0, 0, 1, %r, 0, %r" % strains,
+                        "Free strains": "nu1, nu2, nu3, kappa2"},
+        "Output": {"Output directory": directory}}))
+    subprocess.run([strip, "--quiet", prm], check=True, capture_output=True)
+    return json.load(open(os.path.join(directory, "summary.json")))["resultants"]
+
+
+def hermite_bound(table, axis, at):
+    """|f' - p'| <= h^3 max|f''''| / (72 sqrt 3) for the cubic Hermite p of f
+    (the derivative of f''''/24 (x - x0)^2 (x - x1)^2 peaks at h^3 / (3 sqrt 3));
+    f'''' = K'' estimated by second differences of the tabulated stiffness
+    over the cell and its neighbours."""
+    import h5py
+    with h5py.File(table, "r") as f:
+        x = f["strain_1"][()] if axis == 0 else f["strain_2"][()]
+        K = f["stiffness"][()]
+        k = K[:, 10, 3, 3] if axis == 0 else K[5, :, 5, 5]  # along kappa1 at kappa3 = 0, or kappa3 at kappa1 = 0
+    h = x[1] - x[0]
+    i = int((at - x[0]) // h)
+    second = [abs(k[j - 1] - 2 * k[j] + k[j + 1]) / h ** 2 for j in range(max(i - 1, 1), min(i + 3, len(x) - 1))]
+    return h ** 3 * max(second) / (72 * math.sqrt(3))
+
+
+def table():
+    # The rod on the strip's nonlinear law (doc/theory-rod.md 4.2): a ribbon
+    # bent, then twisted, uniformly by its end's rotation; its end moment
+    # against the strip computed directly at that curvature, within the
+    # interpolation bound, on two tables.
+    base = {"End A": {"Support": "clamped"},
+            "Continuation": {"Initial step": 0.25, "Maximum step": 0.25}, **NEWTON}
+    for points in (11, 21):
+        h5 = strip_table("table-%d" % points, points)
+        law = {"Law": "table", "Table file": h5}
+        # Bent about d1 to kappa1 = 0.43 (the end turned by kappa1 L about e1 = d1).
+        s = run("bend-%d" % points, dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law},
+                                         **{"End B": {"Support": "rotation only", "Rotation": "%r*t; 0; 0" % 0.86}}))
+        m = s["last_state"]["loads_B"][3]
+        direct = strip_direct("bend-direct", (0.43, 0.0))["m1"]
+        bound = hermite_bound(h5, 0, 0.43)
+        print("  %d points in kappa1: m1 %.10e, strip %.10e, bound %.2e" % (points, m, direct, bound))
+        check("%d points: bent, m1 against the strip's (Hermite bound)" % points, m, direct, 2 * bound + 1e-9 * abs(direct))
+    # Twisted about d3 to kappa3 = 0.23: the torque of the relaxed strip (its
+    # nu3 shortens; the table's energy is that of the relaxed strip).
+    s = run("twist", dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law},
+                          **{"End B": {"Support": "rotation only", "Rotation": "0; 0; %r*t" % 0.46}}))
+    direct = strip_direct("twist-direct", (0.0, 0.23))["m3"]
+    check("twisted, m3 against the strip's (Hermite bound)", s["last_state"]["loads_B"][5], direct,
+          2 * hermite_bound(h5, 1, 0.23) + 1e-9 * abs(direct))
+    # Bent past the grid (kappa1 = 1.2 > 1): the path stops there, the strain and range named.
+    directory = os.path.join(scratch, "past")
+    prm = os.path.join(scratch, "past.prm")
+    open(prm, "w").write(prm_text(dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law},
+                                       **{"End B": {"Support": "rotation only", "Rotation": "2.4*t; 0; 0"}},
+                                       Output={"Output directory": directory})))
+    r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
+    summary = json.load(open(os.path.join(directory, "summary.json")))
+    check("past the grid: exit status 2", r.returncode, 2, 0)
+    check("past the grid: status failed, kappa1 and [-1, 1] named", summary["status"] == "failed" and
+          "kappa1" in summary["message"] and "outside the table's range [-1, 1]" in summary["message"], True, 0)
+    check("past the grid: the last state inside (kappa1 = 1.2 t <= 1)", 1.2 * summary["last_state"]["t"] <= 1 + 1e-12,
+          True, 0)
+
+
+def elastica():
+    # Euler's elastica (pinned-pinned, inextensible and unshearable): at the
+    # end-to-end distance D = L (2 E(k)/K(k) - 1), the load P = 4 K(k)^2 B/L^2
+    # (k = sin(alpha/2), alpha the end slope). EA = GA = 1e8 B/L^2 leave a
+    # relative correction ~P/EA < 4e-7, far below the discretization's error
+    # (O(h^2), ~1e-3 on 20 elements) at the meshes compared.
+    from scipy.special import ellipk, ellipe
+    L, B = 1.0, 1.0
+    def exact(D):
+        k2 = brentq(lambda m: 2 * ellipe(m) / ellipk(m) - 1 - D / L, 1e-14, 1 - 1e-12)
+        return 4 * ellipk(k2) ** 2 * B / L ** 2
+    errors = []
+    for n in (20, 40, 80):
+        directory = os.path.join(scratch, "elastica-%d" % n)
+        run("elastica-%d" % n, {
+            "Rod": {"Length": L, "Number of elements": n,
+                    "Material": {"Law": "quadratic", "Stiffnesses": "1e8, 1e8, 1e8, 2, %r, 1" % B}},
+            "End A": {"Support": "pinned"},
+            "End B": {"Support": "pinned", "Displacement": "0; 0; -%r*t" % L},
+            "Path following": {"Method": "arclength"},
+            "Arclength continuation": {"Initial step": 0.002, "Maximum step": 0.04, "Maximum number of steps": 400,
+                                       "Parameter range": "0, 0.36", "Both directions": "false"}})
+        rows = [r for r in csv.DictReader(open(os.path.join(directory, "steps.csv")))
+                if r["branch"] == "1" and 0.05 <= float(r["t"]) <= 0.35]
+        check("%d elements: the buckled branch reaches t = 0.35 (states on it)" % n, len(rows) > 10, True, 0)
+        err = max(abs(abs(float(r["force_B_z"])) / exact(L * (1 - float(r["t"]))) - 1) for r in rows)
+        print("  %d elements: %d states on the buckled branch, largest relative error of P %.3e" % (n, len(rows), err))
+        errors.append(err)
+    for k in (1, 2):
+        check("order of P's error, %d -> %d elements" % (10 * 2 ** k, 20 * 2 ** k),
+              math.log2(errors[k - 1] / errors[k]), 2, 0.1)
+
+
+{"helix": helix, "section": section, "table": table, "elastica": elastica, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
  "growth": growth, "michell": michell, "link": link, "study": study, "loads": loads}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)

@@ -220,21 +220,8 @@ namespace cosmo
           c.admissible = false;
           return;
         }
-      const double               s = (e + 0.5) * d.h;
-      materials::RodNaturalState natural;
-      try
-        {
-          natural = natural_state(s, d.t);
-        }
-      catch (materials::LawRangeError &error)
-        {
-          // Outside the law's range: refused (the step is cut), and the
-          // reason kept for the message if the path cannot go on.
-          c.admissible = false;
-          refusals.note(error.what());
-          return;
-        }
-      const Vector<double> fv      = evaluate(distributed_force, s, d.t);
+      const double         s  = (e + 0.5) * d.h;
+      const Vector<double> fv = evaluate(distributed_force, s, d.t);
       const Tensor<1, 3>   chord0  = reference_positions[(e + 1) % n_nodes()] - reference_positions[e];
       Tensor<1, 3>         f;
       for (unsigned int i = 0; i < 3; ++i)
@@ -243,8 +230,21 @@ namespace cosmo
       double                          W = 0;
       std::array<double, n_ad>        gy{};
       std::array<double, n_ad * n_ad> Hy{};
-      materials::internal::differentiate<n_ad>(
-        y, [&](const auto &z) { return element_energy(z, d, *law, natural, e); }, jacobian, W, gy, Hy);
+      try
+        {
+          const auto natural = natural_state(s, d.t);
+          materials::internal::differentiate<n_ad>(
+            y, [&](const auto &z) { return element_energy(z, d, *law, natural, e); }, jacobian, W, gy, Hy);
+        }
+      catch (materials::LawRangeError &error)
+        {
+          // Outside the law's range (a family's parameter, a table's grid):
+          // refused, the step cut, and the reason kept for the message if
+          // the path cannot go on.
+          c.admissible = false;
+          refusals.note(error.what());
+          return;
+        }
       if (!std::isfinite(W))
         {
           c.admissible = false;

@@ -5,8 +5,10 @@
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/rod_laws/section.h>
+#include <cosmo/materials/rod_laws/table.h>
 
 #include "cross_section_problem.h"
+#include "strip_problem.h"
 
 #include "parameters.h"
 
@@ -94,23 +96,27 @@ namespace cosmo
       }
 
       /**
-       * A 'section' law whose 'Section file' is a rod_cross_section
-       * parameter file: part 1 runs here, in this process, into the run's
-       * directory 'section' (reused while that file's parameters are the
-       * same), and the law reads its result.
+       * A law computed from another application's parameter file (a part-1
+       * section, a part-2 table): that application runs here, in this
+       * process, into the run's directory 'section' or 'table' (reused
+       * while the file's parameters are the same), and the law reads it.
        */
       void
-      compute_sections(materials::RodLaw &law, const std::string &output_directory)
+      compute_law_input(materials::RodLaw &law, const std::string &output_directory)
       {
-        auto *section = dynamic_cast<materials::SectionRodLaw *>(&law);
-        if (!section || !section->computed_by_the_run())
+        const auto input = law.computed_input();
+        if (input.parameter_file.empty())
           return;
-        const auto run = io::run_nested(&CrossSectionProblem::declare_parameters, &rod::run_study,
-                                        section->section_file(), output_directory + "/section",
-                                        "Rod/Material", "Section file");
-        section->read_result(run.directory);
-        section->computed_note = run.reused ? "reused from an earlier run of the same parameters" :
-                                              "computed by this run";
+        const std::string entry = dynamic_cast<materials::TableRodLaw *>(&law) ? "Table file" : "Section file";
+        const std::string directory = output_directory + (entry == "Table file" ? "/table" : "/section");
+        const auto        run =
+          input.application == "strip" ?
+            io::run_nested(&strip::StripProblem::declare_parameters, &strip::run_strip, input.parameter_file,
+                           directory, "Rod/Material", entry) :
+            io::run_nested(&CrossSectionProblem::declare_parameters, &rod::run_study, input.parameter_file,
+                           directory, "Rod/Material", entry);
+        law.read_computed(run.directory, run.reused ? "reused from an earlier run of the same parameters" :
+                                                      "computed by this run");
       }
     } // namespace
 
@@ -184,6 +190,11 @@ namespace cosmo
       prm.declare_entry("Output directory", "output/rod", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, rod-NNNN.vtu "
                         "and log.txt (created if needed).");
+      prm.declare_entry("Tube radius", "0.02", Patterns::Double(0),
+                        "The rod drawn as a body: tube-NNNN.vtu (tube.pvd) with each converged "
+                        "state's rod-NNNN.vtu, a tube about the centreline of this radius per "
+                        "length L, its circles in the directors' (d1, d2) planes (the twist "
+                        "shows), coloured by the strains and resultants; 0: none.");
       prm.leave_subsection();
     }
 
@@ -224,8 +235,9 @@ namespace cosmo
       start = continuation_settings.start;
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
+      tube_radius      = prm.get_double("Tube radius");
       prm.leave_subsection();
-      compute_sections(*new_law, output_directory);
+      compute_law_input(*new_law, output_directory);
       law = new_law;
       // The start lies in the law's range (a family's parameter at every element).
       for (unsigned int e = 0; e < n_elements; ++e)

@@ -86,6 +86,7 @@ namespace cosmo
       solvers::ArclengthSettings arclength_settings;
       solvers::ContinuationSettings continuation_settings;
       std::string                output_directory;
+      double                     tube_radius = 0.02; ///< of the tube drawn as the body, per length (0: none)
     };
   } // namespace rod
 } // namespace cosmo

@@ -159,62 +159,135 @@ namespace cosmo
     namespace
     {
       /**
+       * What the output shows of element e at its three points (node a, the
+       * midpoint on its helicoid H_a exp(xi h / 2), node b as the element
+       * sees it: a ring's seam turned back): positions, frames, the
+       * element's strains and resultants (constant on it).
+       */
+      struct ElementSample
+      {
+        std::array<Point<3>, 3>     x;
+        std::array<Tensor<2, 3>, 3> frames;
+        std::array<double, 6>       strain, resultants;
+      };
+
+      ElementSample
+      sample(const RodProblem &p, const Vector<double> &X, const unsigned int e, const double t)
+      {
+        const double  h = p.element_length();
+        ElementSample out;
+        out.strain                   = p.element_strains(X, e, t);
+        out.resultants               = materials::grown_rod_resultants(*p.law, out.strain, p.natural_state((e + 0.5) * h, t));
+        const Tensor<2, 3> R_a       = kinematics::quaternion_rotation(p.quaternion(X, e));
+        const kinematics::RodStrains xi(out.strain);
+        out.frames = {{R_a, R_a * kinematics::helix_rotation(xi.kappa, 0.5 * h), R_a * kinematics::helix_rotation(xi.kappa, h)}};
+        out.x      = {{Point<3>(p.position(X, e)),
+                       Point<3>(p.position(X, e) + R_a * kinematics::helix_position(xi.nu, xi.kappa, 0.5 * h)),
+                       Point<3>(p.position(X, (e + 1) % p.n_nodes()))}};
+        return out;
+      }
+
+      /// The strains, then the force and moment in the fixed axes (n = R (n1, n2, n3)) at point k.
+      std::vector<double>
+      strains_and_resultants(const ElementSample &m, const unsigned int k)
+      {
+        std::vector<double> v(m.strain.begin(), m.strain.end());
+        for (unsigned int i = 0; i < 6; ++i)
+          {
+            double s = 0;
+            for (unsigned int j = 0; j < 3; ++j)
+              s += m.frames[k][i % 3][j] * m.resultants[3 * (i / 3) + j];
+            v.push_back(s);
+          }
+        return v;
+      }
+
+      std::vector<std::pair<std::string, unsigned int>>
+      strain_and_resultant_fields()
+      {
+        std::vector<std::pair<std::string, unsigned int>> fields;
+        for (const char *n : strain_names)
+          fields.emplace_back(n, 1);
+        fields.emplace_back("force", 3);
+        fields.emplace_back("moment", 3);
+        return fields;
+      }
+
+      /**
        * The centreline as quadratic Lagrange curves, one per element, its
-       * midpoint on the element's helicoid (H_a exp(xi h / 2)): the
-       * directors at the nodes and the midpoint, the element's strains and
-       * resultants (constant on it); with a mode, the mode's displacement.
+       * midpoint on the element's helicoid: the directors at the nodes and
+       * the midpoint, the element's strains and resultants; with a mode,
+       * the mode's displacement.
        */
       io::VTUPatches<1>
       centreline(const RodProblem &p, const Vector<double> &X, const double t, const Vector<double> *mode)
       {
         std::vector<std::pair<std::string, unsigned int>> fields = {{"d1", 3}, {"d2", 3}, {"d3", 3}};
-        for (const char *n : strain_names)
-          fields.emplace_back(n, 1);
-        fields.emplace_back("force", 3);
-        fields.emplace_back("moment", 3);
+        for (const auto &f : strain_and_resultant_fields())
+          fields.push_back(f);
         if (mode)
           fields.emplace_back("mode_displacement", 3);
         io::VTUPatches<1> out(fields);
         out.set_time(t);
-        const double h = p.element_length();
         for (unsigned int e = 0; e < p.n_elements; ++e)
           {
-            const unsigned int b      = (e + 1) % p.n_nodes();
-            const auto         strain = p.element_strains(X, e, t);
-            const auto         nm     = materials::grown_rod_resultants(*p.law, strain, p.natural_state((e + 0.5) * h, t));
-            const Tensor<2, 3> R_a    = kinematics::quaternion_rotation(p.quaternion(X, e));
-            const kinematics::RodStrains xi(strain);
-            const Tensor<2, 3> R_mid = R_a * kinematics::helix_rotation(xi.kappa, 0.5 * h);
-            const Tensor<1, 3> r_mid = p.position(X, e) + R_a * kinematics::helix_position(xi.nu, xi.kappa, 0.5 * h);
-            // The far node's frame as the element sees it (a ring's seam turned back).
-            const Tensor<2, 3> R_b = R_a * kinematics::helix_rotation(xi.kappa, h);
+            const unsigned int b = (e + 1) % p.n_nodes();
+            const auto         m = sample(p, X, e, t);
             out.begin_patch(2);
-            const std::array<Point<3>, 3>     x{{Point<3>(p.position(X, e)), Point<3>(r_mid), Point<3>(p.position(X, b))}};
-            const std::array<Tensor<2, 3>, 3> frames{{R_a, R_mid, R_b}};
             for (unsigned int k = 0; k < 3; ++k)
               {
                 std::vector<double> v;
                 for (unsigned int d = 0; d < 3; ++d)
                   for (unsigned int i = 0; i < 3; ++i)
-                    v.push_back(frames[k][i][d]);
-                v.insert(v.end(), strain.begin(), strain.end());
-                for (unsigned int i = 0; i < 6; ++i)
-                  {
-                    // Resultants in the fixed axes: n = R (n1, n2, n3).
-                    double s = 0;
-                    for (unsigned int j = 0; j < 3; ++j)
-                      s += frames[k][i % 3][j] * nm[3 * (i / 3) + j];
-                    v.push_back(s);
-                  }
+                    v.push_back(m.frames[k][i][d]);
+                const auto sr = strains_and_resultants(m, k);
+                v.insert(v.end(), sr.begin(), sr.end());
                 if (mode)
                   for (unsigned int i = 0; i < 3; ++i)
                     v.push_back(k == 1 ? 0.5 * (p.displacement(*mode, e)[i] + p.displacement(*mode, b)[i]) :
                                          p.displacement(*mode, k == 0 ? e : b)[i]);
                 // (points in lexicographic order: node a, the midpoint, node b)
-                out.set_position(k, x[k]);
+                out.set_position(k, m.x[k]);
                 out.set_values(k, v);
               }
             out.end_patch();
+          }
+        return out;
+      }
+
+      /**
+       * The rod drawn as a body: a tube of radius rho about the centreline,
+       * its circle in the (d1, d2) plane of each point, so that its twist
+       * shows; per element 8 biquadratic patches around (each a quarter of
+       * a quadrant: the circle to 1e-4 of rho), with the element's strains
+       * and resultants.
+       */
+      io::VTUPatches<2>
+      tube(const RodProblem &p, const Vector<double> &X, const double t, const double rho)
+      {
+        io::VTUPatches<2> out(strain_and_resultant_fields());
+        out.set_time(t);
+        constexpr unsigned int sectors = 8;
+        for (unsigned int e = 0; e < p.n_elements; ++e)
+          {
+            const auto m = sample(p, X, e, t);
+            for (unsigned int sector = 0; sector < sectors; ++sector)
+              {
+                out.begin_patch(2);
+                for (unsigned int j = 0; j < 3; ++j)
+                  {
+                    const double phi = 2 * M_PI * (sector + 0.5 * j) / sectors;
+                    for (unsigned int i = 0; i < 3; ++i)
+                      {
+                        Tensor<1, 3> radial;
+                        for (unsigned int c = 0; c < 3; ++c)
+                          radial[c] = std::cos(phi) * m.frames[i][c][0] + std::sin(phi) * m.frames[i][c][1];
+                        out.set_position(i + 3 * j, m.x[i] + rho * radial);
+                        out.set_values(i + 3 * j, strains_and_resultants(m, i));
+                      }
+                  }
+                out.end_patch();
+              }
           }
         return out;
       }
@@ -224,8 +297,13 @@ namespace cosmo
     RodProblem::write_fields(const std::string &tag) const
     {
       io::PhaseTimer::Scope scope(timer, "output");
-      const auto out = centreline(*this, configuration(solution, load_parameter), load_parameter, nullptr);
-      return {{"rod", out.write_output(output_directory, "rod-" + tag, false)}};
+      const Vector<double> X = configuration(solution, load_parameter);
+      std::vector<std::pair<std::string, std::string>> files = {
+        {"rod", centreline(*this, X, load_parameter, nullptr).write_output(output_directory, "rod-" + tag, false)}};
+      if (tube_radius > 0)
+        files.emplace_back("tube", tube(*this, X, load_parameter, tube_radius * length)
+                                     .write_output(output_directory, "tube-" + tag, false));
+      return files;
     }
 
     std::vector<std::pair<std::string, std::string>>

@@ -11,8 +11,10 @@
 #include <cosmo/assembly/bordered_system.h>
 
 #include <algorithm>
+#include <exception>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 /**
@@ -138,10 +140,25 @@ namespace cosmo
       {
         AssemblyTotals totals;
         totals.scalars.assign(sample.scalars.size(), 0.);
+        // An exception in a worker thread would end the process
+        // (std::terminate): the first one is kept, the cell refused, and it
+        // is thrown again here, in the calling thread, after the loop.
+        std::exception_ptr first_error;
+        std::mutex         error_mutex;
         auto cell_worker = [&](const CellIterator &cell, Scratch &scratch, CellContribution &c) {
           c.reset(target.jacobian);
           cell->get_dof_indices(c.dof_indices);
-          worker(cell, scratch, c);
+          try
+            {
+              worker(cell, scratch, c);
+            }
+          catch (...)
+            {
+              c.admissible = false;
+              std::lock_guard<std::mutex> lock(error_mutex);
+              if (!first_error)
+                first_error = std::current_exception();
+            }
         };
         auto copier = [&](const CellContribution &c) {
           if (!c.admissible)
@@ -156,6 +173,8 @@ namespace cosmo
         WorkStream::run(filter_iterators(dof_handler.active_cell_iterators(),
                                          IteratorFilters::LocallyOwnedCell()),
                         cell_worker, copier, sample_scratch, sample);
+        if (first_error)
+          std::rethrow_exception(first_error);
         return totals;
       }
     };

@@ -100,6 +100,25 @@ namespace cosmo
       {
         return false;
       }
+      /**
+       * A law computed from another application's parameter file by the
+       * rod run itself (a part-1 section, a part-2 table): that
+       * application's name and the file; empty if the law is read as given.
+       */
+      struct ComputedInput
+      {
+        std::string application, parameter_file;
+      };
+      virtual ComputedInput
+      computed_input() const
+      {
+        return {};
+      }
+      /// Read the law from the directory the computation of computed_input() wrote.
+      virtual void
+      read_computed(const std::string & /*directory*/, const std::string & /*note*/)
+      {}
+
       /// energy_derivatives() of the member at parameter p (LawRangeError outside its range).
       virtual void
       energy_derivatives_at(const double                 /*p*/,

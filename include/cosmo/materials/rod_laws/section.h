@@ -61,20 +61,23 @@ namespace cosmo
       static void
       declare_parameters(ParameterHandler &prm);
       /// 'Section file' and 'Section parameter'; a .prm file is only remembered
-      /// (computed_by_the_run()): the application computes it and calls read_result().
+      /// (computed_input()): the application computes it and calls read_computed().
       void
       parse_parameters(ParameterHandler &prm, const std::string &section) override;
 
       /// 'Section file' is a rod_cross_section parameter file the run computes itself.
-      bool
-      computed_by_the_run() const
+      ComputedInput
+      computed_input() const override
       {
-        return members.empty() && !file.empty();
+        if (members.empty() && !file.empty())
+          return {"rod_cross_section", file};
+        return {};
       }
-      const std::string &
-      section_file() const
+      void
+      read_computed(const std::string &directory, const std::string &note) override
       {
-        return file;
+        read_result(directory);
+        computed_note = note;
       }
       /// Read the members from a result: a summary.json, a sweep.csv, or a
       /// directory holding one of them (a sweep's first).
