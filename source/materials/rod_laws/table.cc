@@ -60,6 +60,35 @@ namespace cosmo
         u = (v - axis[i]) / (axis[i + 1] - axis[i]);
         return true;
       }
+
+      /**
+       * K_AB - K_AF K_FF^-1 K_FB (row-major 2 x 2, A = (a, b)): the axes'
+       * stiffness with the free strains F relaxed; its cross entry is the
+       * interpolant's data, the diagonal measures how well the grid
+       * resolves the law.
+       */
+      std::array<double, 4>
+      condensed_axes(const double *K, const unsigned int a, const unsigned int b,
+                     const std::vector<unsigned int> &relaxed)
+      {
+        const std::array<unsigned int, 2> A{{a, b}};
+        std::array<double, 4>             condensed;
+        FullMatrix<double>                KFF(relaxed.size(), relaxed.size());
+        for (unsigned int r = 0; r < relaxed.size(); ++r)
+          for (unsigned int c = 0; c < relaxed.size(); ++c)
+            KFF(r, c) = K[6 * relaxed[r] + relaxed[c]];
+        if (!relaxed.empty())
+          KFF.gauss_jordan();
+        for (unsigned int r = 0; r < 2; ++r)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              condensed[2 * r + c] = 0.5 * (K[6 * A[r] + A[c]] + K[6 * A[c] + A[r]]);
+              for (unsigned int k = 0; k < relaxed.size(); ++k)
+                for (unsigned int l = 0; l < relaxed.size(); ++l)
+                  condensed[2 * r + c] -= K[6 * A[r] + relaxed[k]] * KFF(k, l) * K[6 * relaxed[l] + A[c]];
+            }
+        return condensed;
+      }
     } // namespace
 
     void
@@ -178,28 +207,10 @@ namespace cosmo
           f[p]            = energy[p];
           fx[p]           = resultants[6 * p + axis_a];
           fy[p]           = resultants[6 * p + axis_b];
-          // K_AB - K_AF K_FF^-1 K_FB: the axes' stiffness with the free strains
-          // relaxed; its cross entry is the interpolant's data, the diagonal
-          // measures how well the grid resolves the law.
-          const std::array<unsigned int, 2> A{{axis_a, axis_b}};
-          std::array<double, 4>             condensed;
-          FullMatrix<double>                KFF(relaxed.size(), relaxed.size());
-          for (unsigned int r = 0; r < relaxed.size(); ++r)
-            for (unsigned int c = 0; c < relaxed.size(); ++c)
-              KFF(r, c) = K[6 * relaxed[r] + relaxed[c]];
-          if (!relaxed.empty())
-            KFF.gauss_jordan();
-          for (unsigned int r = 0; r < 2; ++r)
-            for (unsigned int c = 0; c < 2; ++c)
-              {
-                condensed[2 * r + c] = 0.5 * (K[6 * A[r] + A[c]] + K[6 * A[c] + A[r]]);
-                for (unsigned int k = 0; k < relaxed.size(); ++k)
-                  for (unsigned int l = 0; l < relaxed.size(); ++l)
-                    condensed[2 * r + c] -= K[6 * A[r] + relaxed[k]] * KFF(k, l) * K[6 * relaxed[l] + A[c]];
-              }
-          fxy[p] = condensed[1];
-          kxx[p] = condensed[0];
-          kyy[p] = condensed[3];
+          const auto condensed = condensed_axes(K, axis_a, axis_b, relaxed);
+          fxy[p]               = condensed[1];
+          kxx[p]               = condensed[0];
+          kyy[p]               = condensed[3];
         }
       // The resolution at the lowest point first: a grid too coarse for the
       // law has no convex interpolant there, and says so.
@@ -211,9 +222,14 @@ namespace cosmo
       natural[axis_b] = y[lowest % y.size()];
       check_resolution();
       find_natural_state();
-      // The other strains' stiffness at the node nearest the natural state.
-      unsigned int i = 0, j = 0;
-      double       best = std::numeric_limits<double>::infinity();
+      set_other_stiffness(stiffness);
+    }
+
+    std::size_t
+    TableRodLaw::nearest_node() const
+    {
+      std::size_t nearest = 0;
+      double      best    = std::numeric_limits<double>::infinity();
       for (unsigned int a = 0; a < x.size(); ++a)
         for (unsigned int b = 0; b < y.size(); ++b)
           if (converged[a * y.size() + b])
@@ -221,11 +237,17 @@ namespace cosmo
                                             (y[b] - natural[axis_b]) / (y.back() - y.front()));
                 d < best)
               {
-                best = d;
-                i    = a;
-                j    = b;
+                best    = d;
+                nearest = a * y.size() + b;
               }
-      const double *K = &stiffness[36 * (i * y.size() + j)];
+      return nearest;
+    }
+
+    void
+    TableRodLaw::set_other_stiffness(const std::vector<double> &stiffness)
+    {
+      // (at the grid point nearest the natural state)
+      const double *K = &stiffness[36 * nearest_node()];
       for (unsigned int k = 0; k < 6; ++k)
         for (unsigned int l = 0; l < 6; ++l)
           others[6 * k + l] = (k == axis_a || k == axis_b || l == axis_a || l == axis_b) ?
@@ -241,7 +263,8 @@ namespace cosmo
       // Where it is coarse for the law's curvature (a ribbon's quartic
       // twist stiffening) the cubics between the nodes bend otherwise.
       resolution = 0;
-      double at_natural = 0, nearest = std::numeric_limits<double>::infinity();
+      double            at_natural = 0;
+      const std::size_t nearest    = nearest_node();
       for (unsigned int i = 0; i < x.size(); ++i)
         for (unsigned int j = 0; j < y.size(); ++j)
           {
@@ -262,13 +285,8 @@ namespace cosmo
             const double scale = std::max(std::abs(kxx[p]), std::abs(kyy[p]));
             const double error = std::max(std::abs(H[0] - kxx[p]), std::abs(H[2] - kyy[p])) / scale;
             resolution         = std::max(resolution, error);
-            const double d     = std::hypot((x[i] - natural[axis_a]) / (x.back() - x.front()),
-                                        (y[j] - natural[axis_b]) / (y.back() - y.front()));
-            if (d < nearest)
-              {
-                nearest    = d;
-                at_natural = error;
-              }
+            if (p == nearest)
+              at_natural = error;
           }
       if (at_natural > stiffness_tolerance)
         throw io::InputError(section_name, "Table file", file,

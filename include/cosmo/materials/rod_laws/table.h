@@ -84,6 +84,12 @@ namespace cosmo
       /// The minimum of the interpolated energy (Newton from the lowest node).
       void
       find_natural_state();
+      /// The converged grid point nearest the natural state (i n2 + j).
+      std::size_t
+      nearest_node() const;
+      /// `others`: the tabulated stiffness of the other four strains at the grid point nearest the natural state.
+      void
+      set_other_stiffness(const std::vector<double> &stiffness);
       /// io::InputError if the interpolant's stiffness misses the table's near the natural state.
       void
       check_resolution();
