@@ -63,23 +63,18 @@ namespace cosmo
     void
     PlateRodRun::locate_from_guess()
     {
-      solvers::ArclengthContinuation driver(problem.arclength_settings, problem.newton_settings);
-      driver.progress = [this](const std::string &s) { problem.record.say(s); };
-      const auto record = solvers::locate_continued_critical_point(driver, problem, *critical_guess,
-                                                                  problem.newton_settings);
-      problem.solution = Vector<double>(record.state.begin(), record.state.end());
-      // The report below takes the inertia and smallest eigenvalue from the
-      // last factorization, of the last Newton iterate: it differs from the
-      // located state by the last update (critical_point.h), on which neither
-      // depends beyond the located precision; not factorizing again is what
-      // the continued point saves.
-      problem.factorization.with_last = true;
-      solvers::StepReport report;
-      report.t          = record.event.lambda;
-      report.n_negative = record.event.n_negative_after;
-      report.final      = true; // the path's only state: written whatever 'Steps between outputs'
-      problem.set_load_parameter(report.t);
-      solvers::report_converged_step(problem, problem.solution, report);
+      solvers::locate_and_report_continued_critical_point(
+        problem, *critical_guess, problem.arclength_settings, problem.newton_settings,
+        [this](const std::string &s) { problem.record.say(s); },
+        [this](const Vector<double> &U) {
+          problem.solution = U;
+          // The report takes the inertia and smallest eigenvalue from the
+          // last factorization, of the last Newton iterate: it differs from
+          // the located state by the last update (critical_point.h), on
+          // which neither depends beyond the located precision; not
+          // factorizing again is what the continued point saves.
+          problem.factorization.with_last = true;
+        });
     }
 
     void

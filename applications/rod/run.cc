@@ -144,17 +144,10 @@ namespace cosmo
     void
     RodRun::locate_from_guess()
     {
-      solvers::ArclengthContinuation driver(problem.arclength_settings, problem.newton_settings);
-      driver.progress   = [this](const std::string &s) { problem.record.say(s); };
-      const auto record = solvers::locate_continued_critical_point(driver, problem, *critical_guess,
-                                                                  problem.newton_settings);
-      problem.solution  = Vector<double>(record.state.begin(), record.state.end());
-      solvers::StepReport report;
-      report.t          = record.event.lambda;
-      report.n_negative = record.event.n_negative_after;
-      report.final      = true; // the path's only state: written whatever 'Steps between outputs'
-      problem.set_load_parameter(report.t);
-      solvers::report_converged_step(problem, problem.solution, report);
+      solvers::locate_and_report_continued_critical_point(
+        problem, *critical_guess, problem.arclength_settings, problem.newton_settings,
+        [this](const std::string &s) { problem.record.say(s); },
+        [this](const Vector<double> &U) { problem.solution = U; });
     }
 
     std::vector<double>

@@ -58,6 +58,26 @@ namespace cosmo
       return record;
     }
 
+    void
+    locate_and_report_continued_critical_point(BifurcationProblem &                               problem,
+                                               const CriticalGuess &                              guess,
+                                               const ArclengthSettings &                          arclength,
+                                               const NewtonSettings &                             newton,
+                                               const std::function<void(const std::string &)> &   progress,
+                                               const std::function<void(const Vector<double> &)> &take_state)
+    {
+      ArclengthContinuation driver(arclength, newton);
+      driver.progress   = progress;
+      const auto record = locate_continued_critical_point(driver, problem, guess, newton);
+      take_state(Vector<double>(record.state.begin(), record.state.end()));
+      StepReport report;
+      report.t          = record.event.lambda;
+      report.n_negative = record.event.n_negative_after;
+      report.final      = true; // the path's only state: written whatever 'Steps between outputs'
+      problem.set_load_parameter(report.t);
+      report_converged_step(problem, Vector<double>(record.state.begin(), record.state.end()), report);
+    }
+
     namespace
     {
       /// The study's critical point of a run: its first event on branch 0.

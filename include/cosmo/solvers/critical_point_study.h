@@ -71,6 +71,22 @@ namespace cosmo
                                     const CriticalGuess &  guess,
                                     const NewtonSettings & newton);
 
+    /**
+     * A study's point whose critical point is continued from a guess: it
+     * is located (locate_continued_critical_point, with a driver of the
+     * run's settings and its progress lines), `take_state` is given the
+     * located state (the application keeps it as its solution, and says
+     * what the report may reuse), and it is reported as the path's only
+     * converged state: written whatever 'Steps between outputs'.
+     */
+    void
+    locate_and_report_continued_critical_point(BifurcationProblem &                             problem,
+                                               const CriticalGuess &                            guess,
+                                               const ArclengthSettings &                        arclength,
+                                               const NewtonSettings &                           newton,
+                                               const std::function<void(const std::string &)> & progress,
+                                               const std::function<void(const Vector<double> &)> &take_state);
+
     /// One run of a study, as the study sees it.
     class CriticalPointRun
     {
