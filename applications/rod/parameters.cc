@@ -4,8 +4,6 @@
 #include <cosmo/io/nested_run.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
-#include <cosmo/materials/rod_laws/section.h>
-#include <cosmo/materials/rod_laws/table.h>
 
 #include "cross_section_problem.h"
 #include "strip_problem.h"
@@ -107,14 +105,13 @@ namespace cosmo
         const auto input = law.computed_input();
         if (input.parameter_file.empty())
           return;
-        const std::string entry = dynamic_cast<materials::TableRodLaw *>(&law) ? "Table file" : "Section file";
-        const std::string directory = output_directory + (entry == "Table file" ? "/table" : "/section");
+        const std::string directory = output_directory + "/" + input.directory;
         const auto        run =
           input.application == "strip" ?
             io::run_nested(&strip::StripProblem::declare_parameters, &strip::run_strip, input.parameter_file,
-                           directory, "Rod/Material", entry) :
+                           directory, "Rod/Material", input.entry) :
             io::run_nested(&CrossSectionProblem::declare_parameters, &rod::run_study, input.parameter_file,
-                           directory, "Rod/Material", entry);
+                           directory, "Rod/Material", input.entry);
         law.read_computed(run.directory, run.reused ? "reused from an earlier run of the same parameters" :
                                                       "computed by this run");
       }

@@ -103,11 +103,13 @@ namespace cosmo
       /**
        * A law computed from another application's parameter file by the
        * rod run itself (a part-1 section, a part-2 table): that
-       * application's name and the file; empty if the law is read as given.
+       * application's name, the file, the law's entry that names it (for
+       * errors) and the directory of the run's output to compute it in;
+       * empty if the law is read as given.
        */
       struct ComputedInput
       {
-        std::string application, parameter_file;
+        std::string application, parameter_file, entry, directory;
       };
       virtual ComputedInput
       computed_input() const

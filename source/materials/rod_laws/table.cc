@@ -138,7 +138,7 @@ namespace cosmo
       while (std::getline(in, line))
         if (line.find("subsection Strip") != std::string::npos)
           application = "strip";
-      return {application, file};
+      return {application, file, "Table file", "table"};
     }
 
     void

@@ -70,7 +70,7 @@ namespace cosmo
       computed_input() const override
       {
         if (members.empty() && !file.empty())
-          return {"rod_cross_section", file};
+          return {"rod_cross_section", file, "Section file", "section"};
         return {};
       }
       void
