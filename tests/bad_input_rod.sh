@@ -44,34 +44,24 @@ expect "an element of the start turned by 229 degrees (too coarse a mesh)" "use 
 # The law of part-1 sections: a missing file, a file that is not a result,
 # a sweep without its columns, a part-1 parameter file with bad input of
 # its own, natural strains given beside the section's.
-rod ' subsection Material
-  set Law = section
-  set Section file = nowhere/summary.json
- end' > section_missing.prm
-expect "a section file that does not exist" "Section file" section_missing.prm
-printf '{"status": "converged", "strains": {}}' > not_a_section.json
-rod ' subsection Material
-  set Law = section
-  set Section file = not_a_section.json
- end' > section_broken.prm
-expect "a summary.json without a stiffness" "6x6" section_broken.prm
-printf 'point,value [x],converged,nu1 [1]\n0,0,1,0\n' > short_sweep.csv
-rod ' subsection Material
-  set Law = section
-  set Section file = short_sweep.csv
- end' > section_columns.prm
-expect "a sweep.csv without the stiffness columns" "no column" section_columns.prm
-printf 'subsection Cross-section\n set Shape = spiral\nend\n' > bad_section.prm
-rod ' subsection Material
-  set Law = section
-  set Section file = bad_section.prm
- end' > section_nested.prm
-expect "a part-1 file with bad input of its own" "bad_section.prm" section_nested.prm
-printf '{"status": "converged", "strains": {"nu1": 0, "nu2": 0, "nu3": 1, "kappa1": 0, "kappa2": -0.3, "kappa3": 0}, "resultants": {"n1": 0, "n2": 0, "n3": 0, "m1": 0, "m2": 0, "m3": 0}, "stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,3,0,0,0],[0,0,0,0.8,0,0],[0,0,0,0,0.8,0],[0,0,0,0,0,0.6]]}' > one_section.json
-rod ' set Natural strains = 0; 0; 1; 0; 1; 0
+# section_law FILE [ROD ENTRIES]: a rod on 'Law = section' with 'Section file = FILE'.
+section_law() { rod "${2:-}
  subsection Material
   set Law = section
-  set Section file = one_section.json
- end' > section_twice.prm
+  set Section file = $1
+ end"; }
+section_law nowhere/summary.json > section_missing.prm
+expect "a section file that does not exist" "Section file" section_missing.prm
+printf '{"status": "converged", "strains": {}}' > not_a_section.json
+section_law not_a_section.json > section_broken.prm
+expect "a summary.json without a stiffness" "6x6" section_broken.prm
+printf 'point,value [x],converged,nu1 [1]\n0,0,1,0\n' > short_sweep.csv
+section_law short_sweep.csv > section_columns.prm
+expect "a sweep.csv without the stiffness columns" "no column" section_columns.prm
+printf 'subsection Cross-section\n set Shape = spiral\nend\n' > bad_section.prm
+section_law bad_section.prm > section_nested.prm
+expect "a part-1 file with bad input of its own" "bad_section.prm" section_nested.prm
+printf '{"status": "converged", "strains": {"nu1": 0, "nu2": 0, "nu3": 1, "kappa1": 0, "kappa2": -0.3, "kappa3": 0}, "resultants": {"n1": 0, "n2": 0, "n3": 0, "m1": 0, "m2": 0, "m3": 0}, "stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,3,0,0,0],[0,0,0,0.8,0,0],[0,0,0,0,0.8,0],[0,0,0,0,0,0.6]]}' > one_section.json
+section_law one_section.json ' set Natural strains = 0; 0; 1; 0; 1; 0' > section_twice.prm
 expect "natural strains given beside a section's" "Natural strains" section_twice.prm
 exit $fail

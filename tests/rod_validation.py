@@ -74,16 +74,18 @@ def prm_text(entries):
     return "\n".join(out) + "\n"
 
 
-def run(name, entries):
+def run(name, entries, status=0):
+    """Run the rod on `entries` into scratch/name; its summary.json. Fails
+    the case unless the exit status is `status` (2: a path that stops)."""
     directory = os.path.join(scratch, name)
     entries = dict(entries)
     entries["Output"] = {"Output directory": directory}
     prm = os.path.join(scratch, name + ".prm")
     open(prm, "w").write(prm_text(entries))
     r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
-    if r.returncode != 0:
+    if r.returncode != status:
         print(r.stdout, r.stderr)
-        raise SystemExit("%s: exit status %d" % (name, r.returncode))
+        raise SystemExit("%s: exit status %d, expected %d" % (name, r.returncode, status))
     return json.load(open(os.path.join(directory, "summary.json")))
 
 
@@ -380,13 +382,7 @@ def section():
     check("a second run reuses the sections", "reused from an earlier run" in log, True, 0)
     # p past the family's range [0, 0.5] at t = 0.64: the path stops there.
     over = dict(law, **{"Section parameter": "0.4*t*s"})
-    directory = os.path.join(scratch, "family-over")
-    prm = os.path.join(scratch, "family-over.prm")
-    open(prm, "w").write(prm_text(dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": over},
-                                       Output={"Output directory": directory})))
-    r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
-    summary = json.load(open(os.path.join(directory, "summary.json")))
-    check("p past the family: exit status 2", r.returncode, 2, 0)
+    summary = run("family-over", dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": over}), status=2)
     check("p past the family: status failed, the range named",
           summary["status"] == "failed" and "outside the family's range [0, 0.5]" in summary["message"], True, 0)
     # The last state is inside: p = 0.4 t s at the last element's midpoint s = 1.9 is at most 0.5.
@@ -472,14 +468,8 @@ def table():
     check("twisted, m3 against the strip's (Hermite bound)", s["last_state"]["loads_B"][5], direct,
           2 * hermite_bound(h5, 1, 0.23) + 1e-9 * abs(direct))
     # Bent past the grid (kappa1 = 1.2 > 1): the path stops there, the strain and range named.
-    directory = os.path.join(scratch, "past")
-    prm = os.path.join(scratch, "past.prm")
-    open(prm, "w").write(prm_text(dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law},
-                                       **{"End B": {"Support": "rotation only", "Rotation": "2.4*t; 0; 0"}},
-                                       Output={"Output directory": directory})))
-    r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
-    summary = json.load(open(os.path.join(directory, "summary.json")))
-    check("past the grid: exit status 2", r.returncode, 2, 0)
+    summary = run("past", dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law},
+                               **{"End B": {"Support": "rotation only", "Rotation": "2.4*t; 0; 0"}}), status=2)
     check("past the grid: status failed, kappa1 and [-1, 1] named", summary["status"] == "failed" and
           "kappa1" in summary["message"] and "outside the table's range [-1, 1]" in summary["message"], True, 0)
     check("past the grid: the last state inside (kappa1 = 1.2 t <= 1)", 1.2 * summary["last_state"]["t"] <= 1 + 1e-12,

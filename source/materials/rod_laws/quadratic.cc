@@ -3,6 +3,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/rod_laws/quadratic.h>
+#include <cosmo/materials/section_stiffness.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,47 +17,6 @@ namespace cosmo
   {
     namespace
     {
-      /**
-       * The 6x6 "stiffness" of a rod_cross_section summary.json, row by row;
-       * io::InputError naming 'Stiffness file' of `section` if the file is not
-       * one or the matrix is not 6x6 of finite numbers.
-       */
-      std::vector<double>
-      read_section_stiffness(const std::string &file, const std::string &section)
-      {
-        std::ifstream in(file);
-        if (!in)
-          throw io::InputError(section, "Stiffness file", file,
-                               "a readable rod_cross_section summary.json (cannot open it)");
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        std::vector<double> K; // the finite numbers of "stiffness", row by row
-        std::size_t         rows = 0, non_square = 0;
-        try
-          {
-            const io::JSON  summary = io::JSON::parse(buffer.str());
-            const io::JSON *k       = summary.find("stiffness");
-            if (k && k->is_array())
-              for (rows = 0; rows < k->size(); ++rows)
-                {
-                  non_square += k->at(rows).size() != 6;
-                  for (std::size_t b = 0; b < k->at(rows).size(); ++b)
-                    if (std::isfinite(k->at(rows).at(b).as_number()))
-                      K.push_back(k->at(rows).at(b).as_number());
-                }
-          }
-        catch (std::runtime_error &e)
-          {
-            throw io::InputError(section, "Stiffness file", file,
-                                 "a rod_cross_section summary.json (" + std::string(e.what()) + ")");
-          }
-        if (K.size() != 36 || rows != 6 || non_square > 0)
-          throw io::InputError(section, "Stiffness file", file,
-                               "a rod_cross_section summary.json with a 6x6 \"stiffness\" of "
-                               "finite numbers (found " + std::to_string(K.size()) +
-                                 " numbers in " + std::to_string(rows) + " rows)");
-        return K;
-      }
       /// A stiffness from a part-1 summary.json: its diagonal, the
       /// symmetric part of its couplings, and the largest coupling
       /// |K_ab| / sqrt(K_aa K_bb).
@@ -73,7 +33,7 @@ namespace cosmo
       FileStiffness
       read_stiffness_file(const std::string &file, const std::string &section)
       {
-        const auto   K = read_section_stiffness(file, section);
+        const auto   K = read_summary_stiffness(file, section, "Stiffness file");
         FileStiffness rim;
         // The full matrix: its symmetric part (a summary's K is symmetric
         // to round-off), and how much its couplings weigh.
@@ -98,28 +58,12 @@ namespace cosmo
         // Positive definite: Cholesky (a stable rim needs it; a failure names the pivot).
         // (Non-positive diagonals are left to the application's check of
         // the stiffnesses, plate_rod's check_rim_stiffness, which names them.)
-        std::array<std::array<double, 6>, 6> L{};
         const bool positive_diagonal =
           std::all_of(rim.diagonal.begin(), rim.diagonal.end(), [](double k) { return k > 0; });
-        for (unsigned int j = 0; positive_diagonal && j < 6; ++j)
-          {
-            double d = K[7 * j];
-            for (unsigned int k = 0; k < j; ++k)
-              d -= L[j][k] * L[j][k];
-            if (!(d > 1e-12 * K[7 * j]))
-              throw io::InputError(section, "Stiffness file", file,
-                                   "a positive definite 6x6 stiffness (its leading " +
-                                     std::to_string(j + 1) + "x" + std::to_string(j + 1) +
-                                     " block is not)");
-            L[j][j] = std::sqrt(d);
-            for (unsigned int i = j + 1; i < 6; ++i)
-              {
-                double v = 0.5 * (K[6 * i + j] + K[6 * j + i]);
-                for (unsigned int k = 0; k < j; ++k)
-                  v -= L[i][k] * L[j][k];
-                L[i][j] = v / L[j][j];
-              }
-          }
+        if (const unsigned int j = positive_diagonal ? indefinite_leading_block(K) : 0)
+          throw io::InputError(section, "Stiffness file", file,
+                               "a positive definite 6x6 stiffness (its leading " + std::to_string(j) + "x" +
+                                 std::to_string(j) + " block is not)");
         rim.largest_coupling = coupling;
         return rim;
       }

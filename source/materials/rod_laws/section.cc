@@ -3,6 +3,7 @@
 #include <cosmo/io/output.h>
 #include <cosmo/io/parameters.h>
 #include <cosmo/materials/rod_laws/section.h>
+#include <cosmo/materials/section_stiffness.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,30 +59,6 @@ namespace cosmo
                                    io::format_number(r.stiffness[7 * k]));
       }
 
-      /// Positive definite by Cholesky (false at the first non-positive pivot).
-      bool
-      positive_definite(const std::array<double, 36> &K)
-      {
-        std::array<double, 36> L{};
-        for (unsigned int j = 0; j < 6; ++j)
-          {
-            double d = K[7 * j];
-            for (unsigned int k = 0; k < j; ++k)
-              d -= L[6 * j + k] * L[6 * j + k];
-            if (!(d > 1e-12 * std::abs(K[7 * j])))
-              return false;
-            L[7 * j] = std::sqrt(d);
-            for (unsigned int i = j + 1; i < 6; ++i)
-              {
-                double v = K[6 * i + j];
-                for (unsigned int k = 0; k < j; ++k)
-                  v -= L[6 * i + k] * L[6 * j + k];
-                L[6 * i + j] = v / L[7 * j];
-              }
-          }
-        return true;
-      }
-
       std::vector<std::string>
       split_csv(const std::string &line)
       {
@@ -119,15 +96,7 @@ namespace cosmo
               r.strains[k]    = number(summary.find("strains"), strain_names[k]);
               r.resultants[k] = number(summary.find("resultants"), resultant_names[k]);
             }
-          const io::JSON *K    = summary.find("stiffness");
-          unsigned int    read = 0;
-          if (K && K->is_array() && K->size() == 6)
-            for (unsigned int a = 0; a < 6; ++a)
-              for (unsigned int b = 0; b < 6 && K->at(a).size() == 6; ++b, ++read)
-                r.stiffness[6 * a + b] = K->at(a).at(b).as_number();
-          if (read != 36 || !std::all_of(r.stiffness.begin(), r.stiffness.end(), [](double v) { return std::isfinite(v); }))
-            throw io::InputError(section, entry, file,
-                                 "a rod_cross_section summary.json with a 6x6 \"stiffness\" of finite numbers");
+          r.stiffness = read_summary_stiffness(file, section, entry);
         }
       catch (io::InputError &)
         {
@@ -293,9 +262,9 @@ namespace cosmo
       };
       for (unsigned int k = 0; k < 6; ++k)
         strain_curves[k] = curve([k](const SectionResult &m) { return m.strains[k]; });
-      // The symmetric part: a summary's K is symmetric to round-off.
+      // The symmetric part (a summary's K is symmetric to round-off), upper triangle.
       for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = 0; b < 6; ++b)
+        for (unsigned int b = a; b < 6; ++b)
           stiffness_curves[6 * a + b] =
             curve([a, b](const SectionResult &m) { return 0.5 * (m.stiffness[6 * a + b] + m.stiffness[6 * b + a]); });
     }
@@ -312,7 +281,7 @@ namespace cosmo
             const double p = i + 1 < members.size() ?
                                members[i].parameter + j * (members[i + 1].parameter - members[i].parameter) / 16 :
                                members[i].parameter;
-            if (!positive_definite(member_at(std::clamp(p, p0, p1)).stiffness))
+            if (indefinite_leading_block(stiffness_at(std::clamp(p, p0, p1))) != 0)
               throw io::InputError(section_name, "Section file", origin,
                                    "sections whose 6x6 stiffness is positive definite, and between them "
                                    "(not at p = " + io::format_number(p) +
@@ -326,8 +295,8 @@ namespace cosmo
       return {members.front().parameter, members.back().parameter};
     }
 
-    SectionResult
-    SectionRodLaw::member_at(const double p) const
+    void
+    SectionRodLaw::check_range(const double p) const
     {
       const auto [p0, p1] = range();
       // A family of one section is that section for every p.
@@ -336,12 +305,28 @@ namespace cosmo
                             " is outside the family's range [" + io::format_number(p0) + ", " +
                             io::format_number(p1) + "] (" + section_name + "/Section parameter = " +
                             parameter_text + ", sections of " + origin + ")");
+    }
+
+    std::array<double, 36>
+    SectionRodLaw::stiffness_at(const double p) const
+    {
+      // The upper triangle's curves, mirrored: symmetric by construction.
+      check_range(p);
+      std::array<double, 36> K;
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int b = a; b < 6; ++b)
+          K[6 * a + b] = K[6 * b + a] = stiffness_curves[6 * a + b].value(p);
+      return K;
+    }
+
+    SectionResult
+    SectionRodLaw::member_at(const double p) const
+    {
       SectionResult r;
       r.parameter = p;
+      r.stiffness = stiffness_at(p);
       for (unsigned int k = 0; k < 6; ++k)
         r.strains[k] = strain_curves[k].value(p);
-      for (unsigned int k = 0; k < 36; ++k)
-        r.stiffness[k] = stiffness_curves[k].value(p);
       return r;
     }
 
@@ -363,23 +348,19 @@ namespace cosmo
                                          std::array<double, 6> &      dW,
                                          std::array<double, 36> &     ddW) const
     {
-      // dW = K(p) e, W = 1/2 e . K(p) e, ddW = K(p).
-      std::array<double, 36> K;
-      if (members.size() == 1)
-        K = members[0].stiffness;
-      else
-        K = member_at(p).stiffness;
-      W = 0;
+      // dW = K(p) e, W = 1/2 e . K(p) e, ddW = K(p): only the stiffness is
+      // interpolated here (the natural strains were, once, for the state).
+      const std::array<double, 36> K = stiffness_at(p);
+      W                              = 0;
       for (unsigned int i = 0; i < 6; ++i)
         {
           dW[i] = 0;
           for (unsigned int j = 0; j < 6; ++j)
-            dW[i] += 0.5 * (K[6 * i + j] + K[6 * j + i]) * e[j];
+            dW[i] += K[6 * i + j] * e[j];
           W += 0.5 * dW[i] * e[i];
         }
       if (with_hessian)
-        for (unsigned int k = 0; k < 36; ++k)
-          ddW[k] = 0.5 * (K[k] + K[6 * (k % 6) + k / 6]);
+        ddW = K;
     }
 
     double
@@ -391,7 +372,11 @@ namespace cosmo
     std::optional<std::array<double, 6>>
     SectionRodLaw::natural_strains_at(const double p) const
     {
-      return members.size() == 1 ? members[0].strains : member_at(p).strains;
+      check_range(p);
+      std::array<double, 6> xi;
+      for (unsigned int k = 0; k < 6; ++k)
+        xi[k] = strain_curves[k].value(p);
+      return xi;
     }
 
     std::string

@@ -113,6 +113,9 @@ namespace cosmo
       /// The natural strains and stiffness at p (LawRangeError outside the range).
       SectionResult
       member_at(double p) const;
+      /// The stiffness alone at p (LawRangeError outside the range): what the energy needs.
+      std::array<double, 36>
+      stiffness_at(double p) const;
       /// The family's range [p_min, p_max] (one value for one section).
       std::pair<double, double>
       range() const;
@@ -128,10 +131,13 @@ namespace cosmo
       unsigned int                       holes = 0;
       /// Per natural strain and per stiffness entry (upper triangle), over p.
       std::array<base::MonotoneCubic, 6>  strain_curves;
-      std::array<base::MonotoneCubic, 36> stiffness_curves;
+      std::array<base::MonotoneCubic, 36> stiffness_curves; ///< upper triangle (a <= b) used
 
       void
       build_curves();
+      /// LawRangeError unless p lies in the family's range (any p for one section).
+      void
+      check_range(double p) const;
       /// io::InputError unless K(p) is positive definite between the members.
       void
       check_positive_definite() const;
