@@ -7,6 +7,7 @@
 
 #include "rod_problem.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cosmo
@@ -275,6 +276,37 @@ namespace cosmo
         }
     }
 
+    double
+    RodProblem::add_contact(const Vector<double> &X, Vector<double> &R, const bool jacobian)
+    {
+      // Each pair's E(x_i, x_j) of the positions, whose DoFs are the
+      // displacements: its gradient (g, -g) and Hessian [[K, -K], [-K, K]]
+      // on the free ones.
+      double energy = 0;
+      for (const auto &term : contact->terms(node_positions(X)))
+        {
+          energy += term.energy;
+          const std::array<unsigned int, 2> nodes{{term.i, term.j}};
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                const auto row = node_dofs[nodes[a]][c];
+                if (constraints.is_constrained(row))
+                  continue;
+                R[row] += (a == 0 ? 1. : -1.) * term.gradient_i[c];
+                if (jacobian)
+                  for (unsigned int b = 0; b < 2; ++b)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        const auto column = node_dofs[nodes[b]][d];
+                        if (!constraints.is_constrained(column))
+                          system.matrix.add(row, column, (a == b ? 1. : -1.) * term.hessian[c][d]);
+                      }
+              }
+        }
+      return energy;
+    }
+
     int
     RodProblem::assemble(const Vector<double> &U, const double t, Vector<double> *R, const bool jacobian)
     {
@@ -288,6 +320,16 @@ namespace cosmo
       if (!R)
         R = &jacobian_residual;
       R->reinit(n_unknowns());
+      if (jacobian && contact)
+        {
+          // A pair that touches and that the pattern does not hold: the
+          // pattern is made again with the pairs closer than 3a, a margin
+          // for the next steps (and MUMPS analyses it again).
+          const auto x        = node_positions(X);
+          const auto touching = contact->pairs_within(x, 2 * contact->radius());
+          if (!std::includes(contact_pattern.begin(), contact_pattern.end(), touching.begin(), touching.end()))
+            make_pattern(contact->pairs_within(x, 3 * contact->radius()));
+        }
       if (jacobian)
         system.clear();
       assembly::AssemblyTarget target;
@@ -295,11 +337,13 @@ namespace cosmo
       target.jacobian    = jacobian;
       target.system      = &system;
       target.constraints = &constraints;
-      const auto totals  = assembly::EnergyAssembler<1, 3>::assemble(dof_handler, worker, Scratch(),
+      auto totals        = assembly::EnergyAssembler<1, 3>::assemble(dof_handler, worker, Scratch(),
                                                                     assembly::CellContribution(n_local, 0, 13),
                                                                     target);
       if (!totals.admissible)
         return 1;
+      if (contact)
+        totals.scalars[0] += add_contact(X, *R, jacobian);
       if (!std::isfinite(totals.scalars[0]))
         return 1;
       // (kept for the drivers' next request and the state's description)

@@ -176,6 +176,21 @@ namespace cosmo
       prm.enter_subsection("Material");
       materials::declare_rod_law_parameters(prm);
       prm.leave_subsection();
+      prm.enter_subsection("Contact");
+      prm.declare_entry("Radius", "0", Patterns::Double(0),
+                        "The radius a of the rod's body for self-contact; 0: the rod passes "
+                        "through itself. Two points of the centreline farther apart than "
+                        "pi a along the rod repel each other when closer than 2a in space, "
+                        "with the energy (k/3)(2a - d)^3 per length squared "
+                        "(doc/theory-rod.md 9). At least twice the element length L/N; "
+                        "a/4 or less is recommended (a node spacing of a lets the "
+                        "contact force jump as the strands slide, and Newton stall).");
+      prm.declare_entry("Stiffness", "100", Patterns::Double(0),
+                        "The penalty's k in units of B/a^6 (B the law's largest bending "
+                        "stiffness): two strands crossing at right angles, pressed by a "
+                        "force F, overlap by a (3 F a^2/(4 pi Stiffness B))^(1/3); 100 "
+                        "overlaps by 3 % of a at F = 1e-2 B/a^2.");
+      prm.leave_subsection();
       prm.leave_subsection();
       declare_end(prm, "End A", "clamped");
       declare_end(prm, "End B", "free");
@@ -213,6 +228,20 @@ namespace cosmo
       distributed_force = parse_expression(prm, "Rod", "Distributed force", 3);
       seam_twist        = parse_expression(prm, "Rod", "Ring twist", 1);
       rotation_limit    = prm.get_double("Largest element rotation") * M_PI / 180.;
+      prm.enter_subsection("Contact");
+      contact_radius    = prm.get_double("Radius");
+      contact_stiffness = prm.get_double("Stiffness");
+      // The nodes are the contact's quadrature points: a pair's potential,
+      // 2a wide, needs a few of them across it.
+      if (contact_radius > 0 && contact_radius < 2 * length / n_elements)
+        throw io::InputError("Rod/Contact", "Radius", prm.get("Radius"),
+                             "0 (no contact) or at least twice the element length L/N = " +
+                               std::to_string(length / n_elements) +
+                               " (the contact is integrated by the nodes; h = a/4 is "
+                               "recommended: refine the mesh)");
+      if (contact_radius > 0 && !(contact_stiffness > 0))
+        throw io::InputError("Rod/Contact", "Stiffness", prm.get("Stiffness"), "positive with a contact radius");
+      prm.leave_subsection();
       prm.enter_subsection("Material");
       std::shared_ptr<materials::RodLaw> new_law = materials::create_rod_law(prm, "Rod/Material");
       prm.leave_subsection();

@@ -80,6 +80,8 @@ namespace cosmo
       std::shared_ptr<const materials::RodLaw> law;
       std::array<RodEnd, 2>                    ends;
       double       rotation_limit = 0.75 * M_PI; ///< largest relative rotation of an element
+      double       contact_radius = 0;           ///< self-contact's radius a (0: none)
+      double       contact_stiffness = 100;      ///< k a^6 / B, dimensionless (doc/theory-rod.md 9)
       double       start          = 0;           ///< the load parameter at the path's start
 
       solvers::NewtonSettings    newton_settings;

@@ -59,6 +59,16 @@ namespace cosmo
           s.writhe = kinematics::writhe(x);
           s.link   = evaluate(seam_twist, 0, t)[0];
         }
+      if (contact)
+        {
+          const auto x    = node_positions(X);
+          s.contact_gap   = contact->smallest_gap(x);
+          for (const auto &term : contact->terms(x))
+            {
+              ++s.contact_pairs;
+              s.contact_force += term.gradient_i.norm();
+            }
+        }
       return s;
     }
 
@@ -112,6 +122,12 @@ namespace cosmo
       if (ring)
         for (const char *n : {"link", "twist", "writhe"})
           c.emplace_back(n, "turns");
+      if (contact_radius > 0)
+        {
+          c.emplace_back("contact_gap", "");
+          c.emplace_back("contact_pairs", "");
+          c.emplace_back("contact_force", "");
+        }
       c.emplace_back("n_negative_eigenvalues", "");
       return c;
     }
@@ -140,6 +156,8 @@ namespace cosmo
       steps_row.push_back(s.max_rotation);
       if (ring)
         steps_row.insert(steps_row.end(), {s.link, s.twist, s.writhe});
+      if (contact)
+        steps_row.insert(steps_row.end(), {s.contact_gap, double(s.contact_pairs), s.contact_force});
       steps_row.push_back(s.n_negative);
     }
 

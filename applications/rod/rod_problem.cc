@@ -75,10 +75,21 @@ namespace cosmo
       for (const auto &p : prescribed_values(start))
         constraints.add_line(p.first);
       constraints.close();
-      DynamicSparsityPattern dsp(dof_handler.n_dofs());
-      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
       system.set_nonzero_diagonal(true);
-      system.reinit(dsp, 0);
+      contact.reset();
+      if (contact_radius > 0)
+        {
+          // The nodes' trapezoidal weights and arclengths, and k = Stiffness B/a^6.
+          std::vector<double> w(n_nodes(), element_length()), s(n_nodes());
+          if (!ring)
+            w.front() = w.back() = 0.5 * element_length();
+          for (unsigned int k = 0; k < n_nodes(); ++k)
+            s[k] = k * element_length();
+          contact = std::make_unique<assembly::SelfContact>(
+            contact_radius, contact_stiffness * largest_moment_stiffness() / std::pow(contact_radius, 6), w, s,
+            ring ? length : 0.);
+        }
+      make_pattern({});
       residuals.clear();
       solution = configuration(reference, start);
       load_parameter = start;
@@ -239,6 +250,37 @@ namespace cosmo
     RodProblem::position(const Vector<double> &X, const unsigned int node) const
     {
       return reference_positions[node] + displacement(X, node);
+    }
+
+    std::vector<Tensor<1, 3>>
+    RodProblem::node_positions(const Vector<double> &X) const
+    {
+      std::vector<Tensor<1, 3>> x(n_nodes());
+      for (unsigned int k = 0; k < n_nodes(); ++k)
+        x[k] = position(X, k);
+      return x;
+    }
+
+    void
+    RodProblem::make_pattern(const std::vector<std::pair<unsigned int, unsigned int>> &pairs)
+    {
+      // The elements' couplings, and for each contact pair the position
+      // blocks of its two nodes (the prescribed rows and columns condensed).
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      for (const auto &p : pairs)
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const auto i = node_dofs[p.first][c], j = node_dofs[p.second][d];
+              if (!constraints.is_constrained(i) && !constraints.is_constrained(j))
+                {
+                  dsp.add(i, j);
+                  dsp.add(j, i);
+                }
+            }
+      system.reinit(dsp, 0);
+      contact_pattern = pairs;
     }
 
     Tensor<1, 3>

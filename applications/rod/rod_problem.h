@@ -10,6 +10,7 @@
 
 #include <cosmo/assembly/bordered_system.h>
 #include <cosmo/assembly/energy_assembler.h>
+#include <cosmo/assembly/self_contact.h>
 #include <cosmo/io/output.h>
 #include <cosmo/io/run_record.h>
 #include <cosmo/kinematics/rod_element.h>
@@ -54,6 +55,10 @@ namespace cosmo
       double                max_rotation = 0; ///< largest relative rotation of an element
       /// A ring's link, twist and writhe (doc/theory-rod.md 8); NaN for an open rod.
       double                link = NAN, twist = NAN, writhe = NAN;
+      /// With self-contact: the smallest distance minus 2a of the pairs that may touch, and how many touch.
+      double                contact_gap   = NAN;
+      unsigned int          contact_pairs = 0;
+      double                contact_force = 0; ///< the sum of the touching pairs' forces
       int                   n_negative   = -1;
       unsigned int          branch       = 0;
     };
@@ -124,6 +129,12 @@ namespace cosmo
       {
         return system.n_negative_eigenvalues({}, 0);
       }
+      /// dst = J src with the last assembled Hessian (tests of the assembly).
+      void
+      jacobian_vmult(const Vector<double> &src, Vector<double> &dst) const
+      {
+        system.vmult(dst, src, {});
+      }
       double
       jacobian_abs_form(const Vector<double> &v) const override
       {
@@ -144,6 +155,9 @@ namespace cosmo
       /// which is what a state's vector holds) and quaternion in a configuration.
       Tensor<1, 3>
       position(const Vector<double> &X, unsigned int node) const;
+      /// Every node's position in a configuration.
+      std::vector<Tensor<1, 3>>
+      node_positions(const Vector<double> &X) const;
       /// Node k's displacement in a state or a mode.
       Tensor<1, 3>
       displacement(const Vector<double> &X, unsigned int node) const;
@@ -202,6 +216,17 @@ namespace cosmo
       Vector<double>            reference;
       std::vector<Tensor<1, 3>> reference_positions;
       assembly::BorderedSystem  system;
+      /// Self-contact (null without): the pairs of nodes the matrix's pattern
+      /// holds, sorted; the pattern is made again when a pair not in it
+      /// touches (doc/theory-rod.md 9).
+      std::unique_ptr<assembly::SelfContact>              contact;
+      std::vector<std::pair<unsigned int, unsigned int>> contact_pattern;
+      /// The Hessian's pattern: the elements' and the pairs' position blocks.
+      void
+      make_pattern(const std::vector<std::pair<unsigned int, unsigned int>> &pairs);
+      /// Adds the contact's gradient (and Hessian) at X to R (and the matrix); returns its energy.
+      double
+      add_contact(const Vector<double> &X, Vector<double> &R, bool jacobian);
       solvers::FactorizationMark factorization;
       solvers::ResidualCache    residuals;
       /// Why the last refused state was refused by the law (thread-safe: noted by the assembly's workers).

@@ -29,6 +29,25 @@ namespace cosmo
         return a;
       }
 
+      /// A ring's link, twist and writhe, and the self-contact's gap, pairs and force, where there are.
+      void
+      add_topology(io::JSON &x, const RodState &s)
+      {
+        if (!std::isnan(s.link))
+          {
+            x["link"]   = s.link;
+            x["twist"]  = s.twist;
+            x["writhe"] = s.writhe;
+          }
+        if (!std::isnan(s.contact_gap))
+          {
+            // (+infinity where no pair is within 4a: JSON has no infinity)
+            x["contact_gap"]   = std::isfinite(s.contact_gap) ? io::JSON(s.contact_gap) : io::JSON();
+            x["contact_pairs"] = s.contact_pairs;
+            x["contact_force"] = s.contact_force;
+          }
+      }
+
       std::string
       support_name(const RodEnd &e)
       {
@@ -190,6 +209,9 @@ namespace cosmo
           w.put(s.max_rotation);
           for (const double x : {s.link, s.twist, s.writhe})
             w.put(x);
+          if (problem.contact_radius > 0)
+            for (const double x : {s.contact_gap, double(s.contact_pairs), s.contact_force})
+              w.put(x);
           w.put(s.n_negative);
           w.put(s.branch);
         }
@@ -218,6 +240,12 @@ namespace cosmo
           s.max_rotation = r.get_double();
           for (double *x : {&s.link, &s.twist, &s.writhe})
             *x = r.get_double();
+          if (problem.contact_radius > 0)
+            {
+              s.contact_gap   = r.get_double();
+              s.contact_pairs = static_cast<unsigned int>(r.get_double());
+              s.contact_force = r.get_double();
+            }
           s.n_negative   = r.get_int();
           s.branch       = r.get_unsigned();
         }
@@ -261,12 +289,7 @@ namespace cosmo
       x["loads_A"]           = vector_json(s.end_loads[0].data(), 6);
       x["loads_B"]           = vector_json(s.end_loads[1].data(), 6);
       x["end_position"]      = vector_json(&s.end_position[0], 3);
-      if (problem.ring)
-        {
-          x["link"]   = s.link;
-          x["twist"]  = s.twist;
-          x["writhe"] = s.writhe;
-        }
+      add_topology(x, s);
       solvers::add_location_to_json(e, x);
       return x;
     }
@@ -305,12 +328,7 @@ namespace cosmo
           last["loads_B"]            = vector_json(s.end_loads[1].data(), 6);
           last["max_element_rotation"] = s.max_rotation;
           last["n_negative_eigenvalues"] = s.n_negative;
-          if (problem.ring)
-            {
-              last["link"]   = s.link;
-              last["twist"]  = s.twist;
-              last["writhe"] = s.writhe;
-            }
+          add_topology(last, s);
           j["last_state"]            = last;
         }
       io::JSON ev = io::JSON::array();

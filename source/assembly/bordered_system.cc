@@ -19,6 +19,9 @@ namespace cosmo
       distributed_solver.reset(); // (serial now, whatever it was before)
       pattern.copy_from(dsp);
       matrix.reinit(pattern);
+      // (a pattern copied into the same object may keep its address and its
+      // number of entries: its analysis must not be taken for the old one's)
+      direct_solver.forget_analysis();
       border_columns.assign(n_b, Vector<double>(pattern.n_rows()));
       sensitivities.assign(n_b, Vector<double>(pattern.n_rows()));
       border_block.reinit(n_b, n_b);

@@ -156,6 +156,17 @@ namespace cosmo
         analysed_pattern = nullptr;
       }
 
+      /**
+       * The next factorization analyses its matrix's pattern again: for a
+       * pattern rebuilt in place (the rod's self-contact pairs), whose
+       * address and perhaps its number of entries are the old one's.
+       */
+      void
+      forget_analysis()
+      {
+        analysed_pattern = nullptr;
+      }
+
       /// Solve in place, A x = b.
       void
       solve(Vector<double> &rhs_and_solution) const;
