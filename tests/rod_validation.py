@@ -38,6 +38,12 @@ Cases:
           35 % end shortening: the end load against Euler's elastica,
           P = 4 K(k)^2 B/L^2 at D/L = 2 E(k)/K(k) - 1 (complete elliptic
           integrals), converging at second order on 20, 40, 80 elements.
+  figure_eight Michell's ring with self-contact: without it the subcritical
+          branch passes through itself (Tw + Wr - Lk jumps by 2); with it
+          the link is conserved, the branch turns back at a fold into the
+          figure eight pressed at its crossing, and that fold tends, as the
+          radius a -> 0 (0.1, 0.05), to the zero-thickness figure eight's
+          Lk = 1.
 """
 import csv, json, math, os, subprocess, sys
 
@@ -79,7 +85,7 @@ def run(name, entries, status=0):
     the case unless the exit status is `status` (2: a path that stops)."""
     directory = os.path.join(scratch, name)
     entries = dict(entries)
-    entries["Output"] = {"Output directory": directory}
+    entries["Output"] = dict(entries.get("Output", {}), **{"Output directory": directory})
     prm = os.path.join(scratch, name + ".prm")
     open(prm, "w").write(prm_text(entries))
     r = subprocess.run([exe, "--quiet", prm], capture_output=True, text=True)
@@ -509,7 +515,64 @@ def elastica():
               math.log2(errors[k - 1] / errors[k]), 2, 0.1)
 
 
+def figure_eight():
+    # Michell's ring (isotropic, B = 1, C = 1/1.3, nearly inextensible) with
+    # a small dead load 1e-3 e3 sin 2s as the imperfection, twisted at its
+    # seam by 3 t turns: past the imperfect fold near Michell's sqrt(3) B/C
+    # turns its subcritical branch writhes while the link falls. A ring
+    # without thickness passes through itself there: its writhe jumps by
+    # -2 and Tw + Wr no longer equals the link its seam fixes. With
+    # self-contact of radius a the strands touch first, and the branch
+    # turns back at a fold into the figure eight pressed at its crossing,
+    # the link conserved. As a -> 0 that fold tends to the zero-thickness
+    # figure eight, the elastica whose crossing closes at Tw = 0, Wr = Lk =
+    # 1 (theory-rod.md 9.2): linear in a, the extrapolation from a = 0.1
+    # and 0.05 is within its a^2 term of 1 (measured with a = 0.025 on 512
+    # elements: the three folds at Lk = 1.2279, 1.1149, 1.0576 extrapolate
+    # to 1.0019 and 1.0002).
+    B, C, EA = 1.0, 1.0 / 1.3, 1e4
+    def ring(name, radius, status=0):
+        entries = {
+            "Rod": {"Length": 2 * math.pi, "Number of elements": 256, "Shape": "ring", "Ring twist": "3*t",
+                    "Distributed force": "0; 0; 1e-3*sin(2*s)",
+                    "Material": {"Law": "quadratic", "Stiffnesses": "%r, %r, %r, %r, %r, %r" % (EA, EA, EA, B, B, C)},
+                    "Contact": {"Radius": radius}},
+            "Path following": {"Method": "arclength"},
+            "Arclength continuation": {"Initial step": 0.02, "Maximum step": 0.05, "Parameter range": "0, 1",
+                                       "Maximum number of steps": 160, "Switch branches": "false"},
+            "Output": {"Tube radius": 0}}
+        s = run(name, entries, status)
+        rows = list(csv.DictReader(open(os.path.join(scratch, name, "steps.csv"))))
+        gap = [abs(float(r["link [turns]"]) - float(r["twist [turns]"]) - float(r["writhe [turns]"])) for r in rows]
+        return s, rows, gap
+    # Without contact: the ring passes through itself.
+    s, rows, gap = ring("passes", 0)
+    check("Michell's imperfect fold within 0.5 % below sqrt(3) B/C turns",
+          3 * s["events"][0]["t"] / (math.sqrt(3) * B / C) - 1, -0.0025, 0.0025)
+    k = next(i for i, g in enumerate(gap) if g > 1)
+    check("without contact, |Tw + Wr - Lk| jumps to 2 (passage)", gap[k], 2, 1e-9)
+    check("  and is 0 up to the passage", max(gap[:k]), 0, 1e-9)
+    passage = [float(rows[i]["link [turns]"]) for i in (k, k - 1)]
+    print("  passage between Lk = %.4f and %.4f" % tuple(passage))
+    folds = []
+    for radius in (0.1, 0.05):
+        s, rows, gap = ring("contact-%g" % radius, radius)
+        check("a = %g: Tw + Wr = Lk at all %d states" % (radius, len(rows)), max(gap), 0, 1e-9)
+        fold = [e for e in s["events"] if e["kind"] == "fold" and e.get("contact_pairs", 0) > 0]
+        check("a = %g: a fold with the strands in contact" % radius, len(fold) >= 1, True, 0)
+        if not fold:
+            return
+        e = fold[0]
+        print("  a = %g: contact fold at Lk = %.6f (Tw %.4f, Wr %.4f), %d pairs, force %.3g" %
+              (radius, e["link"], e["twist"], e["writhe"], e["contact_pairs"], e["contact_force"]))
+        check("a = %g: contact restabilizes (negative eigenvalues 1 -> 0)" % radius,
+              e["n_negative_before"] - e["n_negative_after"], 1, 0)
+        check("a = %g: the fold before the zero-thickness passage" % radius, e["link"] > passage[1], True, 0)
+        folds.append(e["link"])
+    check("a -> 0: the contact fold extrapolates to Lk = 1", 2 * folds[1] - folds[0], 1, 0.01)
+
+
 {"helix": helix, "section": section, "table": table, "elastica": elastica, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
- "growth": growth, "michell": michell, "link": link, "study": study, "loads": loads}[case]()
+ "growth": growth, "michell": michell, "figure_eight": figure_eight, "link": link, "study": study, "loads": loads}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)
