@@ -107,5 +107,21 @@ main()
       check_close("trefoil " + std::to_string(n) + ": Tw + Wr = Lk", tw + wr, std::round(lk), 0, 1e-9);
       check_close("trefoil " + std::to_string(n) + ": writhe not small", std::abs(wr) > 1 ? 1 : 0, 1, 0);
     }
+  // An open straight polygon whose normal turns by 2.5 turns in 100 equal
+  // steps: Tw = 2.5 (each step's angle below pi, so atan2 sees it whole);
+  // bent into a planar arc with the normal kept in the plane: Tw = 0.
+  {
+    Curve t(101), m(101), arc_t(101), arc_m(101);
+    for (unsigned int k = 0; k <= 100; ++k)
+      {
+        const double phi = 2.5 * 2 * M_PI * k / 100, s = 0.01 * k;
+        t[k]     = point(0, 0, 1);
+        m[k]     = point(std::cos(phi), std::sin(phi), 0);
+        arc_t[k] = point(std::cos(s), std::sin(s), 0);
+        arc_m[k] = point(-std::sin(s), std::cos(s), 0);
+      }
+    check_close("open straight polygon turned 2.5 times: Tw", open_twist(t, m), 2.5, 0, 1e-12);
+    check_close("open planar arc, normal in the plane: Tw", open_twist(arc_t, arc_m), 0, 0, 1e-12);
+  }
   return cosmo_test::report();
 }

@@ -202,6 +202,11 @@ namespace cosmo
       prm.declare_entry("Output directory", "output/rod", Patterns::Anything(),
                         "Directory for parameters.prm, summary.json, steps.csv, rod-NNNN.vtu "
                         "and log.txt (created if needed).");
+      prm.declare_entry("Link, twist and writhe", "auto", Patterns::Selection("auto|always|never"),
+                        "Of a ring, or of a rod clamped at both ends whose clamps lie on the "
+                        "line of their tangents (steps.csv, summary.json; doc/theory-rod.md 8). "
+                        "The writhe is a double sum over the elements, O(N^2): auto computes "
+                        "them up to 2000 elements (0.1 s a state), always and never whatever N.");
       prm.declare_entry("Tube radius", "0.02", Patterns::Double(0),
                         "The rod drawn as a body: tube-NNNN.vtu (tube.pvd) with each converged "
                         "state's rod-NNNN.vtu, a tube about the centreline of this radius per "
@@ -262,6 +267,8 @@ namespace cosmo
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       tube_radius      = prm.get_double("Tube radius");
+      const std::string topology_entry = prm.get("Link, twist and writhe");
+      topology = topology_entry == "always" || (topology_entry == "auto" && n_elements <= 2000);
       prm.leave_subsection();
       compute_law_input(*new_law, output_directory);
       law = new_law;

@@ -89,6 +89,9 @@ namespace cosmo
       solvers::ContinuationSettings continuation_settings;
       std::string                output_directory;
       double                     tube_radius = 0.02; ///< of the tube drawn as the body, per length (0: none)
+      /// Link, twist and writhe of a ring or a rod clamped at both ends: the
+      /// writhe costs O(N^2), so 'auto' computes them up to 2000 elements.
+      bool                       topology = true;
     };
   } // namespace rod
 } // namespace cosmo

@@ -48,7 +48,7 @@ namespace cosmo
                                                       std::sqrt(strain[3] * strain[3] + strain[4] * strain[4] +
                                                                 strain[5] * strain[5]));
         }
-      if (ring)
+      if (ring && topology)
         {
           std::vector<Tensor<1, 3>> x, m;
           const Tensor<1, 3>        closure = ribbon(X, t, x, m);
@@ -59,6 +59,8 @@ namespace cosmo
           s.writhe = kinematics::writhe(x);
           s.link   = evaluate(seam_twist, 0, t)[0];
         }
+      else if (reports_link())
+        clamped_link(X, t, s);
       if (contact)
         {
           const auto x    = node_positions(X);
@@ -108,6 +110,65 @@ namespace cosmo
       return closure;
     }
 
+    void
+    RodProblem::clamped_link(const Vector<double> &X, const double t, RodState &s) const
+    {
+      // The clamps' frames continue the rod as segments along the line
+      // joining them; the writhe is that of the rod closed by a planar
+      // rectangle far from it, out along that line from both ends. The
+      // closure's frame, transported round it, comes back unturned, so Tw +
+      // Wr is the turns the clamps impose, conserved unless the rod passes
+      // through itself (theory-rod.md 8.1).
+      std::vector<Tensor<1, 3>> x, m;
+      ribbon(X, t, x, m);
+      const unsigned int N    = n_elements;
+      Tensor<1, 3>       axis = x[N] - x[0];
+      if (!(axis.norm() > 0))
+        return;
+      axis /= axis.norm();
+      std::array<Tensor<1, 3>, 2> d1;
+      for (const unsigned int end : {0u, 1u})
+        {
+          const Tensor<2, 3> R = kinematics::quaternion_rotation(quaternion(X, end * N));
+          Tensor<1, 3>       d3;
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              d1[end][i] = R[i][0];
+              d3[i]      = R[i][2];
+            }
+          if (d3 * axis < 1 - 1e-9)
+            return; // (an end not along the line of the clamps: no closure)
+          d1[end] -= (d1[end] * axis) * axis;
+          d1[end] /= d1[end].norm();
+        }
+      std::vector<Tensor<1, 3>> tangents{axis}, normals{d1[0]};
+      for (unsigned int e = 0; e < N; ++e)
+        {
+          tangents.push_back((x[e + 1] - x[e]) / (x[e + 1] - x[e]).norm());
+          normals.push_back(m[e]);
+        }
+      tangents.push_back(axis);
+      normals.push_back(d1[1]);
+      s.twist = kinematics::open_twist(tangents, normals);
+      // Any normal to the axis for the rectangle's plane; far enough that
+      // the rod, within L of its ends, cannot cross it.
+      unsigned int k = 0;
+      for (unsigned int i = 1; i < 3; ++i)
+        if (std::abs(axis[i]) < std::abs(axis[k]))
+          k = i;
+      Tensor<1, 3> p;
+      p[k] = 1;
+      p -= (p * axis) * axis;
+      p /= p.norm();
+      const double far = 10 * (length + (x[N] - x[0]).norm());
+      x.push_back(x[N] + far * axis);
+      x.push_back(x[N] + far * (axis + p));
+      x.push_back(x[0] + far * (p - axis));
+      x.push_back(x[0] - far * axis);
+      s.writhe = kinematics::writhe(x);
+      s.link   = s.twist + s.writhe;
+    }
+
     std::vector<std::pair<std::string, std::string>>
     RodProblem::quantity_columns() const
     {
@@ -119,7 +180,7 @@ namespace cosmo
           for (const char *x : {"x", "y", "z"})
             c.emplace_back(std::string(q) + "_" + end + "_" + x, "");
       c.emplace_back("max_element_rotation", "rad");
-      if (ring)
+      if (reports_link())
         for (const char *n : {"link", "twist", "writhe"})
           c.emplace_back(n, "turns");
       if (contact_radius > 0)
@@ -154,7 +215,7 @@ namespace cosmo
            << record.progress(solvers::path_fraction(report, arclength_settings), report.step);
       record.say(line.str());
       steps_row.push_back(s.max_rotation);
-      if (ring)
+      if (reports_link())
         steps_row.insert(steps_row.end(), {s.link, s.twist, s.writhe});
       if (contact)
         steps_row.insert(steps_row.end(), {s.contact_gap, double(s.contact_pairs), s.contact_force});

@@ -177,6 +177,17 @@ namespace cosmo
       /// continues across the seam (turned by its twist).
       Tensor<1, 3>
       ribbon(const Vector<double> &X, double t, std::vector<Tensor<1, 3>> &x, std::vector<Tensor<1, 3>> &m) const;
+      /// A ring, or a rod clamped at both ends: link, twist and writhe are reported ('Link, twist and writhe').
+      bool
+      reports_link() const
+      {
+        return topology && (ring || (ends[0].support == RodEnd::Support::clamped &&
+                                     ends[1].support == RodEnd::Support::clamped));
+      }
+      /// A clamped rod's twist, writhe and link (Tw + Wr) at X, if its ends'
+      /// tangents lie along the line joining them (doc/theory-rod.md 8.1).
+      void
+      clamped_link(const Vector<double> &X, double t, RodState &s) const;
       /// The state's summary (energy, end position and loads, rotations) at U.
       RodState
       describe(const Vector<double> &U, double t);

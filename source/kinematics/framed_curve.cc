@@ -59,6 +59,24 @@ namespace cosmo
       return w;
     }
 
+    namespace
+    {
+      /// The angle by which `next` is turned about t1 beyond the parallel
+      /// transport of `m` from t0 to t1 (the rotation about t0 x t1 that
+      /// takes t0 to t1, Rodrigues).
+      double
+      turn_beyond_transport(const Tensor<1, 3> &t0, const Tensor<1, 3> &t1, const Tensor<1, 3> &m,
+                            const Tensor<1, 3> &next)
+      {
+        const Tensor<1, 3> b = cross_product_3d(t0, t1);
+        const double       c = t0 * t1;
+        Tensor<1, 3>       u = m;
+        if (b.norm() > 1e-14)
+          u = u * c + cross_product_3d(b, u) + b * ((b * u) / (1 + c));
+        return std::atan2(cross_product_3d(u, next) * t1, u * next);
+      }
+    } // namespace
+
     double
     twist(const std::vector<Tensor<1, 3>> &x, const std::vector<Tensor<1, 3>> &m, const Tensor<1, 3> &closure)
     {
@@ -68,17 +86,19 @@ namespace cosmo
         {
           const unsigned int p  = (e + n - 1) % n;
           const Tensor<1, 3> t0 = unit(x[e] - x[p]), t1 = unit(x[(e + 1) % n] - x[e]);
-          // Parallel transport of m[p] from t0 to t1: the rotation about
-          // t0 x t1 that takes t0 to t1 (Rodrigues).
-          const Tensor<1, 3> b = cross_product_3d(t0, t1);
-          const double       c = t0 * t1;
-          Tensor<1, 3>       u = m[p];
-          if (b.norm() > 1e-14)
-            u = u * c + cross_product_3d(b, u) + b * ((b * u) / (1 + c));
           // Across the closure the next frame is seen turned by the seam.
           const Tensor<1, 3> next = e == 0 && closure.norm() > 0 ? closure : m[e];
-          angle += std::atan2(cross_product_3d(u, next) * t1, u * next);
+          angle += turn_beyond_transport(t0, t1, m[p], next);
         }
+      return angle / (2 * M_PI);
+    }
+
+    double
+    open_twist(const std::vector<Tensor<1, 3>> &t, const std::vector<Tensor<1, 3>> &m)
+    {
+      double angle = 0;
+      for (unsigned int e = 0; e + 1 < t.size(); ++e)
+        angle += turn_beyond_transport(t[e], t[e + 1], m[e], m[e + 1]);
       return angle / (2 * M_PI);
     }
 

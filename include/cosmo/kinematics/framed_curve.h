@@ -44,6 +44,15 @@ namespace cosmo
           const std::vector<Tensor<1, 3>> &m,
           const Tensor<1, 3> &             closure = Tensor<1, 3>());
 
+    /**
+     * Tw of an open framed polygon given by its segments' unit tangents `t`
+     * and unit normals `m` (m[e] normal to t[e]): the turns of m beyond
+     * parallel transport from each segment to the next, over 2 pi (a clamped
+     * rod's, with its ends' frames as segments along the line of the clamps).
+     */
+    double
+    open_twist(const std::vector<Tensor<1, 3>> &t, const std::vector<Tensor<1, 3>> &m);
+
     /// The Gauss linking number of two closed polygons (exact sum of solid angles).
     double
     linking_number(const std::vector<Tensor<1, 3>> &x, const std::vector<Tensor<1, 3>> &y);
