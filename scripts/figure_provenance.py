@@ -73,7 +73,7 @@ def _figures():
     f["rod_euler_clamped_bifurcation.png"] = ["parameter_files/rod/euler_clamped.prm",
                                               f"{REF}/rod_euler_clamped.output", "scripts/plot_rod.py",
                                               "scripts/plot_plate_rod.py", "scripts/plot_steps.py"]
-    for n in ["helix", "rollup", "euler_clamped", "tendril", "ribbon_rollup", "michell_figure_eight"]:
+    for n in ["helix", "rollup", "euler_clamped", "tendril", "ribbon_rollup", "michell_figure_eight", "tendril_perversion"]:
         f[f"rod_{n}.png"] = [f"parameter_files/rod/{n}.prm", f"{REF}/rod_{n}.output",
                              "scripts/render_paraview.py"]
     f["rod_tendril.png"].append("parameter_files/rod/sections/tendril_bilayer.prm")
