@@ -23,11 +23,7 @@ namespace
   Tensor<1, 3>
   point(const double x, const double y, const double z)
   {
-    Tensor<1, 3> p;
-    p[0] = x;
-    p[1] = y;
-    p[2] = z;
-    return p;
+    return Tensor<1, 3>({x, y, z});
   }
 
   /// A ring of n nodes wound twice round a torus (a (2,3) torus knot), tight enough to come near itself.
