@@ -32,4 +32,22 @@ else
 fi
 if cmp -s whole/rod.pvd run/rod.pvd; then echo "  ok    rod.pvd the uninterrupted run's"
 else echo "  FAIL  rod.pvd differs from the uninterrupted run's"; fail=1; fi
+# With self-contact: the tendril's perversion stopped by TERM at step 38,
+# just before its turns touch (step 40), resumed: the contact's pattern is
+# made in the resumed process as it was in the uninterrupted one, and the
+# runs agree (contact_gap, contact_pairs and contact_force included).
+tendril="$here/../parameter_files/rod/tendril_perversion.prm"
+with_output "$tendril" tendril_whole > tendril_whole.prm
+timeout 300 "$exe" --quiet tendril_whole.prm > tendril_whole.txt 2>&1 || { echo "  FAIL  the uninterrupted tendril failed"; exit 1; }
+with_output "$tendril" tendril_run > tendril_run.prm
+"$exe" --quiet tendril_run.prm > tendril-1.txt 2>&1 & pid=$!
+wait_for tendril_run/log.txt "^step *38 "; kill -TERM $pid; wait $pid; t1=$?
+timeout 300 "$exe" --quiet --resume tendril_run > tendril-2.txt 2>&1; t2=$?
+why=$(python3 "$here/compare_runs.py" tendril_whole tendril_run steps.csv)
+pairs=$(python3 -c "import json; print(json.load(open('tendril_run/summary.json'))['last_state']['contact_pairs'])")
+if [ "$t1 $t2" = "143 0" ] && [ -z "$why" ] && [ "$pairs" -gt 0 ]; then
+  echo "  ok    the tendril with self-contact stopped at step 38 and resumed: the uninterrupted steps.csv and summary.json ($pairs pairs touching at the end)"
+else
+  echo "  FAIL  tendril: exits $t1 $t2 (expected 143 0), $pairs pairs at the end; $why"; tail -3 tendril-2.txt; fail=1
+fi
 exit $fail
