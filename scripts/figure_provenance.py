@@ -78,6 +78,7 @@ def _figures():
                              "scripts/render_paraview.py"]
     f["rod_tendril.png"].append("parameter_files/rod/sections/tendril_bilayer.prm")
     f["rod_ribbon_rollup.png"].append("parameter_files/rod/sections/ribbon_table.prm")
+    f["rod_tendril_perversion.png"].append("parameter_files/rod/sections/tendril_disc.prm")
     return f
 
 

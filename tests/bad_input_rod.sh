@@ -64,6 +64,8 @@ expect "a part-1 file with bad input of its own" "bad_section.prm" section_neste
 printf '{"status": "converged", "strains": {"nu1": 0, "nu2": 0, "nu3": 1, "kappa1": 0, "kappa2": -0.3, "kappa3": 0}, "resultants": {"n1": 0, "n2": 0, "n3": 0, "m1": 0, "m2": 0, "m3": 0}, "stiffness": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,3,0,0,0],[0,0,0,0.8,0,0],[0,0,0,0,0.8,0],[0,0,0,0,0,0.6]]}' > one_section.json
 section_law one_section.json ' set Natural strains = 0; 0; 1; 0; 1; 0' > section_twice.prm
 expect "natural strains given beside a section's" "Natural strains" section_twice.prm
+rod ' set Natural strain imperfection = 0; 0.1*s' > imperfection.prm
+expect "an imperfection of two strains for six" "Natural strain imperfection" imperfection.prm
 # Self-contact: a radius the nodes cannot integrate (the default 40
 # elements on L = 1 need a >= 0.05), a contact without stiffness.
 rod ' subsection Contact

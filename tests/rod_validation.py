@@ -41,7 +41,7 @@ Cases:
   clamped_link a rod clamped at both ends, bowed, twisted by 3 t turns and
           shortened: Tw + Wr of the rod closed far out along its clamps'
           line equals the clamps' 3 t turns at every state.
-  perversion a tendril (natural curvature 20/L) clamped, held straight under
+  perversion a tendril on a part-1 grown disc (natural curvature 20/L), clamped, held straight under
           tension and its ends brought together without turning them: a
           stable path to two helices of opposite handedness (the torsion's
           halves), Tw + Wr = 0 throughout, the turns touching (self-contact)
@@ -625,29 +625,36 @@ def vtu_nodes(path):
 
 
 def perversion():
-    # Tendril perversion (McMillen & Goriely 2002; Gerbode et al. 2012): a
-    # rod of natural curvature kappa0 = 20/L (isotropic section, C = B/1.3),
-    # clamped at both ends, held straight and pulled (D = 1.06 L, tension
-    # 1.5 B kappa0^2, stable), its ends then brought together to D = 0.3 L
-    # without turning them. An antisymmetric natural twist of 1 % of kappa0
-    # (0.2 t cos(pi s/L)) is the imperfection that picks one of the
-    # straight rod's modes. With self-contact (a = 0.02 L, h = a/4):
+    # Tendril perversion (McMillen & Goriely 2002; Gerbode et al. 2012) on
+    # the law of a part-1 section the run computes: a disc of radius 0.02
+    # growing by 1 + 20 X1 (parameter_files/rod/sections/tendril_disc.prm),
+    # whose natural curvature is kappa0 = 20/L exactly. The rod, clamped at
+    # both ends, is held straight and pulled (D = 1.06 L, tension 1.5 B
+    # kappa0^2, stable), its ends then brought together to D = 0.3 L without
+    # turning them. An antisymmetric natural twist of 1 % of kappa0 (0.2 t
+    # cos(pi s/L), 'Natural strain imperfection') is the imperfection that
+    # picks one of the straight rod's modes. With self-contact of the
+    # section's radius (a = 0.02 L, h = a/4):
     # - every state on the path stable, no event: the tendril coils smoothly;
     # - Tw + Wr = 0 at every state: the clamps are not turned, so the link
     #   is conserved;
     # - at the end two helices of opposite handedness: the centreline's
     #   torsion sums to opposite values on the two halves, antisymmetric to
-    #   the discretization's O(h^2) (measured 1.1 % on 100 elements, 0.28 %
-    #   on 200: the bound 1 % here);
+    #   the discretization's O(h^2) (measured on the same rod with a
+    #   quadratic law: 1.1 % on 100 elements, 0.28 % on 200; here 0.27 %:
+    #   the bound 1 %);
     # - the turns press on each other without passing: the closest points
     #   apart more than pi a along the rod stay within 5 % of 2a (measured
-    #   1.7 %), where the same path without contact overlaps the body by
-    #   half its diameter (closest 0.52 (2a)).
+    #   1.5 %), where the same path without contact overlaps the body by
+    #   more than half its diameter (closest 0.41 (2a)).
     a = 0.02
+    disc = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "parameter_files", "rod", "sections",
+                        "tendril_disc.prm")
     def tendril(name, radius):
         s = run(name, {
-            "Rod": {"Length": 1, "Number of elements": 200, "Natural strains": "0; 0; 1; 20; 0; 0.2*t*cos(pi*s)",
-                    "Material": {"Law": "quadratic", "Stiffnesses": "1e4, 1e4, 1e4, 1, 1, 0.769230769230769"},
+            "Rod": {"Length": 1, "Number of elements": 200,
+                    "Natural strain imperfection": "0; 0; 0; 0; 0; 0.2*t*cos(pi*s)",
+                    "Material": {"Law": "section", "Section file": disc},
                     "Contact": {"Radius": radius}},
             "End A": {"Support": "clamped"},
             "End B": {"Support": "clamped", "Displacement": "0; 0; 0.06 - 0.76*t"},

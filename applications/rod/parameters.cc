@@ -158,6 +158,11 @@ namespace cosmo
       prm.declare_entry("Natural strains", "0; 0; 1; 0; 0; 0", Patterns::Anything(),
                         "nu1; nu2; nu3; kappa1; kappa2; kappa3 of the stress-free rod per "
                         "reference length, in the director frame: 6 expressions of s and t.");
+      prm.declare_entry("Natural strain imperfection", "0; 0; 0; 0; 0; 0", Patterns::Anything(),
+                        "Added to the natural strains, whether given above or by the law's "
+                        "sections: 6 expressions of s and t (an imperfection that selects one "
+                        "of a symmetric problem's modes, e.g. '0; 0; 0; 0; 0; 0.2*t*cos(pi*s)' "
+                        "for a tendril's perversion).");
       prm.declare_entry("Growth", "1", Patterns::Anything(),
                         "The natural stretch g(s, t) (axial growth): the stress-free rod has "
                         "strains g nu0 and kappa0 and the law is applied to "
@@ -229,6 +234,7 @@ namespace cosmo
         throw io::InputError("Rod", "Number of elements", prm.get("Number of elements"),
                              "at least 3 for a ring");
       natural_strains   = parse_expression(prm, "Rod", "Natural strains", 6);
+      imperfection      = parse_expression(prm, "Rod", "Natural strain imperfection", 6);
       growth            = parse_expression(prm, "Rod", "Growth", 1);
       distributed_force = parse_expression(prm, "Rod", "Distributed force", 3);
       seam_twist        = parse_expression(prm, "Rod", "Ring twist", 1);
@@ -308,6 +314,9 @@ namespace cosmo
       n.parameter = law->parameter_at(s, t);
       if (const auto e = law->natural_strains_at(n.parameter))
         n.reference_strains = *e;
+      const Vector<double> d = evaluate(imperfection, s, t);
+      for (unsigned int k = 0; k < 6; ++k)
+        n.reference_strains[k] += d[k];
       return n;
     }
 

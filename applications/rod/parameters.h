@@ -74,6 +74,7 @@ namespace cosmo
       bool         ring       = false;
       std::string  shape      = "straight"; ///< straight | natural | ring
       Expression   natural_strains;          ///< 6 components of (s, t)
+      Expression   imperfection;             ///< 6 components of (s, t), added to any law's natural strains
       Expression   growth;                   ///< the natural stretch g(s, t)
       Expression   distributed_force;        ///< per reference length, of (s, t)
       Expression   seam_twist;               ///< a ring's added twist in turns, of t
