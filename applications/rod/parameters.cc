@@ -188,8 +188,8 @@ namespace cosmo
                         "pi a along the rod repel each other when closer than 2a in space, "
                         "with the energy (k/3)(2a - d)^3 per length squared "
                         "(doc/theory-rod.md 9). At least twice the element length L/N; "
-                        "a/4 or less is recommended (a node spacing of a lets the "
-                        "contact force jump as the strands slide, and Newton stall).");
+                        "elements of a/4 or shorter are recommended (with elements as long "
+                        "as a the contact force jumps as the strands slide, and Newton stalls).");
       prm.declare_entry("Stiffness", "100", Patterns::Double(0),
                         "The penalty's k in units of B/a^6 (B the law's largest bending "
                         "stiffness): two strands crossing at right angles, pressed by a "
