@@ -8,7 +8,9 @@ one unit, e.g. the strains' [1] and [1/L], or of one name before its first
 '_'; a stiffness entry K_a_b of sqrt(max |K_a_a| max |K_b_b|), the bound
 its matrix puts on it: an entry that is zero by symmetry carries the
 round-off of its matrix, not of itself, and the OpenBLAS threads of one
-process and of a rank change it); wall times, file names, messages and
+process and of a rank change it); wall times, file names, messages, the
+rod law's description (it names the file it read and whether the run
+computed or reused it) and
 mpi_ranks, mumps_phases_on_all_ranks and factorization_memory (MPI ranks, the MUMPS phases
 they shared, the memory MUMPS used) are not results. A resumed run goes on
 from bitwise the state it saved,
@@ -20,7 +22,7 @@ import json
 import math
 import sys
 
-SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid", "mpi_ranks", "mumps_phases_on_all_ranks", "factorization_memory"}
+SKIP = {"timings", "work_per_state", "seconds", "parameter_file", "message", "pid", "mpi_ranks", "mumps_phases_on_all_ranks", "factorization_memory", "law"}
 
 
 def close(x, y, scale):
