@@ -277,13 +277,13 @@ namespace cosmo
     }
 
     double
-    RodProblem::add_contact(const Vector<double> &X, Vector<double> &R, const bool jacobian)
+    RodProblem::add_contact(const std::vector<Tensor<1, 3>> &x, Vector<double> &R, const bool jacobian)
     {
       // Each pair's E(x_i, x_j) of the positions, whose DoFs are the
       // displacements: its gradient (g, -g) and Hessian [[K, -K], [-K, K]]
       // on the free ones.
       double energy = 0;
-      for (const auto &term : contact->terms(node_positions(X)))
+      for (const auto &term : contact->terms(x))
         {
           energy += term.energy;
           const std::array<unsigned int, 2> nodes{{term.i, term.j}};
@@ -320,12 +320,13 @@ namespace cosmo
       if (!R)
         R = &jacobian_residual;
       R->reinit(n_unknowns());
+      // (the nodes' positions once, for the pattern's check and the contact's terms)
+      const std::vector<Tensor<1, 3>> x = contact ? node_positions(X) : std::vector<Tensor<1, 3>>();
       if (jacobian && contact)
         {
           // A pair that touches and that the pattern does not hold: the
           // pattern is made again with the pairs closer than 3a, a margin
           // for the next steps (and MUMPS analyses it again).
-          const auto x        = node_positions(X);
           const auto touching = contact->pairs_within(x, 2 * contact->radius());
           if (!std::includes(contact_pattern.begin(), contact_pattern.end(), touching.begin(), touching.end()))
             make_pattern(contact->pairs_within(x, 3 * contact->radius()));
@@ -343,7 +344,7 @@ namespace cosmo
       if (!totals.admissible)
         return 1;
       if (contact)
-        totals.scalars[0] += add_contact(X, *R, jacobian);
+        totals.scalars[0] += add_contact(x, *R, jacobian);
       if (!std::isfinite(totals.scalars[0]))
         return 1;
       // (kept for the drivers' next request and the state's description)

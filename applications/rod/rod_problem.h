@@ -235,9 +235,9 @@ namespace cosmo
       /// The Hessian's pattern: the elements' and the pairs' position blocks.
       void
       make_pattern(const std::vector<std::pair<unsigned int, unsigned int>> &pairs);
-      /// Adds the contact's gradient (and Hessian) at X to R (and the matrix); returns its energy.
+      /// Adds the contact's gradient (and Hessian) at the nodes' positions x to R (and the matrix); returns its energy.
       double
-      add_contact(const Vector<double> &X, Vector<double> &R, bool jacobian);
+      add_contact(const std::vector<Tensor<1, 3>> &x, Vector<double> &R, bool jacobian);
       solvers::FactorizationMark factorization;
       solvers::ResidualCache    residuals;
       /// Why the last refused state was refused by the law (thread-safe: noted by the assembly's workers).
