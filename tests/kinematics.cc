@@ -256,7 +256,8 @@ namespace
   // The strip energy's chain-rule derivatives (strip_energy_derivatives)
   // against the nested AD of strip_energy in all 16 variables, at random
   // states with large rotations, at theta = 0 exactly (the exponential's
-  // series branch) and for both parts of the energy. The two differ only
+  // series branch), with and without a natural curvature, and for both
+  // parts of the energy. The two differ only
   // by the order of the floating-point operations: measured at most 5e-16
   // of each quantity's largest entry; the tolerance 1e-12 is well above
   // that and far below any error of the formulas (a wrong term is O(1)).
@@ -279,6 +280,10 @@ namespace
         if (sample % 5 == 0)
           z[6] = z[7] = 0;
         const double eta = 0.5 * u(gen);
+        // A natural curvature (a saddle, a bilayer) on every other sample.
+        const std::array<double, 3> kbar =
+          sample % 2 ? std::array<double, 3>{{1.3 * u(gen), 1.3 * u(gen), 1.3 * u(gen)}} :
+                       std::array<double, 3>{{0., 0., 0.}};
         for (const bool membrane_bending : {true, false})
           for (const bool hessian : {true, false})
             {
@@ -286,9 +291,9 @@ namespace
               std::array<double, N>     g0, g1;
               std::array<double, N * N> H0{}, H1{};
               cosmo::materials::internal::differentiate<N>(
-                z, [&](const auto &x) { return strip_energy(x, eta, law, membrane_bending); },
+                z, [&](const auto &x) { return strip_energy(x, eta, law, membrane_bending, kbar); },
                 hessian, W0, g0, H0);
-              strip_energy_derivatives(z, eta, law, membrane_bending, hessian, W1, g1, H1);
+              strip_energy_derivatives(z, eta, law, membrane_bending, hessian, W1, g1, H1, kbar);
               worst[0] = std::max(worst[0], relative(&W0, &W1, 1));
               worst[1] = std::max(worst[1], relative(g0.data(), g1.data(), N));
               if (hessian)

@@ -1,6 +1,7 @@
 #ifndef cosmo_applications_strip_parameters_h
 #define cosmo_applications_strip_parameters_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <cosmo/materials/plate_law.h>
@@ -8,6 +9,7 @@
 #include <cosmo/solvers/continuation.h>
 #include <cosmo/solvers/newton.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -36,6 +38,15 @@ namespace cosmo
       unsigned int                  n_cells = 40, degree = 2;
       std::string                   mesh_kind = "graded";
       bool                          reduced_shear = true;
+      /// 'Natural curvature': k11, k22, k12 of the stress-free plate as
+      /// expressions of (eta, t); null when the entry is zero (a flat plate).
+      std::shared_ptr<FunctionParser<2>> natural_curvature;
+      /// Parses and checks 'Natural curvature' (io::InputError naming it).
+      void
+      parse_natural_curvature(const std::string &text);
+      /// The natural curvature (k11, k22, k12) at eta for the load t.
+      std::array<double, 3>
+      natural_curvature_at(double eta, double t) const;
       /// The plate law of the strip ('Plate material / Law').
       std::shared_ptr<const materials::PlateLaw> plate_law;
       solvers::NewtonSettings       newton_settings;

@@ -150,8 +150,13 @@ namespace cosmo
     }
 
     int
-    StripProblem::load_derivative(const Vector<double> &, const double lambda, Vector<double> &dR)
+    StripProblem::load_derivative(const Vector<double> &U, const double lambda, Vector<double> &dR)
     {
+      // A natural curvature of t acts on the field rows too: the residual's
+      // central difference in t (exact for a curvature linear in t and a
+      // quadratic law, to round-off).
+      if (natural_curvature)
+        return BifurcationProblem::load_derivative(U, lambda, dR);
       dR.reinit(n_unknowns());
       // Prescribed strain rows e - eP(t), free rows dPsi/de - t nbar.
       const auto rate = prescribed_strain_rate(lambda);
@@ -227,19 +232,20 @@ namespace cosmo
                 assembly::gather_local_variables<n_local>(sc.drives, sc.U_local, z);
                 for (unsigned int k = 0; k < n_strains; ++k)
                   z[10 + k] = e[k];
-                const double eta = fev.quadrature_point(q)[0];
-                const double dA  = fev.JxW(q);
-                double       W   = 0;
+                const double eta  = fev.quadrature_point(q)[0];
+                const double dA   = fev.JxW(q);
+                const auto   kbar = natural_curvature_at(eta, load_parameter);
+                double       W    = 0;
                 if (nested_ad)
                   materials::internal::differentiate<n_local>(
                     z,
-                    [&](const auto &x) { return kinematics::strip_energy(x, eta, law, membrane_bending); },
+                    [&](const auto &x) { return kinematics::strip_energy(x, eta, law, membrane_bending, kbar); },
                     jacobian,
                     W,
                     g,
                     H);
                 else
-                  kinematics::strip_energy_derivatives(z, eta, law, membrane_bending, jacobian, W, g, H);
+                  kinematics::strip_energy_derivatives(z, eta, law, membrane_bending, jacobian, W, g, H, kbar);
                 c.scalars[0] += W * dA;
                 for (unsigned int k = 0; k < n_strains; ++k)
                   c.scalars[1 + k] += g[10 + k] * dA;

@@ -136,7 +136,8 @@ namespace cosmo
       /// The strip's gauge rows are integrals over the width line: w^2, w^3, w.
       void
       gauge_weights(std::array<double, 6> &w) const override;
-      /// Exact: only the prescribed strain rows depend on t (no growth here).
+      /// Exact where only the prescribed strain rows depend on t; with a
+      /// natural curvature of t, the residual's central difference.
       int
       load_derivative(const Vector<double> &U, double lambda, Vector<double> &dR) override;
 

@@ -82,7 +82,8 @@ namespace cosmo
                              const bool                                      with_hessian,
                              double &                                        W,
                              std::array<double, strip_local_variables> &     g,
-                             std::array<double, strip_local_variables * strip_local_variables> &H)
+                             std::array<double, strip_local_variables * strip_local_variables> &H,
+                             const std::array<double, 3> &natural_curvature)
     {
       // Indices of z (strip_local_variables): u 0-2, u' 3-5, theta 6-7,
       // theta' 8-9, nu 10-12, kappa 13-15. Indices of V: a1 0-2, a2 3-5,
@@ -133,6 +134,8 @@ namespace cosmo
       plate_measures::Energy energy;
       energy.law              = &law;
       energy.membrane_bending = membrane_bending;
+      if (membrane_bending)
+        energy.natural_curvature = natural_curvature;
       std::array<double, n_vectors>             wV;
       std::array<double, n_vectors * n_vectors> wVV;
       plate_measures::energy_in_vectors(V, energy, with_hessian, W, wV, wVV);

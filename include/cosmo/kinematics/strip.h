@@ -86,14 +86,17 @@ namespace cosmo
        * The plate energy density at one point of the width line, as a
        * function of the local variables z (doc/specification/strip.md, helical Cauchy-Born
        * kinematics): y = eta E1 + u, Fp = [y' | nu + kappa x y],
-       * q = exp([theta]x) E2, grad d = [q' | kappa x q].
+       * q = exp([theta]x) E2, grad d = [q' | kappa x q]; the bending
+       * measures are taken relative to the plate's natural curvature
+       * (k11, k22, k12 in the (eta, s) frame; zero for a flat plate).
        */
       template <typename Number>
       Number
       strip_energy(const std::array<Number, strip_local_variables> &z,
                    const double                       eta,
                    const materials::PlateLawAt &  law,
-                   const bool                         membrane_bending)
+                   const bool                         membrane_bending,
+                   const std::array<double, 3> &      natural_curvature = {{0., 0., 0.}})
       {
         using V = std::array<Number, 3>;
         const V y  = {{eta + z[0], z[1], z[2]}};
@@ -105,7 +108,9 @@ namespace cosmo
         for (unsigned int i = 0; i < 3; ++i)
           b[i] += nu[i];
         const V    q2 = cross(kappa, q);
-        const auto s  = materials::plate_strains(y1, b, q, q1, q2);
+        auto       s  = materials::plate_strains(y1, b, q, q1, q2);
+        for (unsigned int k = 0; k < 3; ++k)
+          s.bending[k] -= natural_curvature[k];
         return membrane_bending ? law.membrane_bending_energy(s) : law.shear_energy(s);
       }
 
@@ -123,6 +128,7 @@ namespace cosmo
      *    once by nested AD, so plate_strains() stays the one formula;
      *  - w(s), the law, by nested AD in the eight measures.
      * Then g = V_z^T w_V, H = V_z^T w_VV V_z + sum_i w_{V_i} (V_i)_zz.
+     * The natural curvature is taken off the bending measures, as in strip_energy().
      * Checked against the nested AD of strip_energy (tests/kinematics.cc).
      */
     void
@@ -133,7 +139,8 @@ namespace cosmo
                              bool                                            with_hessian,
                              double &                                        W,
                              std::array<double, strip_local_variables> &     g,
-                             std::array<double, strip_local_variables * strip_local_variables> &H);
+                             std::array<double, strip_local_variables * strip_local_variables> &H,
+                             const std::array<double, 3> &natural_curvature = {{0., 0., 0.}});
 
   } // namespace kinematics
 } // namespace cosmo

@@ -79,6 +79,22 @@ namespace cosmo
       }
     } // namespace
 
+    std::string
+    application_of_parameter_file(const std::string &file)
+    {
+      std::ifstream in(file);
+      std::string   line;
+      while (std::getline(in, line))
+        {
+          std::istringstream words(line);
+          std::string        first, second;
+          words >> first >> second;
+          if (first == "subsection" && second == "Strip")
+            return "strip";
+        }
+      return "rod_cross_section";
+    }
+
     SectionResult
     read_section_summary(const std::string &file, const std::string &section, const std::string &entry)
     {
@@ -97,6 +113,22 @@ namespace cosmo
               r.resultants[k] = number(summary.find("resultants"), resultant_names[k]);
             }
           r.stiffness = read_summary_stiffness(file, section, entry);
+          // A strip (part 2) gives its resultants and stiffness per E w h
+          // (doc/user-guide-strip.md): restore w h, so that strips of
+          // different widths are comparable and the law is in units of E.
+          const io::JSON *application = summary.find("application");
+          if (application && application->str() == "\"strip\"")
+            {
+              const double wh = number(&summary, "width") * number(&summary, "thickness");
+              if (!(wh > 0))
+                throw io::InputError(section, entry, file,
+                                     "a strip summary.json with a positive width and thickness");
+              for (double &n : r.resultants)
+                n *= wh;
+              for (double &k : r.stiffness)
+                k *= wh;
+              r.strip = true;
+            }
         }
       catch (io::InputError &)
         {
@@ -178,7 +210,9 @@ namespace cosmo
                         "section), the sweep.csv of a parameter sweep (a family of sections "
                         "over the swept value p), or a rod_cross_section parameter file, "
                         "which the run computes itself (its output in the run's directory "
-                        "'section', reused while that file's parameters are unchanged). The "
+                        "'section', reused while that file's parameters are unchanged); or "
+                        "likewise a strip's summary.json or parameter file (one with a "
+                        "subsection 'Strip': a ribbon's law, its E w h units restored). The "
                         "section's natural strains replace 'Natural strains'; it must be at "
                         "a natural shape ('Rod strains / Mode = natural shape').");
       prm.declare_entry("Section parameter", "0", Patterns::Anything(),
@@ -384,7 +418,7 @@ namespace cosmo
     {
       std::ostringstream m;
       if (members.size() == 1)
-        m << "section: the part-1 section of " << origin;
+        m << "section: the " << (members[0].strip ? "part-2 strip" : "part-1 section") << " of " << origin;
       else
         m << "section: a family of " << members.size() << " part-1 sections over p in ["
           << members.front().parameter << ", " << members.back().parameter << "] from " << origin

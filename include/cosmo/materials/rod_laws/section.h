@@ -11,8 +11,8 @@
 #include <vector>
 
 /**
- * The rod law of part-1 sections, registered as 'section'
- * (doc/theory-rod.md 4.2): the quadratic energy
+ * The rod law of part-1 sections (or of a part-2 strip at its natural
+ * shape), registered as 'section' (doc/theory-rod.md 4.2): the quadratic energy
  *
  *   psi(e) = 1/2 e . K(p) e
  *
@@ -32,13 +32,15 @@ namespace cosmo
 {
   namespace materials
   {
-    /// What part 1 says of one grown section at its natural shape.
+    /// What part 1 (or part 2) says of one grown section at its natural shape,
+    /// forces in units of E L^2 and moments E L^3 (a strip's E w h restored).
     struct SectionResult
     {
       double                 parameter = 0; ///< the swept value (0 for one section)
       std::array<double, 6>  strains{};     ///< natural nu1, nu2, nu3, kappa1, kappa2, kappa3
       std::array<double, 6>  resultants{};  ///< n, m there (zero at a natural shape)
       std::array<double, 36> stiffness{};   ///< 6 x 6, row-major
+      bool                   strip = false; ///< a part-2 strip's result
     };
 
     /**
@@ -48,6 +50,11 @@ namespace cosmo
      */
     SectionResult
     read_section_summary(const std::string &file, const std::string &section, const std::string &entry);
+
+    /// "strip" for a parameter file with a subsection 'Strip' (part 2), else
+    /// "rod_cross_section" (part 1): the application a 'Section file' names.
+    std::string
+    application_of_parameter_file(const std::string &file);
 
     /// The converged rows of a rod_cross_section sweep.csv (the others are
     /// holes: counted in `holes`), in the order of the file.
@@ -70,7 +77,7 @@ namespace cosmo
       computed_input() const override
       {
         if (members.empty() && !file.empty())
-          return {"rod_cross_section", file, "Section file", "section"};
+          return {application_of_parameter_file(file), file, "Section file", "section"};
         return {};
       }
       void
