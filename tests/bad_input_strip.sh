@@ -39,4 +39,13 @@ expect "an entry the natural-shape mode ignores (Free strains)" "entry 'Free str
 expect "a resultant target for a prescribed strain (m3 with kappa3 prescribed)" "entry 'Resultants' = '0, 0, 0.1, 0, 0, 0.01': m3 = 0.01 for the prescribed kappa3: a resultant can only be prescribed for a strain in 'Free strains'" torque_prescribed.prm
 { strip ' set Width = 1'; printf 'subsection Rod strains\n set Mode = natural shape\n set Resultants = 0, 0, 0.1, 0, 0, 0\nend\n'; } > natural_loaded.prm
 expect "a resultant target in natural-shape mode" "entry 'Resultants' = '0, 0, 0.1, 0, 0, 0': nothing in 'Mode = natural shape'" natural_loaded.prm
+strip ' set Width = 1
+ set Natural curvature = 0; 0; t*' > kbar_parse.prm
+expect "a natural curvature that does not parse" "3 muparser expressions of eta and t" kbar_parse.prm
+strip ' set Width = 1
+ set Natural curvature = 0; 0; 1 + t' > kbar_start.prm
+expect "a natural curvature not zero at t = 0" "zero at t = 0 (the path starts at the flat strip)" kbar_start.prm
+strip ' set Width = 1
+ set Natural curvature = 0; 0; t/eta' > kbar_inf.prm
+expect "a natural curvature infinite at the centre line" "finite across the width" kbar_inf.prm
 exit $fail

@@ -78,6 +78,8 @@ namespace cosmo
       try
         {
           f->initialize("eta,t", text, {{"pi", M_PI}});
+          Vector<double> v(3); // muparser parses at the first evaluation
+          f->vector_value(Point<2>(0.1, 0.2), v);
         }
       catch (ExceptionBase &e)
         {
@@ -96,12 +98,13 @@ namespace cosmo
             {
               const auto k = natural_curvature_at(eta, t);
               for (const double v : k)
-                if (!std::isfinite(v) || (t == 0 && v != 0))
+                if (!std::isfinite(v) || (v != 0 && t == 0))
                   throw io::InputError("Strip", "Natural curvature", text,
-                                       t == 0 ? "zero at t = 0 (the path starts at the flat strip); "
-                                                "at eta = " + io::format_number(eta) + " it is not" :
-                                                "finite across the width for t in [0, 1] (not at eta = " +
-                                                  io::format_number(eta) + ", t = " + io::format_number(t) + ")");
+                                       std::isfinite(v) ?
+                                         "zero at t = 0 (the path starts at the flat strip); at eta = " +
+                                           io::format_number(eta) + " it is not" :
+                                         "finite across the width for t in [0, 1] (not at eta = " +
+                                           io::format_number(eta) + ", t = " + io::format_number(t) + ")");
             }
         }
     }
