@@ -53,6 +53,9 @@ def _figures():
     f["strip_torque_buckling_branches.png"] = ["parameter_files/strip/torque_buckling.prm",
                                                f"{REF}/strip_torque_buckling.output",
                                                "scripts/plot_branches.py"]
+    f["strip_seed_pod_branches.png"] = ["parameter_files/strip/seed_pod.prm",
+                                        f"{REF}/strip_seed_pod.output",
+                                        "scripts/plot_branches.py"]
     f["strip_ribbons.png"] = ["parameter_files/strip/ribbon_comparison.prm",
                               f"{REF}/strip_ribbon_comparison.output",
                               "scripts/ribbon_models.py"]

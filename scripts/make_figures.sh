@@ -14,6 +14,8 @@
 #                                   output/strip_shearing/branches.png
 #   doc/figures/strip_torque_buckling_branches.png
 #                                   output/strip_torque_buckling/branches.png
+#   doc/figures/strip_seed_pod_branches.png
+#                                   output/strip_seed_pod/branches.png
 #   doc/figures/strip_ribbons.png   output/strip_ribbon_comparison/ribbons.png
 #   doc/figures/plate_rod_{dome,lobes,heated_lenticular_disc}_bifurcation.png
 #                                   output/plate_rod/{dome,lobes,heated_lenticular_disc}/bifurcation.png
@@ -55,6 +57,7 @@ for n in "${STEPS[@]}"; do
 done
 [[ -f "output/$SECTION/solution.pvd" ]] || { log "missing output/$SECTION/solution.pvd" >&2; missing=1; }
 for f in output/strip_shearing/branches.png output/strip_torque_buckling/branches.png \
+         output/strip_seed_pod/branches.png \
          output/strip_ribbon_comparison/ribbons.png \
          output/plate_rod/dome/bifurcation.png output/plate_rod/lobes/bifurcation.png \
          output/plate_rod/heated_lenticular_disc/bifurcation.png \
@@ -80,6 +83,7 @@ for n in "${STEPS[@]}"; do
 done
 cp output/strip_shearing/branches.png doc/figures/strip_shearing_branches.png
 cp output/strip_torque_buckling/branches.png doc/figures/strip_torque_buckling_branches.png
+cp output/strip_seed_pod/branches.png doc/figures/strip_seed_pod_branches.png
 cp output/strip_ribbon_comparison/ribbons.png doc/figures/strip_ribbons.png
 for n in dome lobes heated_lenticular_disc; do
   cp "output/plate_rod/$n/bifurcation.png" "doc/figures/plate_rod_${n}_bifurcation.png"

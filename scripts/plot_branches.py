@@ -12,7 +12,9 @@ the state is stable (no negative eigenvalue) and dashed where it is not; the
 located events are marked. Under resultant control (a resultant of the
 driven strain held at t times a target, `Rod strains / Resultants`) the left
 panel is that strain against its resultant instead (e.g. twist against
-torque: the fold of a snap shows as a turning point), events as dots.
+torque: the fold of a snap shows as a turning point), events as dots. At
+a natural shape (`Mode = natural shape`: every strain free, a natural
+curvature drives the path) the left panel is that strain against t.
 Exit status 0, 1 bad usage, 2 no matplotlib.
 """
 
@@ -51,6 +53,16 @@ def plot_run(plt, run_dir):
     spread = {s: max((abs(columns[s][i] - columns[s][first[0]]) for i in others), default=0)
               for s in STRAINS if s in columns and s != driven}
     order = max(spread, key=spread.get) if spread and max(spread.values()) > 1e-8 else "energy"
+    # A natural shape (all strains free, no resultant: a natural curvature
+    # drives it): the left panel is the driven strain itself against t.
+    natural = False
+    try:
+        with open(os.path.join(run_dir, "parameters.prm")) as f:
+            natural = any(l.split("=")[0].split() == ["set", "Mode"] and "natural shape" in l for l in f)
+    except OSError:
+        pass
+    if natural:
+        resultant = driven
     # resultant control: the driven strain is free, its resultant held at t x target
     target = None
     if resultant in summary.get("held_resultants", {}):
@@ -84,7 +96,9 @@ def plot_run(plt, run_dir):
             else:
                 ax.axvline(e.get("t", math.nan), color="gray", lw=0.6, ls=":")
     for k, (ax, name) in enumerate(zip(axes, (resultant, order))):
-        if target is None:
+        if natural:
+            ax.set_xlabel("load parameter t (natural shape: every strain free)")
+        elif target is None:
             ax.set_xlabel("load parameter t (%s prescribed)" % plot_steps.symbol(driven))
         elif k == 0:
             ax.set_xlabel("%s (free; %s held; dots: events)" % (label(driven), plot_steps.symbol(resultant)))
