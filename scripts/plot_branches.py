@@ -58,7 +58,9 @@ def plot_run(plt, run_dir):
     natural = False
     try:
         with open(os.path.join(run_dir, "parameters.prm")) as f:
-            natural = any(l.split("=")[0].split() == ["set", "Mode"] and "natural shape" in l for l in f)
+            # the value, not the '# default: ...' comment after it
+            natural = any(l.split("=")[0].split() == ["set", "Mode"] and
+                          l.split("=", 1)[1].split("#")[0].strip() == "natural shape" for l in f)
     except OSError:
         pass
     if natural:
