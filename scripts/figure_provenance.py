@@ -76,12 +76,14 @@ def _figures():
     f["rod_euler_clamped_bifurcation.png"] = ["parameter_files/rod/euler_clamped.prm",
                                               f"{REF}/rod_euler_clamped.output", "scripts/plot_rod.py",
                                               "scripts/plot_plate_rod.py", "scripts/plot_steps.py"]
-    for n in ["helix", "rollup", "euler_clamped", "tendril", "ribbon_rollup", "michell_figure_eight", "tendril_perversion"]:
+    for n in ["helix", "rollup", "euler_clamped", "tendril", "ribbon_rollup", "michell_figure_eight", "tendril_perversion",
+              "seed_pod"]:
         f[f"rod_{n}.png"] = [f"parameter_files/rod/{n}.prm", f"{REF}/rod_{n}.output",
                              "scripts/render_paraview.py"]
     f["rod_tendril.png"].append("parameter_files/rod/sections/tendril_bilayer.prm")
     f["rod_ribbon_rollup.png"].append("parameter_files/rod/sections/ribbon_table.prm")
     f["rod_tendril_perversion.png"].append("parameter_files/rod/sections/tendril_disc.prm")
+    f["rod_seed_pod.png"].append("parameter_files/rod/sections/seed_pod_strip.prm")
     return f
 
 

@@ -66,7 +66,8 @@ for f in output/strip_shearing/branches.png output/strip_torque_buckling/branche
          output/rod/helix/summary.json output/rod/rollup/summary.json \
          output/rod/euler_clamped/summary.json output/rod/euler_clamped/bifurcation.png \
          output/rod/tendril/summary.json output/rod/ribbon_rollup/summary.json \
-         output/rod/michell_figure_eight/summary.json output/rod/tendril_perversion/summary.json; do
+         output/rod/michell_figure_eight/summary.json output/rod/tendril_perversion/summary.json \
+         output/rod/seed_pod/summary.json; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -96,7 +97,7 @@ cp output/rod/euler_clamped/bifurcation.png doc/figures/rod_euler_clamped_bifurc
 display=$((90 + RANDOM % 100))
 Xvfb ":$display" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 & xvfb=$!
 sleep 2
-for n in helix rollup euler_clamped tendril ribbon_rollup michell_figure_eight tendril_perversion; do
+for n in helix rollup euler_clamped tendril ribbon_rollup michell_figure_eight tendril_perversion seed_pod; do
   DISPLAY=":$display" pvbatch scripts/render_paraview.py "output/rod/$n" "doc/figures/rod_$n.png" >/dev/null 2>&1 \
     || { kill $xvfb; log "rendering output/rod/$n FAILED" >&2; exit 1; }
 done
