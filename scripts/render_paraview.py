@@ -14,7 +14,8 @@ The application is read from RUN_DIR/summary.json:
   coloured by the Z component of the director;
 - plate_rod: plate-branch-K.pvd coloured by the deflection (displacement Z),
   with the rim (rim-branch-K.pvd) as a tube;
-- rod: tube-branch-K.pvd (the rod's body, a tube about its centreline), or
+- rod: body-branch-K.pvd (its cross-section swept along it, 'Output / Body =
+  section') or tube-branch-K.pvd (a tube about its centreline), or
   rod-branch-K.pvd drawn as a thick shaded line, coloured by the curvature
   component of largest magnitude.
 
@@ -108,12 +109,17 @@ def main(argv):
         view.CameraViewUp = [0, 0, 1]
         what = "%s at t = %g, deflection" % (os.path.basename(pvd), t)
     elif app == "rod":
-        # The body the rod writes (tube-branch-K.pvd), else the centreline
+        # The body the rod writes (body- or tube-branch-K.pvd), else the centreline
         # as thick shaded lines (ParaView's Render Lines As Tubes; its Tube
         # filter would draw each element as a piece of its own).
-        try:
-            pvd, body = branch_file(run, "tube", branch), True
-        except NoRender:
+        pvd = None
+        for name in ("body", "tube"):  # the swept section, else the tube
+            try:
+                pvd, body = branch_file(run, name, branch), True
+                break
+            except NoRender:
+                pass
+        if pvd is None:
             pvd, body = branch_file(run, "rod", branch), False
         reader = PVDReader(FileName=pvd)
         t = last_time(reader)

@@ -605,6 +605,103 @@ def clamped_link():
           0, 1e-9)
 
 
+def chain_rule():
+    # The element's derivatives by the chain rule through (theta, u) against
+    # nested AD of its whole energy (COSMO_NESTED_AD): a twisted ring (its
+    # seam) to Michell's threshold and a pinned-pinned rod (the spin gauge)
+    # to Euler's. The two Hessians differ by round-off (1e-13 of their
+    # entries, measured on the examples), so the located loads agree within
+    # the location's round-off resolution.
+    cases = {
+        "ring": {"Rod": {"Length": 1, "Number of elements": 40, "Shape": "ring", "Ring twist": "3*t",
+                         "Material": {"Law": "quadratic", "Stiffnesses": "1e4, 1e4, 1e4, 1, 1, %r" % (1 / 1.3)}},
+                 "Path following": {"Method": "arclength"},
+                 "Arclength continuation": {"Parameter range": "0, 1", "Maximum step": 0.05,
+                                            "Stop at first event": "true", "Event tolerance": 1e-10}},
+        "pinned": {"Rod": {"Length": 1, "Number of elements": 40,
+                           "Material": {"Law": "quadratic", "Stiffnesses": "500, 500, 1000, 2, 1, 0.8"}},
+                   "End A": {"Support": "pinned"},
+                   "End B": {"Support": "pinned", "Displacement": "0; 0; -t"},
+                   "Path following": {"Method": "arclength"},
+                   "Arclength continuation": {"Parameter range": "0, 0.05", "Maximum step": 0.002,
+                                              "Initial step": 0.002,
+                                              "Stop at first event": "true", "Event tolerance": 1e-10}}}
+    for name, entries in cases.items():
+        located, resolution = [], 0
+        for nested in (False, True):
+            env = dict(os.environ)
+            env.pop("COSMO_NESTED_AD", None)
+            if nested:
+                env["COSMO_NESTED_AD"] = "1"
+            directory = os.path.join(scratch, "%s-%s" % (name, "nested" if nested else "chain"))
+            prm = directory + ".prm"
+            open(prm, "w").write(prm_text(dict(entries, Output={"Output directory": directory})))
+            subprocess.run([exe, "--quiet", prm], check=True, env=env)
+            s = json.load(open(os.path.join(directory, "summary.json")))
+            located.append(s["events"][0]["t"] if s["events"] else math.nan)
+            resolution = max(resolution, s["events"][0]["location"]["resolution"] if s["events"] else 0)
+        print("  %s: first event at t = %.12f (chain rule), %.12f (nested AD), resolution %.2e"
+              % (name, located[0], located[1], resolution))
+        # Two locations of one point agree within their round-off resolution
+        # (each event's own, summary.json); 10 times it bounds the difference.
+        check("%s: the chain rule's event against nested AD's" % name, located[0], located[1],
+              10 * max(resolution, 1e-12))
+
+
+def body():
+    # The rod drawn as its part-1 section (Output / Body = section): the
+    # tendril's disc (radius 0.02, stress-free at its natural shape) swept
+    # along a clamped rod (L = 0.2, 8 elements, less than a turn of its
+    # natural curvature 20) bent by its natural curvature. Every
+    # body point lies at |w| = 0.02 from its node (w in the (d1, d2) plane),
+    # so at that distance from the nearest centreline node (the next is
+    # farther: h = 0.025); at the clamp (frame the fixed axes) the points are
+    # the outline's (w1, w2, w3) themselves. Resolution: the VTU's single
+    # precision and the spread of the outline's radii (7e-10, its mapping).
+    disc = os.path.join(scratch, "disc.prm")
+    text = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "parameter_files", "rod",
+                             "sections", "tendril_disc.prm")).read()
+    open(disc, "w").write(text)
+    s = run("body", {"Rod": {"Length": 0.2, "Number of elements": 8, "Shape": "natural",
+                             "Material": {"Law": "section", "Section file": disc}},
+                     "End A": {"Support": "clamped"}, "End B": {"Support": "free", "Force": "0; 0; 1e-6*t"},
+                     "Continuation": {"Initial step": 0.5, "Maximum step": 0.5},
+                     "Output": {"Body": "section"}})
+    directory = os.path.join(scratch, "body")
+    outline = np.loadtxt(os.path.join(directory, "section", "outline.csv"), delimiter=",", skiprows=1)
+    last = sorted(f for f in os.listdir(directory) if f.startswith("body-") and f.endswith(".vtu"))[-1]
+    points = vtu_points(os.path.join(directory, last))
+    # rod-NNNN.vtu: per element node a, its midpoint, node b
+    centreline = vtu_points(os.path.join(directory, last.replace("body-", "rod-")))
+    nodes = np.vstack([centreline[0::3], centreline[-1:]])
+    check("body: points = 4 per outline segment per element", len(points), 4 * len(outline) * 8, 0)
+    radius = np.linalg.norm(outline[:, 3:6], axis=1)
+    distance = np.min(np.linalg.norm(points[:, None, :] - nodes[None, :, :], axis=2), axis=1)
+    # (the VTU's points are single precision: 6e-8 of the coordinates each)
+    float32 = 4 * 6e-8 * np.max(np.abs(points))
+    check("body: every point at |w| from the centreline (max error)", np.max(np.abs(distance - radius.mean())), 0,
+          float32 + np.ptp(radius))
+    at_clamp = points[np.linalg.norm(points - nodes[0], axis=1) < 0.021]
+    worst = max(np.min(np.linalg.norm(outline[:, 3:6] - p, axis=1)) for p in at_clamp - nodes[0])
+    check("body: at the clamp the points are the outline's w", worst, 0, float32)
+
+
+def vtu_points(path):
+    """All points of a VTU written by the suite (zlib-compressed binary)."""
+    import base64, re, struct, zlib
+    for m in re.finditer(r'<DataArray type="(\w+)"(?: Name="([^"]*)")?(?: NumberOfComponents="(\d+)")? '
+                         r'format="binary"[^>]*>\s*(.*?)\s*</DataArray>', open(path).read(), re.S):
+        kind, name, components, data = m.groups()
+        if name or components != "3":
+            continue
+        blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
+        header = 4 * (3 + blocks)
+        encoded = (header + 2) // 3 * 4
+        raw = zlib.decompress(base64.b64decode(data[encoded:]))
+        return np.frombuffer(raw, dtype={"Float32": np.float32, "Float64": np.float64}[kind]).astype(float).reshape(-1, 3)
+    raise SystemExit("no points in " + path)
+
+
 def vtu_nodes(path):
     """The nodes of a rod-NNNN.vtu (deal.II's zlib-compressed binary VTU:
     each cell a quadratic edge whose first two points are its nodes)."""
@@ -691,6 +788,7 @@ def perversion():
 
 
 {"helix": helix, "section": section, "table": table, "elastica": elastica, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
- "growth": growth, "michell": michell, "figure_eight": figure_eight, "clamped_link": clamped_link, "perversion": perversion, "link": link, "study": study, "loads": loads}[case]()
+ "growth": growth, "michell": michell, "figure_eight": figure_eight, "clamped_link": clamped_link, "perversion": perversion, "link": link, "study": study, "loads": loads,
+ "chain_rule": chain_rule, "body": body}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace cosmo
 {
@@ -85,6 +86,179 @@ namespace cosmo
             W += 0.5 * d.penalty * spin * spin;
           }
         return W;
+      }
+
+      /**
+       * element_energy() and its derivatives in y = (chord c, q_a, q_b) by
+       * the chain rule through z = (theta, u), what nested AD of the whole
+       * energy in 11 variables gives at a quarter of the cost
+       * (benchmarks/README.md):
+       *  - theta = log(conj(q_a) q_b s) (s: a ring's seam) in the 8
+       *    quaternion components and u = R(q_a)^T c in 7 variables, each a
+       *    small map differentiated by nested AD (the kinematics' formulas,
+       *    once: kinematics::relative_rotation_vector, quaternion_rotation);
+       *  - h psi(strains(theta, u)) by nested AD in the 6 variables z
+       *    (kinematics::helicoidal_strains_of, the law);
+       *  - W_y = z_y^T W_z, W_yy = z_y^T W_zz z_y + sum_m W_z_m (z_m)_yy;
+       *  - the quaternions' norm penalty and the spin gauge in closed form.
+       * Checked against the nested AD of element_energy (COSMO_NESTED_AD,
+       * tests/rod_validation.py case 'chain_rule').
+       */
+      void
+      element_energy_by_chain_rule(const std::array<double, n_ad> &    y,
+                                   const RodElementData &              d,
+                                   const materials::RodLaw &           law,
+                                   const materials::RodNaturalState &  natural,
+                                   const unsigned int                  e,
+                                   const bool                          with_hessian,
+                                   double &                            W,
+                                   std::array<double, n_ad> &          G,
+                                   std::array<double, n_ad * n_ad> &   H)
+      {
+        namespace ad    = materials::internal;
+        const bool seam = d.ring && e + 1 == d.n_elements;
+        // theta(q_a, q_b): y[3..10]
+        std::array<double, 8>                  xq;
+        std::array<double, 3>                  th;
+        std::array<std::array<double, 8>, 3>   dth;
+        std::array<std::array<double, 64>, 3>  Hth;
+        std::copy(y.begin() + 3, y.end(), xq.begin());
+        ad::differentiate_map<8, 3>(
+          xq,
+          [&](const auto &x, auto &out) {
+            using Number = std::decay_t<decltype(x[0])>;
+            const kinematics::Quaternion<Number> a{{x[0], x[1], x[2], x[3]}}, b{{x[4], x[5], x[6], x[7]}};
+            const auto b_seen = seam ? kinematics::quaternion_product(b, as_numbers<Number>(d.seam)) : b;
+            const auto t      = kinematics::relative_rotation_vector(kinematics::relative_quaternion(a, b_seen));
+            for (unsigned int i = 0; i < 3; ++i)
+              out[i] = t[i];
+          },
+          with_hessian, th, dth, Hth);
+        // u(c, q_a) = R(q_a)^T c: y[0..6]
+        std::array<double, 7>                 xu;
+        std::array<double, 3>                 u;
+        std::array<std::array<double, 7>, 3>  du;
+        std::array<std::array<double, 49>, 3> Hu;
+        std::copy(y.begin(), y.begin() + 7, xu.begin());
+        ad::differentiate_map<7, 3>(
+          xu,
+          [](const auto &x, auto &out) {
+            using Number = std::decay_t<decltype(x[0])>;
+            const auto R = kinematics::quaternion_rotation(kinematics::Quaternion<Number>{{x[3], x[4], x[5], x[6]}});
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                Number v = R[0][i] * x[0];
+                v += R[1][i] * x[1];
+                v += R[2][i] * x[2];
+                out[i] = v;
+              }
+          },
+          with_hessian, u, du, Hu);
+        // h psi(z), z = (theta, u)
+        const std::array<double, 6> z{{th[0], th[1], th[2], u[0], u[1], u[2]}};
+        std::array<double, 6>       gz;
+        std::array<double, 36>      Hz;
+        ad::differentiate<6>(
+          z,
+          [&](const auto &x) {
+            using Number = std::decay_t<decltype(x[0])>;
+            Tensor<1, 3, Number> t, v;
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                t[i] = x[i];
+                v[i] = x[3 + i];
+              }
+            return Number(d.h * materials::grown_rod_energy(law, kinematics::helicoidal_strains_of(t, v, d.h), natural));
+          },
+          with_hessian, W, gz, Hz);
+
+        // z_y (6 x 11): theta in y[3..10], u in y[0..6].
+        std::array<std::array<double, n_ad>, 6> J{};
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            for (unsigned int a = 0; a < 8; ++a)
+              J[i][3 + a] = dth[i][a];
+            for (unsigned int a = 0; a < 7; ++a)
+              J[3 + i][a] = du[i][a];
+          }
+        for (unsigned int a = 0; a < n_ad; ++a)
+          {
+            double v = 0;
+            for (unsigned int m = 0; m < 6; ++m)
+              v += gz[m] * J[m][a];
+            G[a] = v;
+          }
+        if (with_hessian)
+          {
+            std::array<std::array<double, n_ad>, 6> T{}; // W_zz z_y
+            for (unsigned int m = 0; m < 6; ++m)
+              for (unsigned int b = 0; b < n_ad; ++b)
+                for (unsigned int n = 0; n < 6; ++n)
+                  T[m][b] += Hz[6 * m + n] * J[n][b];
+            for (unsigned int a = 0; a < n_ad; ++a)
+              for (unsigned int b = a; b < n_ad; ++b)
+                {
+                  double v = 0;
+                  for (unsigned int m = 0; m < 6; ++m)
+                    v += J[m][a] * T[m][b];
+                  H[n_ad * a + b] = v;
+                }
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                for (unsigned int a = 0; a < 8; ++a)
+                  for (unsigned int b = a; b < 8; ++b)
+                    H[n_ad * (3 + a) + 3 + b] += gz[i] * Hth[i][8 * a + b];
+                for (unsigned int a = 0; a < 7; ++a)
+                  for (unsigned int b = a; b < 7; ++b)
+                    H[n_ad * a + b] += gz[3 + i] * Hu[i][7 * a + b];
+              }
+          }
+
+        // (1/2) k (|q|^2 - 1)^2 of the nodes the element owns (offset 3 or 7 in y).
+        auto add_norm_penalty = [&](const unsigned int o) {
+          double m = -1;
+          for (unsigned int k = 0; k < 4; ++k)
+            m += y[o + k] * y[o + k];
+          W += 0.5 * d.penalty * m * m;
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              G[o + k] += 2 * d.penalty * m * y[o + k];
+              if (with_hessian)
+                for (unsigned int l = k; l < 4; ++l)
+                  H[n_ad * (o + k) + o + l] += d.penalty * (4 * y[o + k] * y[o + l] + (k == l ? 2 * m : 0.));
+            }
+        };
+        add_norm_penalty(3);
+        if (!d.ring && e + 1 == d.n_elements)
+          add_norm_penalty(7);
+        if (e == 0 && d.spin_gauge)
+          {
+            // (1/2) k s^2, s = a . q_a linear (element_energy's spin term).
+            std::array<double, 4> a{};
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                kinematics::Quaternion<double> unit{{0, 0, 0, 0}};
+                unit[k]      = 1;
+                const auto p = kinematics::quaternion_product(unit, d.reference_0_conjugate);
+                for (unsigned int i = 0; i < 3; ++i)
+                  a[k] += p[1 + i] * d.spin_axis[i];
+              }
+            double spin = 0;
+            for (unsigned int k = 0; k < 4; ++k)
+              spin += a[k] * y[3 + k];
+            W += 0.5 * d.penalty * spin * spin;
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                G[3 + k] += d.penalty * spin * a[k];
+                if (with_hessian)
+                  for (unsigned int l = k; l < 4; ++l)
+                    H[n_ad * (3 + k) + 3 + l] += d.penalty * a[k] * a[l];
+              }
+          }
+        if (with_hessian)
+          for (unsigned int a = 0; a < n_ad; ++a)
+            for (unsigned int b = 0; b < a; ++b)
+              H[n_ad * a + b] = H[n_ad * b + a];
       }
 
       /**
@@ -167,6 +341,30 @@ namespace cosmo
       }
     } // namespace
 
+    void
+    RodProblem::fix_element_data()
+    {
+      // No expression names t: the natural states and forces are the start's
+      // at every load (a LawRangeError there is the parse's, raised before).
+      fixed_natural.clear();
+      fixed_force.clear();
+      if (element_data_depend_on_load || law->parameter_depends_on_load())
+        return;
+      const double h = element_length();
+      std::vector<materials::RodNaturalState> natural(n_elements);
+      std::vector<Tensor<1, 3>>               force(n_elements);
+      for (unsigned int e = 0; e < n_elements; ++e)
+        {
+          const double s = (e + 0.5) * h;
+          natural[e]     = natural_state(s, start);
+          const auto f   = evaluate(distributed_force, s, start);
+          for (unsigned int i = 0; i < 3; ++i)
+            force[e][i] = f[i];
+        }
+      fixed_natural = std::move(natural);
+      fixed_force   = std::move(force);
+    }
+
     RodElementData
     RodProblem::element_data(const double t) const
     {
@@ -222,20 +420,31 @@ namespace cosmo
           return;
         }
       const double         s  = (e + 0.5) * d.h;
-      const Vector<double> fv = evaluate(distributed_force, s, d.t);
-      const Tensor<1, 3>   chord0  = reference_positions[(e + 1) % n_nodes()] - reference_positions[e];
-      Tensor<1, 3>         f;
-      for (unsigned int i = 0; i < 3; ++i)
-        f[i] = fv[i];
+      const Tensor<1, 3> chord0 = reference_positions[(e + 1) % n_nodes()] - reference_positions[e];
+      Tensor<1, 3>       f;
+      if (!fixed_force.empty())
+        f = fixed_force[e];
+      else
+        {
+          const Vector<double> fv = evaluate(distributed_force, s, d.t);
+          for (unsigned int i = 0; i < 3; ++i)
+            f[i] = fv[i];
+        }
       const std::array<double, n_ad>  y = chord_variables(x, chord0);
       double                          W = 0;
       std::array<double, n_ad>        gy{};
       std::array<double, n_ad * n_ad> Hy{};
       try
         {
-          const auto natural = natural_state(s, d.t);
-          materials::internal::differentiate<n_ad>(
-            y, [&](const auto &z) { return element_energy(z, d, *law, natural, e); }, jacobian, W, gy, Hy);
+          const auto natural = fixed_natural.empty() ? natural_state(s, d.t) : fixed_natural[e];
+          // COSMO_NESTED_AD: nested AD in all 11 variables, the reference of
+          // the chain rule (tests/rod_validation.py 'chain_rule', benchmarks).
+          static const bool nested_ad = std::getenv("COSMO_NESTED_AD") != nullptr;
+          if (nested_ad)
+            materials::internal::differentiate<n_ad>(
+              y, [&](const auto &z) { return element_energy(z, d, *law, natural, e); }, jacobian, W, gy, Hy);
+          else
+            element_energy_by_chain_rule(y, d, *law, natural, e, jacobian, W, gy, Hy);
         }
       catch (materials::LawRangeError &error)
         {

@@ -217,6 +217,13 @@ namespace cosmo
                         "state's rod-NNNN.vtu, a tube about the centreline of this radius per "
                         "length L, its circles in the directors' (d1, d2) planes (the twist "
                         "shows), coloured by the strains and resultants; 0: none.");
+      prm.declare_entry("Body", "tube", Patterns::Selection("tube|section"),
+                        "How the body is drawn: tube (of 'Tube radius'); section: the part-1 "
+                        "cross-section the law was computed from (Law = section, one "
+                        "section), its boundary as deformed at its natural shape swept along "
+                        "the centreline in each node's director frame, coloured by the "
+                        "section's von Mises stress there (section_stress) and by the rod's "
+                        "strains and resultants: body-NNNN.vtu (body.pvd).");
       prm.leave_subsection();
     }
 
@@ -237,6 +244,9 @@ namespace cosmo
       imperfection      = parse_expression(prm, "Rod", "Natural strain imperfection", 6);
       growth            = parse_expression(prm, "Rod", "Growth", 1);
       distributed_force = parse_expression(prm, "Rod", "Distributed force", 3);
+      element_data_depend_on_load = false;
+      for (const char *entry : {"Natural strains", "Natural strain imperfection", "Growth", "Distributed force"})
+        element_data_depend_on_load |= materials::expression_names(prm.get(entry), "t");
       seam_twist        = parse_expression(prm, "Rod", "Ring twist", 1);
       rotation_limit    = prm.get_double("Largest element rotation") * M_PI / 180.;
       prm.enter_subsection("Contact");
@@ -273,10 +283,16 @@ namespace cosmo
       prm.enter_subsection("Output");
       output_directory = prm.get("Output directory");
       tube_radius      = prm.get_double("Tube radius");
+      section_body     = prm.get("Body") == "section";
       const std::string topology_entry = prm.get("Link, twist and writhe");
       topology = topology_entry == "always" || (topology_entry == "auto" && n_elements <= 2000);
       prm.leave_subsection();
       compute_law_input(*new_law, output_directory);
+      if (section_body && new_law->section_outline().empty())
+        throw io::InputError("Output", "Body", "section",
+                             "a law with a part-1 cross-section to sweep (Law = section with one "
+                             "rod_cross_section result and its outline.csv); this law has none: "
+                             "use 'tube'");
       law = new_law;
       // The start lies in the law's range (a family's parameter at every element).
       for (unsigned int e = 0; e < n_elements; ++e)

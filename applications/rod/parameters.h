@@ -77,6 +77,8 @@ namespace cosmo
       Expression   imperfection;             ///< 6 components of (s, t), added to any law's natural strains
       Expression   growth;                   ///< the natural stretch g(s, t)
       Expression   distributed_force;        ///< per reference length, of (s, t)
+      /// Whether the natural strains, imperfection, growth or distributed force name t.
+      bool         element_data_depend_on_load = true;
       Expression   seam_twist;               ///< a ring's added twist in turns, of t
       std::shared_ptr<const materials::RodLaw> law;
       std::array<RodEnd, 2>                    ends;
@@ -90,6 +92,7 @@ namespace cosmo
       solvers::ContinuationSettings continuation_settings;
       std::string                output_directory;
       double                     tube_radius = 0.02; ///< of the tube drawn as the body, per length (0: none)
+      bool                       section_body = false; ///< the body drawn as the law's swept section
       /// Link, twist and writhe of a ring or a rod clamped at both ends: the
       /// writhe costs O(N^2), so 'auto' computes them up to 2000 elements.
       bool                       topology = true;

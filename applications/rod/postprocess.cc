@@ -370,6 +370,47 @@ namespace cosmo
           }
         return out;
       }
+
+      /**
+       * The rod drawn as its own cross-section: each outline segment of the
+       * law's section (points P with placement w(P) in the director frame
+       * at the natural state) swept along each element, x = r + R w at its
+       * nodes, bilinear patches; the section's stress there and the
+       * element's strains and resultants as fields.
+       */
+      io::VTUPatches<2>
+      swept_section(const RodProblem &p, const Vector<double> &X, const double t,
+                    const materials::RodLaw::SectionOutline &outline)
+      {
+        auto fields = strain_and_resultant_fields();
+        fields.emplace_back("section_stress", 1);
+        io::VTUPatches<2> out(fields);
+        out.set_time(t);
+        for (unsigned int e = 0; e < p.n_elements; ++e)
+          {
+            const auto m = sample(p, X, e, t);
+            for (const auto &loop : outline)
+              for (std::size_t j = 0; j < loop.size(); ++j)
+                {
+                  out.begin_patch(1);
+                  for (unsigned int k = 0; k < 4; ++k)
+                    {
+                      const unsigned int i = k % 2 == 0 ? 0 : 2; // node a, node b
+                      const auto &       P = loop[(j + k / 2) % loop.size()];
+                      Point<3>           x = m.x[i];
+                      for (unsigned int c = 0; c < 3; ++c)
+                        for (unsigned int d = 0; d < 3; ++d)
+                          x[c] += m.frames[i][c][d] * P[2 + d];
+                      auto v = strains_and_resultants(m, i);
+                      v.push_back(P[5]);
+                      out.set_position(k, x);
+                      out.set_values(k, v);
+                    }
+                  out.end_patch();
+                }
+          }
+        return out;
+      }
     } // namespace
 
     std::vector<std::pair<std::string, std::string>>
@@ -379,7 +420,10 @@ namespace cosmo
       const Vector<double> X = configuration(solution, load_parameter);
       std::vector<std::pair<std::string, std::string>> files = {
         {"rod", centreline(*this, X, load_parameter, nullptr).write_output(output_directory, "rod-" + tag, false)}};
-      if (tube_radius > 0)
+      if (section_body)
+        files.emplace_back("body", swept_section(*this, X, load_parameter, law->section_outline())
+                                     .write_output(output_directory, "body-" + tag, false));
+      else if (tube_radius > 0)
         files.emplace_back("tube", tube(*this, X, load_parameter, tube_radius * length)
                                      .write_output(output_directory, "tube-" + tag, false));
       return files;

@@ -63,6 +63,7 @@ namespace cosmo
             node_dofs[cell->vertex_index(local_slot[i] / 7)][local_slot[i] % 7] = dofs[i];
         }
       make_reference();
+      fix_element_data();
       roll_gauge = ring && roll_symmetric();
       spin_gauge = !ring && ends[0].support == RodEnd::Support::pinned &&
                    ends[1].support == RodEnd::Support::pinned;

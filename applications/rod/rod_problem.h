@@ -279,6 +279,16 @@ namespace cosmo
       prescribed_values(double t) const;
       RodElementData
       element_data(double t) const;
+      /**
+       * Each element's natural state and distributed force, evaluated once
+       * when no expression depends on t (else empty: evaluated per
+       * assembly, where muparser and its allocations cost a third of a
+       * residual at 10^4 elements, benchmarks/README.md).
+       */
+      std::vector<materials::RodNaturalState> fixed_natural;
+      std::vector<Tensor<1, 3>>               fixed_force;
+      void
+      fix_element_data();
       /// Element e's energy and derivatives in the configuration X (x: its 14 local values).
       void
       element_contribution(const RodElementData &      d,

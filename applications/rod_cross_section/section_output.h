@@ -52,6 +52,11 @@ namespace cosmo
       /// surface-NNNN.vtu: the surface layers with their growth and stress (as write_rod_piece).
       std::string
       write_surface_layers(const std::string &name) const;
+      /// outline.csv: the section's boundary at this state, as closed loops of
+      /// points (X1, X2) with the section placement w and the von Mises stress
+      /// there (what the rod application sweeps along a whole rod).
+      void
+      write_outline() const;
 
     private:
       const SectionDiscretization & discretization;

@@ -4,8 +4,10 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_out_faces.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <cosmo/io/output.h>
 #include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/helix.h>
 #include <cosmo/kinematics/section.h>
@@ -15,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace cosmo
 {
@@ -112,6 +116,8 @@ namespace cosmo
       const SectionVTUWriter writer(discretization, *this, solution, strains_of(solution), load_parameter);
       std::vector<std::pair<std::string, std::string>> files = {
         {"solution", writer.write_section(tag)}, {"rod", writer.write_rod_piece("rod-" + tag)}};
+      if (!distributed_mesh)
+        writer.write_outline();
       // (a distributed mesh: every rank writes its piece, with or without faces of its own)
       if (!surface_layers.layers().empty() &&
           (!discretization.get_surface_faces().empty() || distributed_mesh))
@@ -299,6 +305,88 @@ namespace cosmo
         }
       vtu.set_time(t);
       return vtu.write_output(parameters.output_directory, name, parameters.distributed_mesh);
+    }
+
+    namespace
+    {
+      /// A boundary face's points: (X1, X2, w1, w2, w3, von Mises stress) each.
+      using OutlineSegment = std::vector<std::array<double, 6>>;
+
+      /// The segments chained end to end into closed loops (a hole is a loop
+      /// of its own); the shared end points once.
+      std::vector<OutlineSegment>
+      chain_into_loops(std::vector<OutlineSegment> segments, const double tolerance)
+      {
+        auto same = [tolerance](const std::array<double, 6> &a, const std::array<double, 6> &b) {
+          return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance;
+        };
+        std::vector<OutlineSegment> loops;
+        std::vector<bool>           used(segments.size(), false);
+        for (std::size_t first = 0; first < segments.size(); ++first)
+          if (!used[first])
+            {
+              used[first]         = true;
+              OutlineSegment loop = segments[first];
+              for (bool extended = true; extended && !same(loop.back(), loop.front());)
+                {
+                  extended = false;
+                  for (std::size_t k = 0; k < segments.size() && !extended; ++k)
+                    if (!used[k] && (same(segments[k].front(), loop.back()) ||
+                                     same(segments[k].back(), loop.back())))
+                      {
+                        OutlineSegment next = segments[k];
+                        if (!same(next.front(), loop.back()))
+                          std::reverse(next.begin(), next.end());
+                        loop.insert(loop.end(), next.begin() + 1, next.end());
+                        used[k] = extended = true;
+                      }
+                }
+              if (same(loop.back(), loop.front()))
+                loop.pop_back();
+              loops.push_back(loop);
+            }
+        return loops;
+      }
+    } // namespace
+
+    void
+    SectionVTUWriter::write_outline() const
+    {
+      // The postprocessor of solution-NNNN.vtu on the boundary faces: the
+      // placement w (its first three columns) and the von Mises stress (its
+      // seventh) at the faces' points, curved by the section's mapping.
+      Vector<double>       u(solution.begin(), solution.begin() + discretization.n_u());
+      SectionPostprocessor post(parameters.materials, strains, t);
+      DataOutFaces<2>      out;
+      out.attach_dof_handler(discretization.get_dof_handler());
+      out.add_data_vector(u, post);
+      out.build_patches(discretization.get_mapping(), parameters.degree);
+      constexpr unsigned int      n_data = 12; // the postprocessor's columns
+      std::vector<OutlineSegment> segments;
+      for (const auto &patch : out.get_patches())
+        {
+          OutlineSegment segment;
+          for (unsigned int k = 0; k < patch.data.n_cols(); ++k)
+            {
+              const double xi = double(k) / patch.n_subdivisions;
+              Point<2>     X  = (1 - xi) * patch.vertices[0] + xi * patch.vertices[1];
+              if (patch.points_are_available)
+                X = Point<2>(patch.data(n_data, k), patch.data(n_data + 1, k));
+              segment.push_back({{X[0], X[1], patch.data(0, k), patch.data(1, k), patch.data(2, k),
+                                  patch.data(6, k)}});
+            }
+          segments.push_back(segment);
+        }
+      const double diameter = discretization.properties().diameter;
+      std::ostringstream csv;
+      csv << "loop,X1,X2,w1,w2,w3,von_Mises_stress\n" << std::setprecision(17);
+      const auto loops = chain_into_loops(segments, 1e-9 * diameter);
+      for (std::size_t l = 0; l < loops.size(); ++l)
+        for (const auto &p : loops[l])
+          csv << l << ',' << p[0] << ',' << p[1] << ',' << p[2] << ',' << p[3] << ',' << p[4] << ','
+              << p[5] << '\n';
+      io::write_file_atomically(parameters.output_directory + "/outline.csv",
+                                [&csv](std::ostream &o) { o << csv.str(); });
     }
   } // namespace rod
 } // namespace cosmo

@@ -190,6 +190,10 @@ namespace cosmo
      */
     template <typename Number>
     std::array<Number, 6>
+    helicoidal_strains_of(const Tensor<1, 3, Number> &theta, const Tensor<1, 3, Number> &u, const double h);
+
+    template <typename Number>
+    std::array<Number, 6>
     helicoidal_strains(const Tensor<1, 3, Number> &r_a,
                        const Quaternion<Number> &  q_a,
                        const Tensor<1, 3, Number> &r_b,
@@ -202,6 +206,20 @@ namespace cosmo
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           u[i] += R_a[j][i] * (r_b[j] - r_a[j]);
+      return helicoidal_strains_of(theta, u, h);
+    }
+
+    /**
+     * The strains from the relative rotation vector theta = log(R_a^T R_b)
+     * and the chord in a's frame u = R_a^T (r_b - r_a): kappa h = theta,
+     * nu h = J_L(theta)^-1 u (what helicoidal_strains() computes; apart, so
+     * that the element's derivatives can go through (theta, u), the rod
+     * application's chain rule).
+     */
+    template <typename Number>
+    std::array<Number, 6>
+    helicoidal_strains_of(const Tensor<1, 3, Number> &theta, const Tensor<1, 3, Number> &u, const double h)
+    {
       // J_L^-1 u = u - theta x u / 2 + gamma theta x (theta x u).
       const Number               g  = internal::left_jacobian_inverse_coefficient(internal::squared_norm(theta));
       const Tensor<1, 3, Number> tu = internal::cross(theta, u);

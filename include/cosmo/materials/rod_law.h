@@ -7,10 +7,12 @@
 #include <cosmo/materials/plate_law.h>
 
 #include <array>
+#include <cctype>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 #include <type_traits>
 
 /**
@@ -84,6 +86,12 @@ namespace cosmo
       {
         return 0;
       }
+      /// Whether parameter_at() depends on t (its expression names t).
+      virtual bool
+      parameter_depends_on_load() const
+      {
+        return false;
+      }
       /**
        * The natural strains (nu, kappa) the law itself gives at parameter p
        * (a part-1 section's natural shape), or nothing: then the rod's own
@@ -121,6 +129,21 @@ namespace cosmo
       read_computed(const std::string & /*directory*/, const std::string & /*note*/)
       {}
 
+      /**
+       * The cross-section the law was computed from, to draw the rod as its
+       * section swept along the centreline: closed loops (the boundary, and
+       * a hole's) of points, each (X1, X2, w1, w2, w3, stress): the reference
+       * point, its placement w in the director frame at the natural state
+       * and the section's von Mises stress there. Empty if the law has no
+       * section (a part-1 outline.csv beside the law's result).
+       */
+      using SectionOutline = std::vector<std::vector<std::array<double, 6>>>;
+      virtual SectionOutline
+      section_outline() const
+      {
+        return {};
+      }
+
       /// energy_derivatives() of the member at parameter p (LawRangeError outside its range).
       virtual void
       energy_derivatives_at(const double                 /*p*/,
@@ -156,6 +179,18 @@ namespace cosmo
      * the stiffness times w^2; a nonlinear law is evaluated at the weighted
      * strain, which is a penalty of the same stiffness at small strain only.
      */
+    /// Whether a muparser expression names `variable` (an identifier of its own, not part of one).
+    inline bool
+    expression_names(const std::string &text, const std::string &variable)
+    {
+      auto is_name = [](const char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+      for (std::size_t at = text.find(variable); at != std::string::npos; at = text.find(variable, at + 1))
+        if ((at == 0 || !is_name(text[at - 1])) &&
+            (at + variable.size() == text.size() || !is_name(text[at + variable.size()])))
+          return true;
+      return false;
+    }
+
     struct RodNaturalState
     {
       std::array<double, 6> reference_strains{{0, 0, 1, 0, 0, 0}};

@@ -79,6 +79,38 @@ namespace cosmo
       }
     } // namespace
 
+    RodLaw::SectionOutline
+    read_outline(const std::string &file)
+    {
+      // loop,X1,X2,w1,w2,w3,von_Mises_stress (rod_cross_section's outline.csv);
+      // absent or unreadable: no outline (the body is then drawn as a tube).
+      RodLaw::SectionOutline loops;
+      std::ifstream          in(file);
+      std::string            line;
+      std::getline(in, line);
+      while (std::getline(in, line))
+        try
+        {
+          const auto cells = split_csv(line);
+          if (cells.size() != 7)
+            return {};
+          const std::size_t l = std::stoul(cells[0]);
+          if (l > loops.size())
+            return {};
+          if (l == loops.size())
+            loops.emplace_back();
+          std::array<double, 6> p;
+          for (unsigned int k = 0; k < 6; ++k)
+            p[k] = std::stod(cells[1 + k]);
+          loops[l].push_back(p);
+        }
+        catch (std::exception &)
+        {
+          return {};
+        }
+      return loops;
+    }
+
     std::string
     application_of_parameter_file(const std::string &file)
     {
@@ -280,6 +312,9 @@ namespace cosmo
         }
       build_curves();
       check_positive_definite();
+      outline.clear();
+      if (members.size() == 1 && !members[0].strip)
+        outline = read_outline((path.parent_path() / "outline.csv").string());
     }
 
     void

@@ -51,6 +51,10 @@ namespace cosmo
     SectionResult
     read_section_summary(const std::string &file, const std::string &section, const std::string &entry);
 
+    /// The loops of a rod_cross_section outline.csv (empty if absent or malformed).
+    RodLaw::SectionOutline
+    read_outline(const std::string &file);
+
     /// "strip" for a parameter file with a subsection 'Strip' (part 2), else
     /// "rod_cross_section" (part 1): the application a 'Section file' names.
     std::string
@@ -107,6 +111,11 @@ namespace cosmo
                             std::array<double, 36> &     ddW) const override;
       double
       parameter_at(double s, double t) const override;
+      bool
+      parameter_depends_on_load() const override
+      {
+        return members.size() > 1 && expression_names(parameter_text, "t");
+      }
       std::optional<std::array<double, 6>>
       natural_strains_at(double p) const override;
       bool
@@ -116,6 +125,12 @@ namespace cosmo
       }
       std::string
       description() const override;
+      /// One part-1 section's outline.csv, beside its summary.json (none for a family or a strip).
+      SectionOutline
+      section_outline() const override
+      {
+        return outline;
+      }
 
       /// The natural strains and stiffness at p (LawRangeError outside the range).
       SectionResult
@@ -136,6 +151,7 @@ namespace cosmo
       std::shared_ptr<FunctionParser<2>> parameter;
       std::vector<SectionResult>         members;
       unsigned int                       holes = 0;
+      SectionOutline                     outline;
       /// Per natural strain and per stiffness entry (upper triangle), over p.
       std::array<base::MonotoneCubic, 6>  strain_curves;
       std::array<base::MonotoneCubic, 36> stiffness_curves; ///< upper triangle (a <= b) used
