@@ -886,11 +886,93 @@ namespace
   }
 } // namespace
 
+  /**
+   * The solver's banded Cholesky (an open rod's Hessian: 7 unknowns a node,
+   * coupled to the neighbours, half-bandwidth 13) against MUMPS's LDL^T
+   * (COSMO_BANDED_CHOLESKY=0) and LAPACK's eigenvalues: K - sigma I, K a
+   * block-tridiagonal SPD matrix; sigma below its spectrum (positive
+   * definite: the banded path, no negative eigenvalue) and inside it (the
+   * Cholesky fails, MUMPS counts them). The solutions of the two
+   * factorizations differ by round-off: eps times the condition number.
+   */
+  void
+  banded_cholesky()
+  {
+    constexpr unsigned int per_node = 7, nodes = 150, n = per_node * nodes;
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int k = 0; k < nodes; ++k)
+      for (unsigned int a = 0; a < 2 * per_node && per_node * k + a < n; ++a)
+        for (unsigned int b = 0; b < 2 * per_node && per_node * k + b < n; ++b)
+          dsp.add(per_node * k + a, per_node * k + b);
+    SparsityPattern sp;
+    sp.copy_from(dsp);
+    for (const double sigma : {-0.05, 0.3})
+      {
+        SparseMatrix<double> A(sp);
+        FullMatrix<double>   dense(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (auto it = sp.begin(i); it != sp.end(i); ++it)
+            {
+              const unsigned int j = it->column();
+              const bool same_node = i / per_node == j / per_node, same_slot = i % per_node == j % per_node;
+              // a chain of springs per slot (eigenvalues in [0, 4] times the slot's
+              // weight) plus a small symmetric coupling within each node
+              double v = same_node ? (i == j ? 2. : 0.001 * std::sin(1. + i + j)) : (same_slot ? -1. : 0.);
+              v *= 1 + 0.1 * (i % per_node) * (j % per_node == i % per_node);
+              if (i == j)
+                v += 0.02 - sigma;
+              A.set(i, j, v);
+              dense(i, j) = v;
+            }
+        Vector<double> b(n);
+        for (unsigned int i = 0; i < n; ++i)
+          b[i] = std::cos(0.3 * i);
+        std::vector<Vector<double>> x;
+        std::vector<int>            negative;
+        for (const char *banded : {"1", "0"})
+          {
+            setenv("COSMO_BANDED_CHOLESKY", banded, 1);
+            solvers::SparseDirectSolver solver;
+            solver.factorize(A);
+            std::vector<Vector<double>> y = {b, b};
+            y[1] *= 2.;
+            solver.solve(y); // several right-hand sides
+            Vector<double> z = b;
+            solver.solve(z); // one
+            y[1] *= 0.5;
+            y[1] -= z;
+            check("banded: one right-hand side as several", y[1].linfty_norm() <= 1e-14 * z.linfty_norm());
+            x.push_back(z);
+            negative.push_back(solver.n_negative_eigenvalues());
+          }
+        unsetenv("COSMO_BANDED_CHOLESKY");
+        LAPACKFullMatrix<double> L(n, n);
+        L = dense;
+        L.compute_eigenvalues();
+        int    lapack_negative = 0;
+        double smallest = 1e300, largest = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            lapack_negative += L.eigenvalue(i).real() < 0;
+            smallest = std::min(smallest, std::abs(L.eigenvalue(i).real()));
+            largest  = std::max(largest, std::abs(L.eigenvalue(i).real()));
+          }
+        Vector<double> d = x[0];
+        d -= x[1];
+        std::cout << "sigma = " << sigma << ": negative eigenvalues banded path " << negative[0] << ", MUMPS "
+                  << negative[1] << ", LAPACK " << lapack_negative << "; solutions differ by "
+                  << d.linfty_norm() / x[1].linfty_norm() << " (condition " << largest / smallest << ")\n";
+        check("banded: the inertia", negative[0] == lapack_negative && negative[1] == lapack_negative);
+        check("banded: the solution of MUMPS's",
+              d.linfty_norm() <= 1e2 * 2.2e-16 * largest / smallest * x[1].linfty_norm());
+      }
+  }
+
 int
 main(int argc, char **argv)
 {
   const auto mpi = cosmo::io::ranks::init_mpi(argc, argv, 1);
-  const cosmo_test::Cases cases = {{"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
+  const cosmo_test::Cases cases = {{"banded_cholesky", banded_cholesky}, {"pitchfork", pitchfork}, {"fold", fold}, {"cantilever", cantilever},
                                    {"secondary_bifurcation", secondary_bifurcation},
                                    {"bordered_ordering", bordered_ordering},
                                    {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},

@@ -295,6 +295,13 @@ namespace cosmo
       std::vector<double> values;
       std::vector<bool>   upper; // storage position is in the upper triangle
 
+      // The banded Cholesky fast path (band_try()): the half-bandwidth of
+      // the analysed pattern (-1: not banded enough), LAPACK's upper band
+      // storage of the last matrix, and whether it holds its Cholesky factor.
+      int                 band_kd = -1;
+      std::vector<double> band;
+      bool                band_factorized = false;
+
       /// JOB = -1 on MPI_COMM_SELF, or on all ranks when they share factorizations.
       explicit MumpsData(const bool on_all_ranks)
       {
@@ -359,6 +366,40 @@ namespace cosmo
       }
 #endif
     };
+
+#ifdef COSMO_WITH_MUMPS
+    namespace
+    {
+      extern "C" void
+      dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, int *info);
+      extern "C" void
+      dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab,
+              const int *ldab, double *b, const int *ldb, int *info);
+
+      /**
+       * The half-bandwidth of a pattern if a banded Cholesky pays, else -1.
+       * An open rod's Hessian (7 unknowns a node, its neighbours') has
+       * kd = 13: LAPACK's dpbtrf factorizes it in n kd^2 flops without any
+       * of the multifrontal bookkeeping, 8-10x faster than MUMPS at 7e4
+       * unknowns (benchmarks/README.md); bordered matrices (dense rows), a
+       * ring or self-contact are not banded and stay with MUMPS. Off with
+       * COSMO_BANDED_CHOLESKY=0.
+       */
+      int
+      useful_bandwidth(const SparsityPattern &sp)
+      {
+        const char *v   = std::getenv("COSMO_BANDED_CHOLESKY"); // (read at each analysis)
+        const bool  off = v && std::string(v) == "0";
+        if (off || sp.n_rows() < 1000)
+          return -1;
+        std::size_t kd = 0;
+        for (unsigned int row = 0; row < sp.n_rows(); ++row)
+          for (auto it = sp.begin(row); it != sp.end(row); ++it)
+            kd = std::max<std::size_t>(kd, it->column() > row ? it->column() - row : row - it->column());
+        return kd <= 64 ? static_cast<int>(kd) : -1;
+      }
+    } // namespace
+#endif
 
     SparseDirectSolver::SparseDirectSolver(const Kind kind)
       : solver_kind(kind)
@@ -478,6 +519,28 @@ namespace cosmo
           mumps->call(1); // analysis
           analysed_pattern = &sp;
           analysed_nnz     = sp.n_nonzero_elements();
+          mumps->band_kd   = mumps->m.shared ? -1 : useful_bandwidth(sp);
+        }
+      // A symmetric positive definite banded matrix: its Cholesky factor
+      // (success is the proof of definiteness: no negative eigenvalue);
+      // otherwise MUMPS's LDL^T, which counts them.
+      mumps->band_factorized = false;
+      if (mumps->band_kd >= 0)
+        {
+          const int n = A.m(), kd = mumps->band_kd, ldab = kd + 1;
+          mumps->band.assign(static_cast<std::size_t>(ldab) * n, 0.);
+          for (int row = 0; row < n; ++row)
+            for (auto it = A.begin(row); it != A.end(row); ++it)
+              if (static_cast<int>(it->column()) >= row)
+                mumps->band[static_cast<std::size_t>(it->column()) * ldab + kd + row - it->column()] = it->value();
+          int info = 0;
+          dpbtrf_("U", &n, &kd, mumps->band.data(), &ldab, &info);
+          if (info == 0)
+            {
+              mumps->band_factorized = true;
+              n_negative             = 0;
+              return;
+            }
         }
       // Values in the order of the analysed pattern: the matrix iterators walk
       // the storage in the same row-wise order as the pattern's.
@@ -507,6 +570,11 @@ namespace cosmo
     SparseDirectSolver::factorization_flops() const
     {
 #ifdef COSMO_WITH_MUMPS
+      if (solver_kind == Kind::mumps && mumps && mumps->band_factorized)
+        {
+          const double n = mumps->band.size() / (mumps->band_kd + 1.), kd = mumps->band_kd;
+          return n * kd * (kd + 3); // dpbtrf's flops, about n (kd^2 + 3 kd)
+        }
       if (solver_kind == Kind::mumps && mumps)
         return mumps->id.rinfog[2];
 #endif
@@ -517,6 +585,8 @@ namespace cosmo
     SparseDirectSolver::factor_entries() const
     {
 #ifdef COSMO_WITH_MUMPS
+      if (solver_kind == Kind::mumps && mumps && mumps->band_factorized)
+        return static_cast<double>(mumps->band.size());
       if (solver_kind == Kind::mumps && mumps)
         {
           // INFOG(29); negative: millions of entries
@@ -536,6 +606,14 @@ namespace cosmo
           return;
         }
 #ifdef COSMO_WITH_MUMPS
+      if (mumps->band_factorized)
+        {
+          const int n = x.size(), kd = mumps->band_kd, ldab = kd + 1, one = 1;
+          int       info = 0;
+          dpbtrs_("U", &n, &kd, &one, mumps->band.data(), &ldab, x.data(), &n, &info);
+          AssertThrow(info == 0, ExcMessage("dpbtrs failed"));
+          return;
+        }
       auto &id = mumps->id;
       id.nrhs  = 1;
       id.lrhs  = x.size();
@@ -560,11 +638,21 @@ namespace cosmo
       std::vector<double> block(n * xs.size());
       for (std::size_t k = 0; k < xs.size(); ++k)
         std::copy(xs[k].begin(), xs[k].end(), block.begin() + k * n);
-      auto &id = mumps->id;
-      id.nrhs  = xs.size();
-      id.lrhs  = n;
-      id.rhs   = block.data();
-      mumps->call(3);
+      if (mumps->band_factorized)
+        {
+          const int nn = n, kd = mumps->band_kd, ldab = kd + 1, nrhs = xs.size();
+          int       info = 0;
+          dpbtrs_("U", &nn, &kd, &nrhs, mumps->band.data(), &ldab, block.data(), &nn, &info);
+          AssertThrow(info == 0, ExcMessage("dpbtrs failed"));
+        }
+      else
+        {
+          auto &id = mumps->id;
+          id.nrhs  = xs.size();
+          id.lrhs  = n;
+          id.rhs   = block.data();
+          mumps->call(3);
+        }
       for (std::size_t k = 0; k < xs.size(); ++k)
         std::copy(block.begin() + k * n, block.begin() + (k + 1) * n, xs[k].begin());
 #endif
