@@ -375,9 +375,15 @@ namespace cosmo
           return b;
         }
 
+        /// How many factorizations this system made, and where the last was.
+        unsigned int   setups = 0;
+        Vector<double> setup_X;
+
         int
         setup_jacobian(const Vector<double> &X) override
         {
+          ++setups;
+          setup_X = X;
           Vector<double> U(X.begin(), X.begin() + n), Rl(n);
           problem.set_load_parameter(X[n]);
           if (problem.load_derivative(U, X[n], Rl) != 0)
@@ -738,7 +744,35 @@ namespace cosmo
       // step instead of two (doc/theory-continuation.md 1).
       static const bool take_guess = std::getenv("COSMO_NO_PREDICTOR_STEP") == nullptr;
       at_predictor.valid = false;
-      NewtonResult r     = newton_solve(system, X, newton, take_guess);
+      const Vector<double> X_predictor = X;
+      // The analysis keeps the predictor's factorization only when the
+      // step was small against the scale of the unknowns (sqrt(eps): the
+      // Jacobian then differs from the state's by ~1e-8 relative, like
+      // the difference steps elsewhere; on the flat branch the step is
+      // 6e-11 to 1.4e-9 of it). A residual below the tolerance does not
+      // bound the step where J is nearly singular (a small-amplitude
+      // branch start, say): there the state is analysed afresh.
+      auto keep_predictor_factorization = [&](const Vector<double> &X1) {
+        Vector<double> dU(n), U1(X1.begin(), X1.begin() + n);
+        for (unsigned int i = 0; i < n; ++i)
+          dU[i] = X1[i] - X_predictor[i];
+        const double near = std::sqrt(std::numeric_limits<double>::epsilon());
+        if (masked_max(dU, mask) <= near * problem.unknowns_scale(U1) &&
+            std::abs(X1[n] - X_predictor[n]) <= near * (1 + std::abs(X1[n])))
+          {
+            at_predictor.U              = U1;
+            at_predictor.lambda         = X1[n];
+            at_predictor.J_inv_R_lambda = system.J_inv_R_lambda();
+            at_predictor.valid          = true;
+          }
+      };
+      NewtonResult r = newton_solve(system, X, newton, take_guess);
+      // Newton from the predictor converged on the factorization made there
+      // (its only one: one iteration, where round-off kept the predictor
+      // above the tolerance, e.g. the rod's stiff extension, EA/h = 1e7):
+      // kept as the state's if the step was small.
+      if (r.iterations > 0 && take_guess && system.setups == 1 && same_point(system.setup_X, X_predictor))
+        keep_predictor_factorization(X);
       if (r.iterations == 0 && take_guess)
         {
           Vector<double> R(n + 1), d(n + 1);
@@ -759,23 +793,8 @@ namespace cosmo
                   r.residual_norm = norm;
                 }
             }
-          // The analysis keeps the predictor's factorization only when the
-          // step was small against the scale of the unknowns (sqrt(eps): the
-          // Jacobian then differs from the state's by ~1e-8 relative, like
-          // the difference steps elsewhere; on the flat branch the step is
-          // 6e-11 to 1.4e-9 of it). A residual below the tolerance does not
-          // bound the step where J is nearly singular (a small-amplitude
-          // branch start, say): there the state is analysed afresh.
-          Vector<double> dU(d.begin(), d.begin() + n), U1(X1.begin(), X1.begin() + n);
-          const double   near = std::sqrt(std::numeric_limits<double>::epsilon());
-          if (converged && masked_max(dU, mask) <= near * problem.unknowns_scale(U1) &&
-              std::abs(d[n]) <= near * (1 + std::abs(X1[n])))
-            {
-              at_predictor.U              = U1;
-              at_predictor.lambda         = X1[n];
-              at_predictor.J_inv_R_lambda = system.J_inv_R_lambda();
-              at_predictor.valid          = true;
-            }
+          if (converged)
+            keep_predictor_factorization(X1);
           if (!converged) // (not seen: Newton from the predictor as before)
             r = newton_solve(system, X, newton);
         }
