@@ -517,6 +517,40 @@ namespace cosmo
     }
 
     int
+    RodProblem::load_derivative(const Vector<double> &U, const double t, Vector<double> &dR)
+    {
+      const bool ends_only = fixed_natural.size() == n_elements && !contact && !ring &&
+                             !ends[0].force_depends_on_load && !ends[1].force_depends_on_load;
+      if (!ends_only)
+        return BifurcationProblem::load_derivative(U, t, dR);
+      // (the base class's step, so that both give the same numbers)
+      const double h = 1e-6 * (1 + std::abs(t));
+      dR.reinit(n_unknowns());
+      assembly::AssemblyTarget target;
+      target.residual    = &dR;
+      target.constraints = &constraints;
+      for (const double sign : {1., -1.})
+        {
+          const Vector<double> X = configuration(U, t + sign * h);
+          const RodElementData d = element_data(t + sign * h);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->active_cell_index() == 0 || cell->active_cell_index() + 1 == n_elements)
+              {
+                assembly::CellContribution c(n_local, 0, 13);
+                c.reset(false);
+                cell->get_dof_indices(c.dof_indices);
+                std::array<double, 14> x;
+                element_contribution(d, X, cell->active_cell_index(), x, false, c);
+                if (!c.admissible)
+                  return 1;
+                c.residual *= sign / (2 * h);
+                assembly::add_cell_contribution(c, target);
+              }
+        }
+      return 0;
+    }
+
+    int
     RodProblem::assemble(const Vector<double> &U, const double t, Vector<double> *R, const bool jacobian)
     {
       const Vector<double> X = configuration(U, t);

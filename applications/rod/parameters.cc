@@ -81,6 +81,7 @@ namespace cosmo
         end.displacement = parse_expression(prm, name, "Displacement", 3);
         end.rotation     = parse_expression(prm, name, "Rotation", 3);
         end.force        = parse_expression(prm, name, "Force", 3);
+        end.force_depends_on_load = materials::expression_names(prm.get("Force"), "t");
         // A dead force does no work where the position is prescribed: say so
         // rather than ignore it.
         if (end.support == RodEnd::Support::clamped || end.support == RodEnd::Support::pinned)

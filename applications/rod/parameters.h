@@ -44,6 +44,7 @@ namespace cosmo
       Expression displacement; ///< from the reference position, of t (3)
       Expression rotation;     ///< rotation vector applied to the reference frame, of t (3)
       Expression force;        ///< dead force on the end, of t (3)
+      bool       force_depends_on_load = true; ///< its expression names t
     };
 
     struct RodParameters

@@ -107,6 +107,16 @@ namespace cosmo
       {
         return true;
       }
+      /**
+       * dR/dt. Where t enters only through the ends' prescribed values (no
+       * expression of the elements, no end force and no ring's seam names
+       * it; no contact), the central difference of the two end elements
+       * alone: the others' contributions are the same at t +- h and cancel
+       * exactly in the whole residual's difference. Else that difference
+       * (the base class's).
+       */
+      int
+      load_derivative(const Vector<double> &U, double lambda, Vector<double> &dR) override;
       void
       residual_weights(Vector<double> &w) const override;
       void
