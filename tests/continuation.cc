@@ -16,6 +16,7 @@
 #include "test_tools.h"
 
 #include <cmath>
+#include <tuple>
 #include <cstdlib>
 #include <iostream>
 #include <limits>
@@ -419,6 +420,26 @@ namespace
     const bool   pitchfork;
   };
 
+  /// LAPACK's eigenvalues of a symmetric dense matrix: how many are
+  /// negative, the smallest and the largest magnitude.
+  std::tuple<int, double, double>
+  dense_spectrum(const FullMatrix<double> &dense)
+  {
+    LAPACKFullMatrix<double> L(dense.m(), dense.n());
+    L = dense;
+    L.compute_eigenvalues();
+    int    negative = 0;
+    double smallest = 1e300, largest = 0;
+    for (unsigned int i = 0; i < dense.m(); ++i)
+      {
+        const double lambda = L.eigenvalue(i).real();
+        negative += lambda < 0;
+        smallest = std::min(smallest, std::abs(lambda));
+        largest  = std::max(largest, std::abs(lambda));
+      }
+    return {negative, smallest, largest};
+  }
+
   /**
    * The corrector's predictor step (ArclengthContinuation::correct). On
    * the nearly straight branch x + c x^3 = lambda (c = 1e-7) the tangent
@@ -684,16 +705,8 @@ namespace
             negative.push_back(solver.n_negative_eigenvalues());
           }
         unsetenv("COSMO_MUMPS_ORDERING");
-        LAPACKFullMatrix<double> L(n, n);
-        L = dense;
-        L.compute_eigenvalues();
-        int    lapack_negative = 0;
-        double smallest        = 1e300;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            lapack_negative += L.eigenvalue(i).real() < 0;
-            smallest = std::min(smallest, std::abs(L.eigenvalue(i).real()));
-          }
+        const auto [lapack_negative, smallest, largest] = dense_spectrum(dense);
+        (void)largest;
         Vector<double> d = x[1];
         d -= x[0];
         std::cout << "sigma = " << sigma << ": negative pivots QAMD " << negative[0] << ", bordered ND "
@@ -946,17 +959,7 @@ namespace
             negative.push_back(solver.n_negative_eigenvalues());
           }
         unsetenv("COSMO_BANDED_CHOLESKY");
-        LAPACKFullMatrix<double> L(n, n);
-        L = dense;
-        L.compute_eigenvalues();
-        int    lapack_negative = 0;
-        double smallest = 1e300, largest = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            lapack_negative += L.eigenvalue(i).real() < 0;
-            smallest = std::min(smallest, std::abs(L.eigenvalue(i).real()));
-            largest  = std::max(largest, std::abs(L.eigenvalue(i).real()));
-          }
+        const auto [lapack_negative, smallest, largest] = dense_spectrum(dense);
         Vector<double> d = x[0];
         d -= x[1];
         std::cout << "sigma = " << sigma << ": negative eigenvalues banded path " << negative[0] << ", MUMPS "

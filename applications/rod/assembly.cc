@@ -88,15 +88,170 @@ namespace cosmo
         return W;
       }
 
+      /// The strain variables z = (theta, u) of an element, their first and
+      /// (with_hessian) second derivatives in y = (c, q_a, q_b).
+      struct StrainVariables
+      {
+        std::array<double, 6>                   z;
+        std::array<std::array<double, n_ad>, 6> z_y{};
+        std::array<std::array<double, 64>, 3>   theta_qq; ///< in (q_a, q_b), y[3..10]
+        std::array<std::array<double, 49>, 3>   u_cq;     ///< in (c, q_a), y[0..6]
+      };
+
+      /// theta = log(conj(q_a) q_b s) (s: a ring's seam) and u = R(q_a)^T c,
+      /// each map differentiated by nested AD in its own variables.
+      StrainVariables
+      strain_variables(const std::array<double, n_ad> &y, const RodElementData &d, const unsigned int e,
+                       const bool with_hessian)
+      {
+        namespace ad    = materials::internal;
+        const bool seam = d.ring && e + 1 == d.n_elements;
+        StrainVariables                      v;
+        std::array<double, 8>                xq;
+        std::array<double, 3>                th, u;
+        std::array<std::array<double, 8>, 3> dth;
+        std::array<std::array<double, 7>, 3> du;
+        std::array<double, 7>                xu;
+        std::copy(y.begin() + 3, y.end(), xq.begin());
+        std::copy(y.begin(), y.begin() + 7, xu.begin());
+        ad::differentiate_map<8, 3>(
+          xq,
+          [&](const auto &x, auto &out) {
+            using Number = std::decay_t<decltype(x[0])>;
+            const kinematics::Quaternion<Number> a{{x[0], x[1], x[2], x[3]}}, b{{x[4], x[5], x[6], x[7]}};
+            const auto b_seen = seam ? kinematics::quaternion_product(b, as_numbers<Number>(d.seam)) : b;
+            const auto t      = kinematics::relative_rotation_vector(kinematics::relative_quaternion(a, b_seen));
+            for (unsigned int i = 0; i < 3; ++i)
+              out[i] = t[i];
+          },
+          with_hessian, th, dth, v.theta_qq);
+        ad::differentiate_map<7, 3>(
+          xu,
+          [](const auto &x, auto &out) {
+            using Number = std::decay_t<decltype(x[0])>;
+            const auto R = kinematics::quaternion_rotation(kinematics::Quaternion<Number>{{x[3], x[4], x[5], x[6]}});
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                Number w = R[0][i] * x[0];
+                w += R[1][i] * x[1];
+                w += R[2][i] * x[2];
+                out[i] = w;
+              }
+          },
+          with_hessian, u, du, v.u_cq);
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            v.z[i]     = th[i];
+            v.z[3 + i] = u[i];
+            for (unsigned int a = 0; a < 8; ++a)
+              v.z_y[i][3 + a] = dth[i][a];
+            for (unsigned int a = 0; a < 7; ++a)
+              v.z_y[3 + i][a] = du[i][a];
+          }
+        return v;
+      }
+
+      /// W_y = z_y^T W_z and W_yy = z_y^T W_zz z_y + sum_m W_z_m (z_m)_yy
+      /// (the upper triangle).
+      void
+      pull_back_to_chord_and_quaternions(const StrainVariables &         v,
+                                         const std::array<double, 6> &   gz,
+                                         const std::array<double, 36> &  Hz,
+                                         const bool                      with_hessian,
+                                         std::array<double, n_ad> &      G,
+                                         std::array<double, n_ad * n_ad> &H)
+      {
+        for (unsigned int a = 0; a < n_ad; ++a)
+          {
+            double w = 0;
+            for (unsigned int m = 0; m < 6; ++m)
+              w += gz[m] * v.z_y[m][a];
+            G[a] = w;
+          }
+        if (!with_hessian)
+          return;
+        std::array<std::array<double, n_ad>, 6> T{}; // W_zz z_y
+        for (unsigned int m = 0; m < 6; ++m)
+          for (unsigned int b = 0; b < n_ad; ++b)
+            for (unsigned int n = 0; n < 6; ++n)
+              T[m][b] += Hz[6 * m + n] * v.z_y[n][b];
+        for (unsigned int a = 0; a < n_ad; ++a)
+          for (unsigned int b = a; b < n_ad; ++b)
+            {
+              double w = 0;
+              for (unsigned int m = 0; m < 6; ++m)
+                w += v.z_y[m][a] * T[m][b];
+              H[n_ad * a + b] = w;
+            }
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int b = a; b < 8; ++b)
+                H[n_ad * (3 + a) + 3 + b] += gz[i] * v.theta_qq[i][8 * a + b];
+            for (unsigned int a = 0; a < 7; ++a)
+              for (unsigned int b = a; b < 7; ++b)
+                H[n_ad * a + b] += gz[3 + i] * v.u_cq[i][7 * a + b];
+          }
+      }
+
+      /// The quaternions' norm penalty of the nodes the element owns and the
+      /// spin gauge (element_energy's), in closed form, added to W, G, H.
+      void
+      add_penalties(const std::array<double, n_ad> &y, const RodElementData &d, const unsigned int e,
+                    const bool with_hessian, double &W, std::array<double, n_ad> &G,
+                    std::array<double, n_ad * n_ad> &H)
+      {
+        // (1/2) k (|q|^2 - 1)^2 (offset 3 or 7 in y), (1/2) k s^2 of s = a . q_a.
+        auto add = [&](const unsigned int o, const double m, const std::array<double, 4> &grad_m,
+                       const bool quadratic) {
+          W += 0.5 * d.penalty * m * m;
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              G[o + k] += d.penalty * m * grad_m[k];
+              if (with_hessian)
+                for (unsigned int l = k; l < 4; ++l)
+                  H[n_ad * (o + k) + o + l] +=
+                    d.penalty * (grad_m[k] * grad_m[l] + (!quadratic && k == l ? 2 * m : 0.));
+            }
+        };
+        auto add_norm_penalty = [&](const unsigned int o) {
+          double                m = -1;
+          std::array<double, 4> grad_m;
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              m += y[o + k] * y[o + k];
+              grad_m[k] = 2 * y[o + k];
+            }
+          add(o, m, grad_m, false);
+        };
+        add_norm_penalty(3);
+        if (!d.ring && e + 1 == d.n_elements)
+          add_norm_penalty(7);
+        if (e == 0 && d.spin_gauge)
+          {
+            std::array<double, 4> a{};
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                kinematics::Quaternion<double> unit{{0, 0, 0, 0}};
+                unit[k]      = 1;
+                const auto p = kinematics::quaternion_product(unit, d.reference_0_conjugate);
+                for (unsigned int i = 0; i < 3; ++i)
+                  a[k] += p[1 + i] * d.spin_axis[i];
+              }
+            double spin = 0;
+            for (unsigned int k = 0; k < 4; ++k)
+              spin += a[k] * y[3 + k];
+            add(3, spin, a, true);
+          }
+      }
+
       /**
        * element_energy() and its derivatives in y = (chord c, q_a, q_b) by
        * the chain rule through z = (theta, u), what nested AD of the whole
-       * energy in 11 variables gives at a quarter of the cost
+       * energy in 11 variables gives at half the Jacobian's cost
        * (benchmarks/README.md):
-       *  - theta = log(conj(q_a) q_b s) (s: a ring's seam) in the 8
-       *    quaternion components and u = R(q_a)^T c in 7 variables, each a
-       *    small map differentiated by nested AD (the kinematics' formulas,
-       *    once: kinematics::relative_rotation_vector, quaternion_rotation);
+       *  - theta(q_a, q_b) and u(c, q_a), small maps differentiated by nested
+       *    AD (the kinematics' formulas, once: strain_variables());
        *  - h psi(strains(theta, u)) by nested AD in the 6 variables z
        *    (kinematics::helicoidal_strains_of, the law);
        *  - W_y = z_y^T W_z, W_yy = z_y^T W_zz z_y + sum_m W_z_m (z_m)_yy;
@@ -115,146 +270,24 @@ namespace cosmo
                                    std::array<double, n_ad> &          G,
                                    std::array<double, n_ad * n_ad> &   H)
       {
-        namespace ad    = materials::internal;
-        const bool seam = d.ring && e + 1 == d.n_elements;
-        // theta(q_a, q_b): y[3..10]
-        std::array<double, 8>                  xq;
-        std::array<double, 3>                  th;
-        std::array<std::array<double, 8>, 3>   dth;
-        std::array<std::array<double, 64>, 3>  Hth;
-        std::copy(y.begin() + 3, y.end(), xq.begin());
-        ad::differentiate_map<8, 3>(
-          xq,
-          [&](const auto &x, auto &out) {
-            using Number = std::decay_t<decltype(x[0])>;
-            const kinematics::Quaternion<Number> a{{x[0], x[1], x[2], x[3]}}, b{{x[4], x[5], x[6], x[7]}};
-            const auto b_seen = seam ? kinematics::quaternion_product(b, as_numbers<Number>(d.seam)) : b;
-            const auto t      = kinematics::relative_rotation_vector(kinematics::relative_quaternion(a, b_seen));
-            for (unsigned int i = 0; i < 3; ++i)
-              out[i] = t[i];
-          },
-          with_hessian, th, dth, Hth);
-        // u(c, q_a) = R(q_a)^T c: y[0..6]
-        std::array<double, 7>                 xu;
-        std::array<double, 3>                 u;
-        std::array<std::array<double, 7>, 3>  du;
-        std::array<std::array<double, 49>, 3> Hu;
-        std::copy(y.begin(), y.begin() + 7, xu.begin());
-        ad::differentiate_map<7, 3>(
-          xu,
-          [](const auto &x, auto &out) {
-            using Number = std::decay_t<decltype(x[0])>;
-            const auto R = kinematics::quaternion_rotation(kinematics::Quaternion<Number>{{x[3], x[4], x[5], x[6]}});
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                Number v = R[0][i] * x[0];
-                v += R[1][i] * x[1];
-                v += R[2][i] * x[2];
-                out[i] = v;
-              }
-          },
-          with_hessian, u, du, Hu);
-        // h psi(z), z = (theta, u)
-        const std::array<double, 6> z{{th[0], th[1], th[2], u[0], u[1], u[2]}};
-        std::array<double, 6>       gz;
-        std::array<double, 36>      Hz;
-        ad::differentiate<6>(
-          z,
+        const StrainVariables  v = strain_variables(y, d, e, with_hessian);
+        std::array<double, 6>  gz;
+        std::array<double, 36> Hz;
+        materials::internal::differentiate<6>(
+          v.z,
           [&](const auto &x) {
             using Number = std::decay_t<decltype(x[0])>;
-            Tensor<1, 3, Number> t, v;
+            Tensor<1, 3, Number> t, u;
             for (unsigned int i = 0; i < 3; ++i)
               {
                 t[i] = x[i];
-                v[i] = x[3 + i];
+                u[i] = x[3 + i];
               }
-            return Number(d.h * materials::grown_rod_energy(law, kinematics::helicoidal_strains_of(t, v, d.h), natural));
+            return Number(d.h * materials::grown_rod_energy(law, kinematics::helicoidal_strains_of(t, u, d.h), natural));
           },
           with_hessian, W, gz, Hz);
-
-        // z_y (6 x 11): theta in y[3..10], u in y[0..6].
-        std::array<std::array<double, n_ad>, 6> J{};
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            for (unsigned int a = 0; a < 8; ++a)
-              J[i][3 + a] = dth[i][a];
-            for (unsigned int a = 0; a < 7; ++a)
-              J[3 + i][a] = du[i][a];
-          }
-        for (unsigned int a = 0; a < n_ad; ++a)
-          {
-            double v = 0;
-            for (unsigned int m = 0; m < 6; ++m)
-              v += gz[m] * J[m][a];
-            G[a] = v;
-          }
-        if (with_hessian)
-          {
-            std::array<std::array<double, n_ad>, 6> T{}; // W_zz z_y
-            for (unsigned int m = 0; m < 6; ++m)
-              for (unsigned int b = 0; b < n_ad; ++b)
-                for (unsigned int n = 0; n < 6; ++n)
-                  T[m][b] += Hz[6 * m + n] * J[n][b];
-            for (unsigned int a = 0; a < n_ad; ++a)
-              for (unsigned int b = a; b < n_ad; ++b)
-                {
-                  double v = 0;
-                  for (unsigned int m = 0; m < 6; ++m)
-                    v += J[m][a] * T[m][b];
-                  H[n_ad * a + b] = v;
-                }
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                for (unsigned int a = 0; a < 8; ++a)
-                  for (unsigned int b = a; b < 8; ++b)
-                    H[n_ad * (3 + a) + 3 + b] += gz[i] * Hth[i][8 * a + b];
-                for (unsigned int a = 0; a < 7; ++a)
-                  for (unsigned int b = a; b < 7; ++b)
-                    H[n_ad * a + b] += gz[3 + i] * Hu[i][7 * a + b];
-              }
-          }
-
-        // (1/2) k (|q|^2 - 1)^2 of the nodes the element owns (offset 3 or 7 in y).
-        auto add_norm_penalty = [&](const unsigned int o) {
-          double m = -1;
-          for (unsigned int k = 0; k < 4; ++k)
-            m += y[o + k] * y[o + k];
-          W += 0.5 * d.penalty * m * m;
-          for (unsigned int k = 0; k < 4; ++k)
-            {
-              G[o + k] += 2 * d.penalty * m * y[o + k];
-              if (with_hessian)
-                for (unsigned int l = k; l < 4; ++l)
-                  H[n_ad * (o + k) + o + l] += d.penalty * (4 * y[o + k] * y[o + l] + (k == l ? 2 * m : 0.));
-            }
-        };
-        add_norm_penalty(3);
-        if (!d.ring && e + 1 == d.n_elements)
-          add_norm_penalty(7);
-        if (e == 0 && d.spin_gauge)
-          {
-            // (1/2) k s^2, s = a . q_a linear (element_energy's spin term).
-            std::array<double, 4> a{};
-            for (unsigned int k = 0; k < 4; ++k)
-              {
-                kinematics::Quaternion<double> unit{{0, 0, 0, 0}};
-                unit[k]      = 1;
-                const auto p = kinematics::quaternion_product(unit, d.reference_0_conjugate);
-                for (unsigned int i = 0; i < 3; ++i)
-                  a[k] += p[1 + i] * d.spin_axis[i];
-              }
-            double spin = 0;
-            for (unsigned int k = 0; k < 4; ++k)
-              spin += a[k] * y[3 + k];
-            W += 0.5 * d.penalty * spin * spin;
-            for (unsigned int k = 0; k < 4; ++k)
-              {
-                G[3 + k] += d.penalty * spin * a[k];
-                if (with_hessian)
-                  for (unsigned int l = k; l < 4; ++l)
-                    H[n_ad * (3 + k) + 3 + l] += d.penalty * a[k] * a[l];
-              }
-          }
+        pull_back_to_chord_and_quaternions(v, gz, Hz, with_hessian, G, H);
+        add_penalties(y, d, e, with_hessian, W, G, H);
         if (with_hessian)
           for (unsigned int a = 0; a < n_ad; ++a)
             for (unsigned int b = 0; b < a; ++b)

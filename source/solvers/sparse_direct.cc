@@ -398,6 +398,22 @@ namespace cosmo
             kd = std::max<std::size_t>(kd, it->column() > row ? it->column() - row : row - it->column());
         return kd <= 64 ? static_cast<int>(kd) : -1;
       }
+
+      /// A's Cholesky factor in LAPACK's upper band storage (half-bandwidth
+      /// kd) into `band`; false if A is not positive definite.
+      bool
+      banded_cholesky(const SparseMatrix<double> &A, const int kd, std::vector<double> &band)
+      {
+        const int n = A.m(), ldab = kd + 1;
+        band.assign(static_cast<std::size_t>(ldab) * n, 0.);
+        for (int row = 0; row < n; ++row)
+          for (auto it = A.begin(row); it != A.end(row); ++it)
+            if (static_cast<int>(it->column()) >= row)
+              band[static_cast<std::size_t>(it->column()) * ldab + kd + row - it->column()] = it->value();
+        int info = 0;
+        dpbtrf_("U", &n, &kd, band.data(), &ldab, &info);
+        return info == 0;
+      }
     } // namespace
 #endif
 
@@ -524,23 +540,11 @@ namespace cosmo
       // A symmetric positive definite banded matrix: its Cholesky factor
       // (success is the proof of definiteness: no negative eigenvalue);
       // otherwise MUMPS's LDL^T, which counts them.
-      mumps->band_factorized = false;
-      if (mumps->band_kd >= 0)
+      mumps->band_factorized = mumps->band_kd >= 0 && banded_cholesky(A, mumps->band_kd, mumps->band);
+      if (mumps->band_factorized)
         {
-          const int n = A.m(), kd = mumps->band_kd, ldab = kd + 1;
-          mumps->band.assign(static_cast<std::size_t>(ldab) * n, 0.);
-          for (int row = 0; row < n; ++row)
-            for (auto it = A.begin(row); it != A.end(row); ++it)
-              if (static_cast<int>(it->column()) >= row)
-                mumps->band[static_cast<std::size_t>(it->column()) * ldab + kd + row - it->column()] = it->value();
-          int info = 0;
-          dpbtrf_("U", &n, &kd, mumps->band.data(), &ldab, &info);
-          if (info == 0)
-            {
-              mumps->band_factorized = true;
-              n_negative             = 0;
-              return;
-            }
+          n_negative = 0;
+          return;
         }
       // Values in the order of the analysed pattern: the matrix iterators walk
       // the storage in the same row-wise order as the pattern's.
