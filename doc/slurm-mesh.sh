@@ -28,11 +28,13 @@ exe=${COSMO_BUILD:-build}/$app
 # One core per rank: one assembly thread and one BLAS thread each.
 export DEAL_II_NUM_THREADS=$SLURM_CPUS_PER_TASK OPENBLAS_NUM_THREADS=$SLURM_CPUS_PER_TASK
 values=$("$exe" --print-parameters prm "$prm")
-if ! echo "$values" | grep -Eq '^ *set Distributed *= *true'; then
+# A here-string, not a pipe: grep -q stops reading at its match, and under
+# pipefail the writer's SIGPIPE would turn that match into a refusal.
+if ! grep -Eq '^ *set Distributed *= *true' <<< "$values"; then
   echo "$prm: set 'Distributed = true' ('Mesh' of plate_rod, 'Finite element' of rod_cross_section) for a distributed mesh (or use doc/slurm-path.sh)" >&2
   exit 1
 fi
-out=$(echo "$values" | sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p' | head -1)
+out=$(sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p;T;q' <<< "$values")
 if [ -f "$out/checkpoint.cosmo" ]; then
   srun "$exe" --resume "$out"
 else

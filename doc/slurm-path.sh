@@ -26,7 +26,10 @@ prm=$1 app=${2:-plate_rod}
 exe=${COSMO_BUILD:-build}/$app
 # Rank 0's assembly threads, and each rank's BLAS threads for its fronts.
 export DEAL_II_NUM_THREADS=$SLURM_CPUS_PER_TASK OPENBLAS_NUM_THREADS=$SLURM_CPUS_PER_TASK
-out=$("$exe" --print-parameters prm "$prm" | sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p' | head -1)
+# Read whole, then searched: a reader that stops early would, under
+# pipefail, turn the writer's SIGPIPE into a failure.
+values=$("$exe" --print-parameters prm "$prm")
+out=$(sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p;T;q' <<< "$values")
 if [ -f "$out/checkpoint.cosmo" ]; then
   srun "$exe" --resume "$out"
 else

@@ -22,7 +22,10 @@ exe=${COSMO_BUILD:-build}/$app
 export DEAL_II_NUM_THREADS=$SLURM_CPUS_PER_TASK OPENBLAS_NUM_THREADS=1
 # The output directory the parameter file names: a checkpoint there means
 # an earlier job of this run was stopped.
-out=$("$exe" --print-parameters prm "$prm" | sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p' | head -1)
+# Read whole, then searched: a reader that stops early would, under
+# pipefail, turn the writer's SIGPIPE into a failure.
+values=$("$exe" --print-parameters prm "$prm")
+out=$(sed -n 's/^ *set Output directory *= *\([^ #]*\).*/\1/p;T;q' <<< "$values")
 if [ -f "$out/checkpoint.cosmo" ]; then
   srun "$exe" --resume "$out"
 else
