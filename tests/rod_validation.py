@@ -46,6 +46,16 @@ Cases:
           stable path to two helices of opposite handedness (the torsion's
           halves), Tw + Wr = 0 throughout, the turns touching (self-contact)
           where without contact they overlap.
+  overwinding a perverted tendril pulled (quadratic law, B = 1, kappa0 = 20/L,
+          L = 3): formed at C = B/1.3, its torsion then softened to C = B/4
+          at fixed D ('Stiffness factors'), then pulled to D = 0.96 L. In the
+          middle of each half the helix obeys the closed form of a helix
+          under pure tension with no axial moment (theory-rod.md 7.8),
+          rho = B kappa0 sqrt(1 - x^2) / (B (1 - x^2) + C x^2) (+ the natural
+          twist's share), to the window's own non-uniformity; pulled it
+          overwinds to the closed form's largest turn density
+          kappa0 / (2 sqrt(c (1 - c))), c = C/B < 1/2, then unwinds; at
+          C = B/1.3 > B/2 it unwinds at once.
   figure_eight Michell's ring with self-contact: without it the subcritical
           branch passes through itself (Tw + Wr - Lk jumps by 2); with it
           the link is conserved, the branch turns back at a fold into the
@@ -702,9 +712,9 @@ def vtu_points(path):
     raise SystemExit("no points in " + path)
 
 
-def vtu_nodes(path):
-    """The nodes of a rod-NNNN.vtu (deal.II's zlib-compressed binary VTU:
-    each cell a quadratic edge whose first two points are its nodes)."""
+def vtu_arrays(path):
+    """Every array of a VTU written by deal.II (zlib-compressed binary), by
+    name ('points' for the points)."""
     import base64, re, struct, zlib
     arrays = {}
     for m in re.finditer(r'<DataArray type="(\w+)"(?: Name="([^"]*)")?(?: NumberOfComponents="(\d+)")? '
@@ -717,6 +727,13 @@ def vtu_nodes(path):
         a = np.frombuffer(raw, dtype={"Float32": np.float32, "Float64": np.float64, "Int32": np.int32,
                                       "Int64": np.int64, "UInt8": np.uint8}[kind]).astype(float)
         arrays[name or "points"] = a.reshape(-1, int(components)) if components else a
+    return arrays
+
+
+def vtu_nodes(path):
+    """The nodes of a rod-NNNN.vtu (each cell a quadratic edge whose first
+    two points are its nodes)."""
+    arrays = vtu_arrays(path)
     cells = arrays["connectivity"].astype(int).reshape(-1, 3)
     return np.vstack([arrays["points"][cells[:, 0]], arrays["points"][cells[-1, 1]]])
 
@@ -787,8 +804,88 @@ def perversion():
     check("without contact the body overlaps itself (closest / 2a < 0.8)", bool(closest < 0.8), True, 0)
 
 
+def overwinding():
+    # Gerbode et al. (2012): a perverted tendril, pulled, first adds turns.
+    # Each half's middle is a helix of uniform strains under the clamps'
+    # tension alone; the perversion's mirror symmetry leaves no moment about
+    # the axis there, so none anywhere (theory-rod.md 7.8):
+    #   B (kappa_perp - kappa0) kappa_perp + C (kappa3 - tau0) kappa3 = 0,
+    # with rho = |kappa| and x = kappa3/rho (the axis' share of the
+    # tangent): rho(x) in closed form, largest at an interior x iff C < B/2.
+    # The path: formed at C = B/1.3 (t in [0, 1], the perversion path of
+    # the disc), the torsion softened to C = B/4 at D = 0.4 L (t in [1, 2]),
+    # pulled to D = 0.96 L (t in [2, 3]).
+    L, k0, n = 3.0, 20.0, 400
+    C0 = 1 / 1.3
+    def C(t):
+        return C0 * (1 if t < 1 else (1 - 0.675 * (t - 1) if t < 2 else 0.325))
+    run("overwinding", {
+        "Rod": {"Length": L, "Number of elements": n, "Natural strains": "0; 0; 1; 0; -%g; 0" % k0,
+                "Natural strain imperfection": "0; 0; 0; 0; 0; 0.2*min(t,1)*cos(pi*s/%g)" % L,
+                "Stiffness factors": "1; 1; 1; 1; 1; t < 1 ? 1 : (t < 2 ? 1 - 0.675*(t-1) : 0.325)",
+                "Material": {"Law": "quadratic", "Stiffnesses": "1e4, 1e4, 1e4, 1, 1, %.17g" % C0}},
+        "End A": {"Support": "clamped"},
+        "End B": {"Support": "clamped",
+                  "Displacement": "0; 0; %g*(0.06 - 0.66*min(t,1) + 0.55*max(t-2,0))" % L},
+        "Path following": {"Method": "arclength"},
+        "Arclength continuation": {"Initial step": 0.005, "Maximum step": 0.1, "Parameter range": "0, 3",
+                                   "Switch branches": "false"}})
+    d = os.path.join(scratch, "overwinding")
+    rows = list(csv.DictReader(open(os.path.join(d, "steps.csv"))))
+    check("every state stable", max(int(r["n_negative_eigenvalues"]) for r in rows), 0, 0)
+    check("Tw + Wr = 0 at all %d states (link conserved)" % len(rows),
+          max(abs(float(r["link [turns]"])) for r in rows), 0, 1e-9)
+    check("pulled to D = 0.96 L (t reaches 3)", float(rows[-1]["t"]) >= 3, True, 0)
+    halves = ([], [])  # per state: t, D/L, mean rho, ptp(rho)/rho, mean x, worst |rho/exact - 1|, mean tau0
+    for r in rows[1:]:  # (the straight start has no helix)
+        t = float(r["t"])
+        a = vtu_arrays(os.path.join(d, "rod-%04d.vtu" % int(r["step"])))
+        first = a["connectivity"].astype(int).reshape(-1, 3)[:, 0]
+        kappa = np.stack([a["kappa1"], a["kappa2"], a["kappa3"]], 1)[first]
+        s = (np.arange(len(first)) + 0.5) / len(first)
+        for half, (lo, hi) in zip(halves, ((0.15, 0.35), (0.65, 0.85))):
+            window = (s > lo) & (s < hi)
+            k, tau0 = kappa[window], np.abs(0.2 * min(t, 1) * np.cos(np.pi * s[window]))
+            rho = np.linalg.norm(k, axis=1)
+            x = np.abs(k[:, 2]) / rho
+            perp = np.sqrt(1 - x**2)
+            exact = (k0 * perp + C(t) * tau0 * x) / (perp**2 + C(t) * x**2)
+            half.append((t, float(r["end_z"]) / L, rho.mean(), np.ptp(rho) / rho.mean(), x.mean(),
+                         np.abs(rho / exact - 1).max(), tau0.mean()))
+    # The closed form where the halves' middles are helices (x >= 0.45 once
+    # pulled; tighter coils are shorter than their boundary layers): within
+    # the window's own non-uniformity ptp(rho)/rho, the resolution of
+    # 'uniform' (the element reproduces a uniform helix exactly).
+    pulled = [q for half in halves for q in half if q[0] >= 2 and q[4] >= 0.45]
+    worst = max(pulled, key=lambda q: q[5] / q[3])
+    print("  %d half-states pulled at C = B/4; worst |rho/rho_exact - 1| = %.2e where ptp(rho)/rho = %.2e (x = %.3f)"
+          % (len(pulled), worst[5], worst[3], worst[4]))
+    check("the helix's rho(x) against the closed form, / ptp(rho)/rho", worst[5] / worst[3], 0, 1)
+    check("the halves mirror each other (max |rho_1/rho_2 - 1|)",
+          max(abs(p[2] / q[2] - 1) for p, q in zip(*halves)), 0, 1e-6)
+    # Overwinding: the turn density rises to an interior maximum, the closed
+    # form's kappa0 / (2 sqrt(c (1 - c))) (+ the natural twist's share, at
+    # the window's mean tau0), then falls.
+    pull = [q for q in halves[0] if q[0] >= 2]
+    top = max(range(len(pull)), key=lambda i: pull[i][2])
+    c, xs = 0.25, np.linspace(0.5, 0.95, 4501)
+    peak = max((k0 * np.sqrt(1 - xs**2) + c * pull[top][6] * xs) / (1 - xs**2 + c * xs**2))
+    print("  pulled from D = %.3f L: rho %.4f -> %.4f at D = %.3f L (x = %.3f) -> %.4f at D = %.3f L; "
+          "closed-form peak %.4f" % (pull[0][1], pull[0][2], pull[top][2], pull[top][1], pull[top][4],
+                                      pull[-1][2], pull[-1][1], peak))
+    check("overwinds: the largest turn density inside the pull", 0 < top < len(pull) - 1, True, 0)
+    check("  rising by more than 5 %", bool(pull[top][2] / pull[0][2] - 1 > 0.05), True, 0)
+    check("  its largest rho against kappa0 / (2 sqrt(c (1 - c)))", pull[top][2] / peak - 1, 0,
+          pull[top][3] + 2e-3)
+    # On the disc's torsion (C = B/1.3 > B/2) the same tendril unwinds at
+    # once: rho falls monotonically as D grows (t falling in [0.15, 1]).
+    formed = [q[2] for q in halves[0] if 0.15 <= q[0] <= 1]
+    check("at C = B/1.3 it unwinds at once (rho monotone in D)",
+          all(b >= a for a, b in zip(formed, formed[1:])), True, 0)
+
+
 {"helix": helix, "section": section, "table": table, "elastica": elastica, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
  "growth": growth, "michell": michell, "figure_eight": figure_eight, "clamped_link": clamped_link, "perversion": perversion, "link": link, "study": study, "loads": loads,
- "chain_rule": chain_rule, "body": body}[case]()
+ "chain_rule": chain_rule, "body": body, "overwinding": overwinding}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)

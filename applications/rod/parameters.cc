@@ -2,6 +2,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <cosmo/io/nested_run.h>
+#include <cosmo/io/output.h>
 #include <cosmo/io/parameter_sweep.h>
 #include <cosmo/io/parameters.h>
 
@@ -168,6 +169,14 @@ namespace cosmo
                         "The natural stretch g(s, t) (axial growth): the stress-free rod has "
                         "strains g nu0 and kappa0 and the law is applied to "
                         "(nu/g - nu0, (kappa - kappa0)/g), times g.");
+      prm.declare_entry("Stiffness factors", "1; 1; 1; 1; 1; 1", Patterns::Anything(),
+                        "Factors f_k(s, t) > 0 on the law's stiffness, in the order of the "
+                        "strains (GA1, GA2, EA, EI1, EI2, GJ): the law is applied to the "
+                        "strains weighted by sqrt(f_k), so a quadratic law's K_ab becomes "
+                        "sqrt(f_a f_b) K_ab (its couplings scaled with their diagonals); a "
+                        "nonlinear law is scaled so at small strains. 6 expressions of s and "
+                        "t, e.g. '1; 1; 1; 1; 1; 1 - 0.6*t' to soften the torsion along a "
+                        "path (a homotopy between two sections).");
       prm.declare_entry("Distributed force", "0; 0; 0", Patterns::Anything(),
                         "A dead force per reference length (weight: '0; 0; -rho*g*t'), "
                         "3 expressions of s and t.");
@@ -244,9 +253,11 @@ namespace cosmo
       natural_strains   = parse_expression(prm, "Rod", "Natural strains", 6);
       imperfection      = parse_expression(prm, "Rod", "Natural strain imperfection", 6);
       growth            = parse_expression(prm, "Rod", "Growth", 1);
+      stiffness_factors = parse_expression(prm, "Rod", "Stiffness factors", 6);
       distributed_force = parse_expression(prm, "Rod", "Distributed force", 3);
       element_data_depend_on_load = false;
-      for (const char *entry : {"Natural strains", "Natural strain imperfection", "Growth", "Distributed force"})
+      for (const char *entry : {"Natural strains", "Natural strain imperfection", "Growth", "Stiffness factors",
+                                "Distributed force"})
         element_data_depend_on_load |= materials::expression_names(prm.get(entry), "t");
       seam_twist        = parse_expression(prm, "Rod", "Ring twist", 1);
       rotation_limit    = prm.get_double("Largest element rotation") * M_PI / 180.;
@@ -295,6 +306,20 @@ namespace cosmo
                              "rod_cross_section result and its outline.csv); this law has none: "
                              "use 'tube'");
       law = new_law;
+      // Positive factors at the start (later ones stop the path, named).
+      for (unsigned int e = 0; e < n_elements; ++e)
+        try
+          {
+            stiffness_weights((e + 0.5) * length / n_elements, start);
+          }
+        catch (materials::LawRangeError &error)
+          {
+            prm.enter_subsection("Rod");
+            const std::string value = prm.get("Stiffness factors");
+            prm.leave_subsection();
+            throw io::InputError("Rod", "Stiffness factors", value,
+                                 std::string("positive finite factors at the start: ") + error.what());
+          }
       // The start lies in the law's range (a family's parameter at every element).
       for (unsigned int e = 0; e < n_elements; ++e)
         try
@@ -334,7 +359,25 @@ namespace cosmo
       const Vector<double> d = evaluate(imperfection, s, t);
       for (unsigned int k = 0; k < 6; ++k)
         n.reference_strains[k] += d[k];
+      n.weights = stiffness_weights(s, t);
       return n;
+    }
+
+    std::array<double, 6>
+    RodParameters::stiffness_weights(const double s, const double t) const
+    {
+      // psi(w e) with w = sqrt(f): a quadratic law's K_ab -> sqrt(f_a f_b) K_ab.
+      const Vector<double>  f = evaluate(stiffness_factors, s, t);
+      std::array<double, 6> w;
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          if (!(f[k] > 0) || !std::isfinite(f[k]))
+            throw materials::LawRangeError("'Rod / Stiffness factors' component " + std::to_string(k + 1) +
+                                           " is " + io::format_number(f[k]) + " at s = " + io::format_number(s) +
+                                           ", t = " + io::format_number(t) + " (a positive factor is needed)");
+          w[k] = std::sqrt(f[k]);
+        }
+      return w;
     }
 
     double

@@ -64,6 +64,9 @@ namespace cosmo
       /// The natural state (strains, growth) at s and t.
       materials::RodNaturalState
       natural_state(double s, double t) const;
+      /// sqrt of the 'Stiffness factors' at s and t (LawRangeError unless positive).
+      std::array<double, 6>
+      stiffness_weights(double s, double t) const;
       /// The law's stiffness at the natural state, for scales.
       double
       largest_force_stiffness() const;
@@ -77,8 +80,9 @@ namespace cosmo
       Expression   natural_strains;          ///< 6 components of (s, t)
       Expression   imperfection;             ///< 6 components of (s, t), added to any law's natural strains
       Expression   growth;                   ///< the natural stretch g(s, t)
+      Expression   stiffness_factors;        ///< 6 factors f_k(s, t) on the law's stiffness
       Expression   distributed_force;        ///< per reference length, of (s, t)
-      /// Whether the natural strains, imperfection, growth or distributed force name t.
+      /// Whether the natural strains, imperfection, growth, stiffness factors or distributed force name t.
       bool         element_data_depend_on_load = true;
       Expression   seam_twist;               ///< a ring's added twist in turns, of t
       std::shared_ptr<const materials::RodLaw> law;
