@@ -77,4 +77,20 @@ rod ' subsection Contact
   set Stiffness = 0
  end' > contact_stiffness.prm
 expect "a contact without stiffness" "positive with a contact radius" contact_stiffness.prm
+# Stiffness factors: non-positive at the start (refused, exit 1); falling
+# to zero along the path (the path stops where it would, exit 2, the entry
+# and the point named).
+rod ' set Stiffness factors = 1; 1; 1; 1; 1; 0' > factors.prm
+expect "a zero stiffness factor at the start" "Stiffness factors" factors.prm
+rod ' set Stiffness factors = 1; 1; 1; 1; 1' > factors_five.prm
+expect "five stiffness factors for six" "Stiffness factors" factors_five.prm
+rod ' set Stiffness factors = 1; 1; 1; 1; 1 - 2*t; 1' 'subsection End B
+ set Force = 0; 0; -0.01*t
+end' > factors_path.prm
+timeout 60 "$exe" factors_path.prm > out.txt 2>&1; status=$?
+if [ $status -eq 2 ] && grep -q "Stiffness factors" out.txt; then
+  echo "  ok    a factor falling to zero on the path (status 2: $(grep -m1 'Stiffness factors' out.txt | cut -c1-150))"
+else
+  echo "  FAIL  a factor falling to zero on the path: status $status (expected 2), output:"; cat out.txt; fail=1
+fi
 exit $fail

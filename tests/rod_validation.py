@@ -404,6 +404,29 @@ def section():
     run("family-10", dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": law}))
     log = open(os.path.join(scratch, "family-10", "log.txt")).read()
     check("a second run reuses the sections", "reused from an earlier run" in log, True, 0)
+    # A file the section's parameters name (its gmsh .geo) is part of the
+    # key: edited, the section is computed again, not taken from the cache.
+    geo = os.path.join(scratch, "square.geo")
+    square = os.path.join(scratch, "square-section.prm")
+    open(square, "w").write(prm_text({
+        "Cross-section": {"Shape": "gmsh", "Mesh file": geo, "Global refinements": 0},
+        "Material 1": {"Young's modulus": 1, "Poisson's ratio": 0.3},
+        "Rod strains": {"Mode": "natural shape"}}))
+    def square_run(side):
+        open(geo, "w").write("a = %g;\nPoint(1) = {-a/2, -a/2, 0, a/4}; Point(2) = {a/2, -a/2, 0, a/4};\n"
+                             "Point(3) = {a/2, a/2, 0, a/4}; Point(4) = {-a/2, a/2, 0, a/4};\n"
+                             "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                             "Curve Loop(1) = {1:4}; Plane Surface(1) = {1};\n"
+                             "Physical Surface(\"section\", 1) = {1}; Physical Curve(\"outer\", 1) = {1:4};\n" % side)
+        run("square", dict(base, Rod={"Length": 1, "Number of elements": 4,
+                                      "Material": {"Law": "section", "Section file": square}}))
+        log = open(os.path.join(scratch, "square", "log.txt")).read()
+        K = json.load(open(os.path.join(scratch, "square", "section", "summary.json")))["stiffness"]
+        return "reused from an earlier run" in log, K[3][3]
+    first, again, edited = square_run(0.1), square_run(0.1), square_run(0.2)
+    check("a section's unchanged .geo: computed, then reused", not first[0] and again[0], True, 0)
+    check("its .geo edited (side doubled): computed again, B x 16 (exact for a square)", edited[0] is False and
+          abs(edited[1] / first[1] / 16 - 1) < 1e-6, True, 0)
     # p past the family's range [0, 0.5] at t = 0.64: the path stops there.
     over = dict(law, **{"Section parameter": "0.4*t*s"})
     summary = run("family-over", dict(base, Rod={"Length": 2, "Number of elements": 10, "Material": over}), status=2)

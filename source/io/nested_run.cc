@@ -4,6 +4,7 @@
 #include <cosmo/io/shared_libraries.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -21,6 +22,33 @@ namespace cosmo
         std::stringstream s;
         s << in.rdbuf();
         return s.str();
+      }
+
+      /// For every value of the printed parameters that names a readable
+      /// file (a section's gmsh .geo, a law's summary.json), a line with its
+      /// size and a hash of its content: an edited file is a new key, so a
+      /// cached result is never reused for the file it was not computed from.
+      std::string
+      named_files(const std::string &printed)
+      {
+        std::istringstream lines(printed);
+        std::ostringstream out;
+        for (std::string line; std::getline(lines, line);)
+          {
+            const auto equals = line.find('=');
+            if (line.find("set ") == std::string::npos || equals == std::string::npos)
+              continue;
+            std::string value = line.substr(equals + 1);
+            value.erase(0, value.find_first_not_of(' '));
+            value.erase(value.find_last_not_of(' ') + 1);
+            std::error_code error;
+            if (value.empty() || !std::filesystem::is_regular_file(value, error))
+              continue;
+            const std::string content = text_of(value);
+            out << "# file " << value << ": " << content.size() << " bytes, hash "
+                << std::hash<std::string>{}(content) << "\n";
+          }
+        return out.str();
       }
     } // namespace
 
@@ -54,6 +82,7 @@ namespace cosmo
       // The key: every value, as a run of these parameters would read them.
       std::ostringstream key;
       prm.print_parameters(key, ParameterHandler::ShortPRM);
+      key << named_files(key.str());
       const std::filesystem::path done = std::filesystem::path(directory) / "finished-parameters.prm";
       if (std::filesystem::exists(done) && text_of(done) == key.str())
         return {directory, true};

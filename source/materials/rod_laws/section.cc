@@ -242,8 +242,8 @@ namespace cosmo
                         "section), the sweep.csv of a parameter sweep (a family of sections "
                         "over the swept value p), or a rod_cross_section parameter file, "
                         "which the run computes itself (its output in the run's directory "
-                        "'section', reused while that file's parameters are unchanged); or "
-                        "likewise a strip's summary.json or parameter file (one with a "
+                        "'section', reused while that file's parameters and the files they "
+                        "name are unchanged); or likewise a strip's summary.json or parameter file (one with a "
                         "subsection 'Strip': a ribbon's law, its E w h units restored). The "
                         "section's natural strains replace 'Natural strains'; it must be at "
                         "a natural shape ('Rod strains / Mode = natural shape').");

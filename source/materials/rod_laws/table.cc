@@ -105,7 +105,7 @@ namespace cosmo
                         "Law = table: the table.h5 of a strip or rod_cross_section "
                         "constitutive table, or the parameter file of one, which the run "
                         "computes itself (its output in the run's directory 'table', reused "
-                        "while that file's parameters are unchanged): a "
+                        "while that file's parameters and the files they name are unchanged): a "
                         "constitutive table over two strains, the free strains' resultants "
                         "held at zero (e.g. a ribbon's (kappa1, kappa3) with nu1, nu2, nu3, "
                         "kappa2 free). Its energy, interpolated bicubically (C1) from the "
