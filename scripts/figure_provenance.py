@@ -84,6 +84,11 @@ def _figures():
     f["rod_ribbon_rollup.png"].append("parameter_files/rod/sections/ribbon_table.prm")
     f["rod_tendril_perversion.png"].append("parameter_files/rod/sections/tendril_disc.prm")
     f["rod_seed_pod.png"].append("parameter_files/rod/sections/seed_pod_strip.prm")
+    f["rod_tendril_overwinding.png"] = ["parameter_files/rod/tendril_overwinding.prm",
+                                        f"{REF}/rod_tendril_overwinding.output",
+                                        "parameter_files/rod/sections/tendril_cross.prm",
+                                        f"{RCS}/geometry/cross.geo",
+                                        "scripts/plot_overwinding.py", "scripts/rod_vtu.py", "scripts/plot_steps.py"]
     return f
 
 

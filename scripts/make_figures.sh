@@ -67,7 +67,7 @@ for f in output/strip_shearing/branches.png output/strip_torque_buckling/branche
          output/rod/euler_clamped/summary.json output/rod/euler_clamped/bifurcation.png \
          output/rod/tendril/summary.json output/rod/ribbon_rollup/summary.json \
          output/rod/michell_figure_eight/summary.json output/rod/tendril_perversion/summary.json \
-         output/rod/seed_pod/summary.json; do
+         output/rod/seed_pod/summary.json output/rod/tendril_overwinding/summary.json; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -102,6 +102,10 @@ for n in helix rollup euler_clamped tendril ribbon_rollup michell_figure_eight t
     || { kill $xvfb; log "rendering output/rod/$n FAILED" >&2; exit 1; }
 done
 kill $xvfb
+# The overwinding tendril: its helices against the closed form (theory-rod.md
+# 7.9), C/B2 of the section's law (0.178) and of its stiffened first stage.
+python3 scripts/plot_overwinding.py output/rod/tendril_overwinding doc/figures/rod_tendril_overwinding.png \
+  --kappa0 20 --c 0.747,0.178 >/dev/null
 curve=output/plate_rod/studies/critical_curve_vs_rim_stiffness_cosserat/critical_curve.png
 if [[ -f "$curve" ]]; then
   cp "$curve" doc/figures/plate_rod_critical_curve_vs_rim_stiffness.png

@@ -68,6 +68,9 @@ import csv, json, math, os, subprocess, sys
 import numpy as np
 from scipy.optimize import brentq
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+from rod_vtu import element_strains, rod_nodes, vtu_arrays  # noqa: E402
+
 exe, case, scratch = sys.argv[1], sys.argv[2], sys.argv[3]
 # (the strip beside the rod: the table case computes its law)
 strip = os.path.join(os.path.dirname(os.path.abspath(exe)), "strip")
@@ -720,45 +723,13 @@ def body():
 
 
 def vtu_points(path):
-    """All points of a VTU written by the suite (zlib-compressed binary)."""
-    import base64, re, struct, zlib
-    for m in re.finditer(r'<DataArray type="(\w+)"(?: Name="([^"]*)")?(?: NumberOfComponents="(\d+)")? '
-                         r'format="binary"[^>]*>\s*(.*?)\s*</DataArray>', open(path).read(), re.S):
-        kind, name, components, data = m.groups()
-        if name or components != "3":
-            continue
-        blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
-        header = 4 * (3 + blocks)
-        encoded = (header + 2) // 3 * 4
-        raw = zlib.decompress(base64.b64decode(data[encoded:]))
-        return np.frombuffer(raw, dtype={"Float32": np.float32, "Float64": np.float64}[kind]).astype(float).reshape(-1, 3)
-    raise SystemExit("no points in " + path)
-
-
-def vtu_arrays(path):
-    """Every array of a VTU written by deal.II (zlib-compressed binary), by
-    name ('points' for the points)."""
-    import base64, re, struct, zlib
-    arrays = {}
-    for m in re.finditer(r'<DataArray type="(\w+)"(?: Name="([^"]*)")?(?: NumberOfComponents="(\d+)")? '
-                         r'format="binary"[^>]*>\s*(.*?)\s*</DataArray>', open(path).read(), re.S):
-        kind, name, components, data = m.groups()
-        blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
-        header = 4 * (3 + blocks)
-        encoded = (header + 2) // 3 * 4
-        raw = zlib.decompress(base64.b64decode(data[encoded:]))
-        a = np.frombuffer(raw, dtype={"Float32": np.float32, "Float64": np.float64, "Int32": np.int32,
-                                      "Int64": np.int64, "UInt8": np.uint8}[kind]).astype(float)
-        arrays[name or "points"] = a.reshape(-1, int(components)) if components else a
-    return arrays
+    """All points of a VTU written by the suite."""
+    return vtu_arrays(path)["points"]
 
 
 def vtu_nodes(path):
-    """The nodes of a rod-NNNN.vtu (each cell a quadratic edge whose first
-    two points are its nodes)."""
-    arrays = vtu_arrays(path)
-    cells = arrays["connectivity"].astype(int).reshape(-1, 3)
-    return np.vstack([arrays["points"][cells[:, 0]], arrays["points"][cells[-1, 1]]])
+    """The nodes of a rod-NNNN.vtu."""
+    return rod_nodes(vtu_arrays(path))
 
 
 def perversion():
@@ -862,10 +833,8 @@ def overwinding():
     halves = ([], [])  # per state: t, D/L, mean rho, ptp(rho)/rho, mean x, worst |rho/exact - 1|, mean tau0
     for r in rows[1:]:  # (the straight start has no helix)
         t = float(r["t"])
-        a = vtu_arrays(os.path.join(d, "rod-%04d.vtu" % int(r["step"])))
-        first = a["connectivity"].astype(int).reshape(-1, 3)[:, 0]
-        kappa = np.stack([a["kappa1"], a["kappa2"], a["kappa3"]], 1)[first]
-        s = (np.arange(len(first)) + 0.5) / len(first)
+        kappa = element_strains(vtu_arrays(os.path.join(d, "rod-%04d.vtu" % int(r["step"]))))
+        s = (np.arange(len(kappa)) + 0.5) / len(kappa)
         for half, (lo, hi) in zip(halves, ((0.15, 0.35), (0.65, 0.85))):
             window = (s > lo) & (s < hi)
             k, tau0 = kappa[window], np.abs(0.2 * min(t, 1) * np.cos(np.pi * s[window]))
