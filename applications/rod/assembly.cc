@@ -3,6 +3,7 @@
 // norm penalty, differentiated by Sacado per element and assembled by the
 // library's EnergyAssembler (doc/theory-rod.md 2-4).
 #include <cosmo/assembly/energy_assembler.h>
+#include <cosmo/kinematics/rod_element_derivatives.h>
 #include <cosmo/materials/energy_derivatives.h>
 
 #include "rod_problem.h"
@@ -98,13 +99,12 @@ namespace cosmo
         std::array<std::array<double, 49>, 3>   u_cq;     ///< in (c, q_a), y[0..6]
       };
 
-      /// theta = log(conj(q_a) q_b s) (s: a ring's seam) and u = R(q_a)^T c,
-      /// each map differentiated by nested AD in its own variables.
+      /// theta = log(conj(q_a) q_b s) (s: a ring's seam) and u = R(q_a)^T c
+      /// with their derivatives in y = (c, q_a, q_b).
       StrainVariables
       strain_variables(const std::array<double, n_ad> &y, const RodElementData &d, const unsigned int e,
                        const bool with_hessian)
       {
-        namespace ad    = materials::internal;
         const bool seam = d.ring && e + 1 == d.n_elements;
         StrainVariables                      v;
         std::array<double, 8>                xq;
@@ -114,31 +114,8 @@ namespace cosmo
         std::array<double, 7>                xu;
         std::copy(y.begin() + 3, y.end(), xq.begin());
         std::copy(y.begin(), y.begin() + 7, xu.begin());
-        ad::differentiate_map<8, 3>(
-          xq,
-          [&](const auto &x, auto &out) {
-            using Number = std::decay_t<decltype(x[0])>;
-            const kinematics::Quaternion<Number> a{{x[0], x[1], x[2], x[3]}}, b{{x[4], x[5], x[6], x[7]}};
-            const auto b_seen = seam ? kinematics::quaternion_product(b, as_numbers<Number>(d.seam)) : b;
-            const auto t      = kinematics::relative_rotation_vector(kinematics::relative_quaternion(a, b_seen));
-            for (unsigned int i = 0; i < 3; ++i)
-              out[i] = t[i];
-          },
-          with_hessian, th, dth, v.theta_qq);
-        ad::differentiate_map<7, 3>(
-          xu,
-          [](const auto &x, auto &out) {
-            using Number = std::decay_t<decltype(x[0])>;
-            const auto R = kinematics::quaternion_rotation(kinematics::Quaternion<Number>{{x[3], x[4], x[5], x[6]}});
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                Number w = R[0][i] * x[0];
-                w += R[1][i] * x[1];
-                w += R[2][i] * x[2];
-                out[i] = w;
-              }
-          },
-          with_hessian, u, du, v.u_cq);
+        kinematics::relative_rotation_derivatives(xq, seam ? &d.seam : nullptr, with_hessian, th, dth, v.theta_qq);
+        kinematics::chord_in_frame_derivatives(xu, with_hessian, u, du, v.u_cq);
         for (unsigned int i = 0; i < 3; ++i)
           {
             v.z[i]     = th[i];
@@ -246,14 +223,64 @@ namespace cosmo
       }
 
       /**
+       * W = h g psi(e) of z = (theta, u) and its derivatives in z through
+       * the strains s(z) (kinematics::helicoidal_strain_derivatives). The law
+       * gives psi's gradient and Hessian at e = w (s/g - s0) (rod_law.h), so
+       * W_s = h w psi_e and W_ss = h w w^T psi_ee / g; then
+       *   W_z = W_s s_z,   W_zz = s_z^T W_ss s_z + sum_k W_s_k (s_k)_zz.
+       * (The nested AD of the whole element, COSMO_NESTED_AD, is the
+       * reference: tests/rod_validation.py 'chain_rule'.)
+       */
+      void
+      energy_in_strain_variables(const std::array<double, 6> &z, const double h, const materials::RodLaw &law,
+                                 const materials::RodNaturalState &natural, const bool with_hessian, double &W,
+                                 std::array<double, 6> &gz, std::array<double, 36> &Hz)
+      {
+        const auto             s = kinematics::helicoidal_strain_derivatives(z, h, with_hessian);
+        const auto             e = materials::elastic_rod_strains(s.strains, natural);
+        std::array<double, 6>  dpsi{};
+        std::array<double, 36> ddpsi{};
+        double                 psi = 0;
+        law.energy_derivatives_at(natural.parameter, e, with_hessian, psi, dpsi, ddpsi);
+        W = h * natural.growth * psi;
+        std::array<double, 6> W_s;
+        for (unsigned int k = 0; k < 6; ++k)
+          W_s[k] = h * natural.weights[k] * dpsi[k];
+        for (unsigned int c = 0; c < 6; ++c)
+          {
+            double w = 0;
+            for (unsigned int k = 0; k < 6; ++k)
+              w += W_s[k] * s.s_z[k][c];
+            gz[c] = w;
+          }
+        if (!with_hessian)
+          return;
+        std::array<std::array<double, 6>, 6> T{}; // W_ss s_z
+        for (unsigned int k = 0; k < 6; ++k)
+          for (unsigned int l = 0; l < 6; ++l)
+            if (const double w = h * natural.weights[k] * natural.weights[l] * ddpsi[6 * k + l] / natural.growth; w != 0)
+              for (unsigned int c = 0; c < 6; ++c)
+                T[k][c] += w * s.s_z[l][c];
+        for (unsigned int c = 0; c < 6; ++c)
+          for (unsigned int r = 0; r < 6; ++r)
+            {
+              double w = 0;
+              for (unsigned int k = 0; k < 6; ++k)
+                w += s.s_z[k][c] * T[k][r];
+              Hz[6 * c + r] = w;
+            }
+        s.add_second_derivatives(W_s, Hz);
+      }
+
+      /**
        * element_energy() and its derivatives in y = (chord c, q_a, q_b) by
        * the chain rule through z = (theta, u), what nested AD of the whole
-       * energy in 11 variables gives at half the Jacobian's cost
+       * energy in 11 variables gives at a fifth of the Jacobian's cost
        * (benchmarks/README.md):
-       *  - theta(q_a, q_b) and u(c, q_a), small maps differentiated by nested
-       *    AD (the kinematics' formulas, once: strain_variables());
-       *  - h psi(strains(theta, u)) by nested AD in the 6 variables z
-       *    (kinematics::helicoidal_strains_of, the law);
+       *  - theta(q_a, q_b) and u(c, q_a) with their derivatives in closed
+       *    form (kinematics/rod_element_derivatives.h; strain_variables());
+       *  - h psi(strains(theta, u)) and its derivatives in z through the
+       *    strains' (energy_in_strain_variables());
        *  - W_y = z_y^T W_z, W_yy = z_y^T W_zz z_y + sum_m W_z_m (z_m)_yy;
        *  - the quaternions' norm penalty and the spin gauge in closed form.
        * Checked against the nested AD of element_energy (COSMO_NESTED_AD,
@@ -273,19 +300,7 @@ namespace cosmo
         const StrainVariables  v = strain_variables(y, d, e, with_hessian);
         std::array<double, 6>  gz;
         std::array<double, 36> Hz;
-        materials::internal::differentiate<6>(
-          v.z,
-          [&](const auto &x) {
-            using Number = std::decay_t<decltype(x[0])>;
-            Tensor<1, 3, Number> t, u;
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                t[i] = x[i];
-                u[i] = x[3 + i];
-              }
-            return Number(d.h * materials::grown_rod_energy(law, kinematics::helicoidal_strains_of(t, u, d.h), natural));
-          },
-          with_hessian, W, gz, Hz);
+        energy_in_strain_variables(v.z, d.h, law, natural, with_hessian, W, gz, Hz);
         pull_back_to_chord_and_quaternions(v, gz, Hz, with_hessian, G, H);
         add_penalties(y, d, e, with_hessian, W, G, H);
         if (with_hessian)

@@ -1,5 +1,7 @@
 #include <cosmo/assembly/energy_assembler.h>
 
+#include <algorithm>
+
 namespace cosmo
 {
   namespace assembly
@@ -8,7 +10,15 @@ namespace cosmo
     add_cell_contribution(const CellContribution &c, const AssemblyTarget &target)
     {
       const auto &idx = c.dof_indices;
-      if (target.constraints != nullptr)
+      // A cell without constrained DoFs adds as it is: what
+      // distribute_local_to_global() would do, without its sorting and
+      // row resolution (most of a rod's or a plate's cells).
+      const bool constrained =
+        target.constraints != nullptr &&
+        std::any_of(idx.begin(), idx.end(), [&](const types::global_dof_index i) {
+          return target.constraints->is_constrained(i);
+        });
+      if (constrained)
         {
           // Condensed constraints: the rows of constrained DoFs are the
           // constraints' own (a residual is needed for the inhomogeneities).
