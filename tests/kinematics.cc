@@ -310,7 +310,7 @@ namespace
   // (c, q), theta = log(conj(q_a) q_b s) with and without a seam, and the
   // strains s(theta, u) contracted with a random c. Random non-unit
   // quaternions, relative rotations up to ~2.5 rad, theta = 0 exactly on
-  // some samples (gamma's series). Same arithmetic in another order: 1e-12
+  // some samples (the series of gamma and of atan(t)/t). Same arithmetic in another order: 1e-12
   // of the largest entry, as the plate's.
   void
   rod_element_maps()
@@ -320,6 +320,14 @@ namespace
     std::mt19937                           gen(11);
     std::uniform_real_distribution<double> r(-1, 1);
     double                                 worst[3] = {0, 0, 0};
+    // (differences over max(largest entry, 1): theta = 0 is a value of the
+    // samples, the quantities are of order one)
+    auto relative = [](const double *a, const double *b, const int n) {
+      double d = 0, m = 1;
+      for (int i = 0; i < n; ++i)
+        d = std::max(d, std::abs(a[i] - b[i])), m = std::max(m, std::abs(a[i]));
+      return d / m;
+    };
     for (unsigned int sample = 0; sample < 60; ++sample)
       {
         std::array<double, 7> xu;
@@ -346,6 +354,9 @@ namespace
         for (auto &x : xq)
           x = 0.6 * r(gen);
         xq[0] += 1.2, xq[4] += 1.1;
+        if (sample % 7 == 0) // theta = 0 exactly (the series of atan(t)/t)
+          for (unsigned int k = 0; k < 4; ++k)
+            xq[4 + k] = 0.9 * xq[k];
         const Quaternion<double> seam{{std::cos(0.4), 0, 0, std::sin(0.4)}};
         for (const Quaternion<double> *s : {(const Quaternion<double> *)nullptr, &seam})
           {

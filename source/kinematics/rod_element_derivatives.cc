@@ -93,6 +93,73 @@ namespace cosmo
         }
     }
 
+    namespace
+    {
+      /**
+       * Theta(p) = F(s) w, w = v/p0, s = |w|^2, F = 2 atan(sqrt s)/sqrt s
+       * (relative_rotation_vector), and its derivatives in p = (p0, v):
+       *   w_i,0 = -w_i/p0, w_i,j = delta_ij/p0, w_i,00 = 2 w_i/p0^2,
+       *   w_i,0j = -delta_ij/p0^2, s_a = 2 w . w_a, s_ab = 2 (w_a . w_b + w . w_ab),
+       *   Theta_i,a = F' s_a w_i + F w_i,a,
+       *   Theta_i,ab = F'' s_a s_b w_i + F' (s_ab w_i + s_a w_i,b + s_b w_i,a) + F w_i,ab,
+       * with F, F', F'' by AD in s alone (its series near 0).
+       */
+      void
+      log_of_quaternion_derivatives(const std::array<double, 4>           &p,
+                                    const bool                             with_hessian,
+                                    std::array<double, 3>                 &theta,
+                                    std::array<std::array<double, 4>, 3>  &Th_p,
+                                    std::array<std::array<double, 16>, 3> &Th_pp)
+      {
+        const double          p0 = p[0];
+        std::array<double, 3> w;
+        double                s = 0;
+        for (unsigned int i = 0; i < 3; ++i)
+          w[i] = p[i + 1] / p0, s += w[i] * w[i];
+        double                F;
+        std::array<double, 1> dF, ddF{};
+        materials::internal::differentiate<1>(
+            std::array<double, 1>{{s}},
+            [](const auto &x) {
+              // (a Number, not Sacado's expression of a temporary)
+              using Number = std::decay_t<decltype(x[0])>;
+              return Number(2. * internal::atan_ratio(x[0]));
+            },
+            with_hessian, F, dF, ddF);
+        auto w_a = [&](const unsigned int i, const unsigned int a) {
+          return a == 0 ? -w[i] / p0 : (a == i + 1 ? 1 / p0 : 0.);
+        };
+        auto w_ab = [&](const unsigned int i, unsigned int a, unsigned int b) {
+          if (a > b)
+            std::swap(a, b);
+          return a == 0 ? (b == 0 ? 2 * w[i] / (p0 * p0) : (b == i + 1 ? -1 / (p0 * p0) : 0.)) : 0.;
+        };
+        std::array<double, 4> s_a{};
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int i = 0; i < 3; ++i)
+            s_a[a] += 2 * w[i] * w_a(i, a);
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            theta[i] = F * w[i];
+            for (unsigned int a = 0; a < 4; ++a)
+              Th_p[i][a] = dF[0] * s_a[a] * w[i] + F * w_a(i, a);
+          }
+        if (!with_hessian)
+          return;
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int b = a; b < 4; ++b)
+            {
+              double s_ab = 0;
+              for (unsigned int j = 0; j < 3; ++j)
+                s_ab += 2 * (w_a(j, a) * w_a(j, b) + w[j] * w_ab(j, a, b));
+              for (unsigned int i = 0; i < 3; ++i)
+                Th_pp[i][4 * a + b] = Th_pp[i][4 * b + a] =
+                    ddF[0] * s_a[a] * s_a[b] * w[i] +
+                    dF[0] * (s_ab * w[i] + s_a[a] * w_a(i, b) + s_a[b] * w_a(i, a)) + F * w_ab(i, a, b);
+            }
+      }
+    } // namespace
+
     /**
      * theta = log(p) of p = conj(q_a) (q_b s) (s: a ring's seam) and its
      * derivatives in (q_a, q_b): p is bilinear, p_k = q_a^T T_k q_b, so
@@ -109,7 +176,6 @@ namespace cosmo
                                   std::array<std::array<double, 8>, 3>  &dtheta,
                                   std::array<std::array<double, 64>, 3> &ddtheta)
     {
-      namespace ad = materials::internal;
       // T_k[m][n] = p_k(e_m, e_n): exact (a unit quaternion's products only
       // permute signs); once for the elements without a seam.
       auto bilinear = [](const Quaternion<double> *s) {
@@ -140,15 +206,7 @@ namespace cosmo
             }
       std::array<std::array<double, 4>, 3>  Th_p;
       std::array<std::array<double, 16>, 3> Th_pp;
-      ad::differentiate_map<4, 3>(
-          p,
-          [](const auto &y, auto &out) {
-            using Number = std::decay_t<decltype(y[0])>;
-            const auto t = relative_rotation_vector(Quaternion<Number>{{y[0], y[1], y[2], y[3]}});
-            for (unsigned int i = 0; i < 3; ++i)
-              out[i] = t[i];
-          },
-          with_hessian, theta, Th_p, Th_pp);
+      log_of_quaternion_derivatives(p, with_hessian, theta, Th_p, Th_pp);
       for (unsigned int i = 0; i < 3; ++i)
         {
           for (unsigned int a = 0; a < 8; ++a)
