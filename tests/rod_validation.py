@@ -720,6 +720,36 @@ def body():
     at_clamp = points[np.linalg.norm(points - nodes[0], axis=1) < 0.021]
     worst = max(np.min(np.linalg.norm(outline[:, 3:6] - p, axis=1)) for p in at_clamp - nodes[0])
     check("body: at the clamp the points are the outline's w", worst, 0, float32)
+    # A strip's section (part 2; the seed pod's valve, w = 1, h = 0.01, at
+    # its natural curvature): its outline is the width line thickened by h,
+    # one closed loop, X2 = -h/2 along the width and +h/2 back; swept, the
+    # ribbon's points at the clamp are the outline's w.
+    strip_prm = os.path.join(scratch, "valve.prm")
+    open(strip_prm, "w").write(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                                 "parameter_files", "rod", "sections", "seed_pod_strip.prm")).read())
+    run("ribbon", {"Rod": {"Length": 2, "Number of elements": 8, "Shape": "natural",
+                           "Material": {"Law": "section", "Section file": strip_prm}},
+                   "End A": {"Support": "clamped"}, "End B": {"Support": "free", "Force": "0; 0; 1e-9*t"},
+                   "Continuation": {"Initial step": 0.5, "Maximum step": 0.5},
+                   "Output": {"Body": "section"}})
+    directory = os.path.join(scratch, "ribbon")
+    outline = np.loadtxt(os.path.join(directory, "section", "outline.csv"), delimiter=",", skiprows=1)
+    half = len(outline) // 2
+    check("ribbon: one loop of 2 (40 cells x degree + 1) points", len(outline) % 2 == 0 and
+          set(outline[:, 0]) == {0} and half % 40 == 1, True, 0)
+    check("ribbon: X2 = -h/2 along the width, +h/2 back",
+          np.max(np.abs(outline[:half, 2] + 0.005)) + np.max(np.abs(outline[half:, 2] - 0.005)), 0, 1e-15)
+    check("ribbon: X1 from -w/2 to w/2 and back", np.max(np.abs([outline[0, 1] + 0.5, outline[half - 1, 1] - 0.5,
+                                                                  outline[half, 1] - 0.5, outline[-1, 1] + 0.5])),
+          0, 1e-15)
+    check("ribbon: the two faces h apart (|w(+h/2) - w(-h/2)| at each eta)",
+          np.max(np.abs(np.linalg.norm(outline[:half, 3:6] - outline[half:, 3:6][::-1], axis=1) - 0.01)), 0, 1e-12)
+    last = sorted(f for f in os.listdir(directory) if f.startswith("body-") and f.endswith(".vtu"))[-1]
+    points = vtu_points(os.path.join(directory, last))
+    node0 = vtu_points(os.path.join(directory, last.replace("body-", "rod-")))[0]
+    float32 = 4 * 6e-8 * np.max(np.abs(points))
+    worst = max(np.min(np.linalg.norm(points - (node0 + w), axis=1)) for w in outline[:, 3:6])
+    check("ribbon: at the clamp the points are the outline's w", worst, 0, float32)
 
 
 def vtu_points(path):

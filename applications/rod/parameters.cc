@@ -228,12 +228,13 @@ namespace cosmo
                         "length L, its circles in the directors' (d1, d2) planes (the twist "
                         "shows), coloured by the strains and resultants; 0: none.");
       prm.declare_entry("Body", "tube", Patterns::Selection("tube|section"),
-                        "How the body is drawn: tube (of 'Tube radius'); section: the part-1 "
-                        "cross-section the law was computed from (Law = section, one "
-                        "section), its boundary as deformed at its natural shape swept along "
-                        "the centreline in each node's director frame, coloured by the "
-                        "section's von Mises stress there (section_stress) and by the rod's "
-                        "strains and resultants: body-NNNN.vtu (body.pvd).");
+                        "How the body is drawn: tube (of 'Tube radius'); section: the "
+                        "cross-section the law was computed from (Law = section, one part-1 "
+                        "section or a strip), its boundary as deformed at its natural shape "
+                        "(a strip's: its width line thickened by h) swept along the "
+                        "centreline in each node's director frame, coloured by the section's "
+                        "von Mises stress there (section_stress; 0 for a strip) and by the "
+                        "rod's strains and resultants: body-NNNN.vtu (body.pvd).");
       prm.leave_subsection();
     }
 
@@ -302,9 +303,9 @@ namespace cosmo
       compute_law_input(*new_law, output_directory);
       if (section_body && new_law->section_outline().empty())
         throw io::InputError("Output", "Body", "section",
-                             "a law with a part-1 cross-section to sweep (Law = section with one "
-                             "rod_cross_section result and its outline.csv); this law has none: "
-                             "use 'tube'");
+                             "a law with a cross-section to sweep (Law = section with one "
+                             "rod_cross_section or strip result and its outline.csv); this law "
+                             "has none: use 'tube'");
       law = new_law;
       // Positive factors at the start (later ones stop the path, named).
       for (unsigned int e = 0; e < n_elements; ++e)

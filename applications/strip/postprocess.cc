@@ -7,6 +7,7 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <cosmo/config.h>
+#include <cosmo/io/output.h>
 #include <cosmo/io/vtu_patches.h>
 #include <cosmo/kinematics/strip.h>
 #include <cosmo/geometry/field_on_line.h>
@@ -97,6 +98,7 @@ namespace cosmo
     StripProblem::write_fields(const std::string &tag) const
     {
       write_section(output_directory + "/section-" + tag + ".vtu", solution);
+      write_outline(solution);
       write_piece(output_directory + "/strip-" + tag + ".vtu");
       return {{"section", "section-" + tag + ".vtu"}, {"strip", "strip-" + tag + ".vtu"}};
     }
@@ -213,6 +215,52 @@ namespace cosmo
           write_section(output_directory + "/" + files[1].second, V);
         }
       return files;
+    }
+
+    void
+    StripProblem::write_outline(const Vector<double> &U) const
+    {
+      // outline.csv (rod_cross_section's format): the section's boundary as
+      // one closed loop, the face zeta = -h/2 along the width and zeta = +h/2
+      // back, each point's placement w = (eta, 0, 0) + displacement + zeta q
+      // in the director frame. The rod sweeps it along its centreline
+      // (Output / Body = section on a strip's law: a ribbon). The plate law
+      // gives no von Mises stress here: the column is 0.
+      std::vector<Point<1>> unit;
+      for (unsigned int i = 0; i < degree; ++i)
+        unit.emplace_back(double(i) / degree);
+      FEValues<1>                 fev(*fe, Quadrature<1>(unit), update_values | update_quadrature_points);
+      const Vector<double>        field(U.begin(), U.begin() + n_field);
+      std::vector<Vector<double>> values(unit.size(), Vector<double>(5));
+      std::vector<std::array<double, 4>> line; // eta and the midline's placement
+      std::vector<Tensor<1, 3>>          director;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fev.reinit(cell);
+          fev.get_function_values(field, values);
+          for (unsigned int k = 0; k < unit.size(); ++k)
+            {
+              const double eta = fev.quadrature_point(k)[0];
+              line.push_back({{eta, eta + values[k][0], values[k][1], values[k][2]}});
+              director.push_back(kinematics::strip_director(values[k][3], values[k][4]));
+            }
+        }
+      Vector<double> end(fe->n_components());
+      geometry::value_on_line(dof_handler, field, 0.5 * strip_width, end);
+      line.push_back({{0.5 * strip_width, 0.5 * strip_width + end[0], end[1], end[2]}});
+      director.push_back(kinematics::strip_director(end[3], end[4]));
+      std::ostringstream csv;
+      csv << "loop,X1,X2,w1,w2,w3,von_Mises_stress\n" << std::setprecision(17);
+      for (const double zeta : {-0.5 * thickness, 0.5 * thickness})
+        for (std::size_t j = 0; j < line.size(); ++j)
+          {
+            const std::size_t i = zeta < 0 ? j : line.size() - 1 - j;
+            csv << "0," << line[i][0] << ',' << zeta;
+            for (unsigned int c = 0; c < 3; ++c)
+              csv << ',' << line[i][1 + c] + zeta * director[i][c];
+            csv << ",0\n";
+          }
+      io::write_file_atomically(output_directory + "/outline.csv", [&csv](std::ostream &o) { o << csv.str(); });
     }
 
     void

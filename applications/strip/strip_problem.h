@@ -162,6 +162,10 @@ namespace cosmo
       }
       void
       write_section(const std::string &file, const Vector<double> &U) const;
+      /// outline.csv: the section's boundary (the width line thickened by h)
+      /// at U, for the rod's body swept as a strip's section.
+      void
+      write_outline(const Vector<double> &U) const;
       /// strip-NNNN.vtu: a piece of the strip swept along the helix.
       void
       write_piece(const std::string &file) const;

@@ -313,7 +313,7 @@ namespace cosmo
       build_curves();
       check_positive_definite();
       outline.clear();
-      if (members.size() == 1 && !members[0].strip)
+      if (members.size() == 1)
         outline = read_outline((path.parent_path() / "outline.csv").string());
     }
 

@@ -125,7 +125,7 @@ namespace cosmo
       }
       std::string
       description() const override;
-      /// One part-1 section's outline.csv, beside its summary.json (none for a family or a strip).
+      /// One section's outline.csv (part 1, or a strip's), beside its summary.json (none for a family).
       SectionOutline
       section_outline() const override
       {
