@@ -259,45 +259,22 @@ namespace cosmo
         s.add_second_derivatives(W_s, Hz);
       }
 
-      /**
-       * element_energy() and its derivatives in y = (chord c, q_a, q_b) by
-       * the chain rule through z = (theta, u), what nested AD of the whole
-       * energy in 11 variables gives at a fifth of the Jacobian's cost
-       * (benchmarks/README.md):
-       *  - theta(q_a, q_b) and u(c, q_a) with their derivatives in closed
-       *    form (kinematics/rod_element_derivatives.h; strain_variables());
-       *  - h psi(strains(theta, u)) and its derivatives in z through the
-       *    strains' (energy_in_strain_variables());
-       *  - W_y = z_y^T W_z, W_yy = z_y^T W_zz z_y + sum_m W_z_m (z_m)_yy;
-       *  - the quaternions' norm penalty and the spin gauge in closed form.
-       * Checked against the nested AD of element_energy (COSMO_NESTED_AD,
-       * tests/rod_validation.py case 'chain_rule').
-       */
-      void
-      element_energy_by_chain_rule(const std::array<double, n_ad> &    y,
-                                   const RodElementData &              d,
-                                   const materials::RodLaw &           law,
-                                   const materials::RodNaturalState &  natural,
-                                   const unsigned int                  e,
-                                   const bool                          with_hessian,
-                                   double &                            W,
-                                   std::array<double, n_ad> &          G,
-                                   std::array<double, n_ad * n_ad> &   H)
-      {
-        const StrainVariables  v = strain_variables(y, d, e, with_hessian);
-        std::array<double, 6>  gz;
-        std::array<double, 36> Hz;
-        energy_in_strain_variables(v.z, d.h, law, natural, with_hessian, W, gz, Hz);
-        pull_back_to_chord_and_quaternions(v, gz, Hz, with_hessian, G, H);
-        add_penalties(y, d, e, with_hessian, W, G, H);
-        if (with_hessian)
-          for (unsigned int a = 0; a < n_ad; ++a)
-            for (unsigned int b = 0; b < a; ++b)
-              H[n_ad * a + b] = H[n_ad * b + a];
-      }
-
     } // namespace
 
+    /**
+     * The element's energy and its derivatives in y = (chord c, q_a, q_b) by
+     * the chain rule through z = (theta, u), what nested AD of the whole
+     * energy in 11 variables gives at a fifth of the Jacobian's cost
+     * (benchmarks/README.md):
+     *  - theta(q_a, q_b) and u(c, q_a) with their derivatives in closed
+     *    form (kinematics/rod_element_derivatives.h; strain_variables());
+     *  - h psi(strains(theta, u)) and its derivatives in z through the
+     *    strains' (energy_in_strain_variables());
+     *  - W_y = z_y^T W_z, W_yy = z_y^T W_zz z_y + sum_m W_z_m (z_m)_yy;
+     *  - the quaternions' norm penalty and the spin gauge in closed form.
+     * Checked against the nested AD of element_energy (COSMO_NESTED_AD,
+     * tests/rod_validation.py case 'chain_rule').
+     */
     void
     element_energy_derivatives(const std::array<double, n_ad> &   y,
                                const RodElementData &             d,
@@ -313,10 +290,21 @@ namespace cosmo
       // the chain rule (tests/rod_validation.py 'chain_rule', benchmarks).
       static const bool nested_ad = std::getenv("COSMO_NESTED_AD") != nullptr;
       if (nested_ad)
-        materials::internal::differentiate<n_ad>(
-          y, [&](const auto &z) { return element_energy(z, d, law, natural, e); }, with_hessian, W, G, H);
-      else
-        element_energy_by_chain_rule(y, d, law, natural, e, with_hessian, W, G, H);
+        {
+          materials::internal::differentiate<n_ad>(
+            y, [&](const auto &z) { return element_energy(z, d, law, natural, e); }, with_hessian, W, G, H);
+          return;
+        }
+      const StrainVariables  v = strain_variables(y, d, e, with_hessian);
+      std::array<double, 6>  gz;
+      std::array<double, 36> Hz;
+      energy_in_strain_variables(v.z, d.h, law, natural, with_hessian, W, gz, Hz);
+      pull_back_to_chord_and_quaternions(v, gz, Hz, with_hessian, G, H);
+      add_penalties(y, d, e, with_hessian, W, G, H);
+      if (with_hessian)
+        for (unsigned int a = 0; a < n_ad; ++a)
+          for (unsigned int b = 0; b < a; ++b)
+            H[n_ad * a + b] = H[n_ad * b + a];
     }
 
     /**
