@@ -322,7 +322,7 @@ namespace
     double                                 worst[3] = {0, 0, 0};
     // (differences over max(largest entry, 1): theta = 0 is a value of the
     // samples, the quantities are of order one)
-    auto relative = [](const double *a, const double *b, const int n) {
+    auto scaled_difference = [](const double *a, const double *b, const int n) {
       double d = 0, m = 1;
       for (int i = 0; i < n; ++i)
         d = std::max(d, std::abs(a[i] - b[i])), m = std::max(m, std::abs(a[i]));
@@ -348,8 +348,8 @@ namespace
           true, u0, du0, ddu0);
         chord_in_frame_derivatives(xu, true, u1, du1, ddu1);
         for (unsigned int i = 0; i < 3; ++i)
-          worst[0] = std::max({worst[0], relative(&u0[i], &u1[i], 1), relative(du0[i].data(), du1[i].data(), 7),
-                               relative(ddu0[i].data(), ddu1[i].data(), 49)});
+          worst[0] = std::max({worst[0], scaled_difference(&u0[i], &u1[i], 1), scaled_difference(du0[i].data(), du1[i].data(), 7),
+                               scaled_difference(ddu0[i].data(), ddu1[i].data(), 49)});
         std::array<double, 8> xq;
         for (auto &x : xq)
           x = 0.6 * r(gen);
@@ -378,8 +378,8 @@ namespace
               true, t0, dt0, ddt0);
             relative_rotation_derivatives(xq, s, true, t1, dt1, ddt1);
             for (unsigned int i = 0; i < 3; ++i)
-              worst[1] = std::max({worst[1], relative(&t0[i], &t1[i], 1), relative(dt0[i].data(), dt1[i].data(), 8),
-                                   relative(ddt0[i].data(), ddt1[i].data(), 64)});
+              worst[1] = std::max({worst[1], scaled_difference(&t0[i], &t1[i], 1), scaled_difference(dt0[i].data(), dt1[i].data(), 8),
+                                   scaled_difference(ddt0[i].data(), ddt1[i].data(), 64)});
           }
         std::array<double, 6> z, c;
         for (unsigned int k = 0; k < 6; ++k)
@@ -413,8 +413,8 @@ namespace
               g1[a] += c[k] * d.s_z[k][a];
           }
         d.add_second_derivatives(c, H1);
-        worst[2] = std::max({worst[2], relative(&W0, &W1, 1), relative(g0.data(), g1.data(), 6),
-                             relative(H0.data(), H1.data(), 36)});
+        worst[2] = std::max({worst[2], scaled_difference(&W0, &W1, 1), scaled_difference(g0.data(), g1.data(), 6),
+                             scaled_difference(H0.data(), H1.data(), 36)});
       }
     check_close("u = R(q)^T c: value and derivatives, largest difference / largest entry", worst[0], 0, 0, 1e-12);
     check_close("theta(q_a, q_b), with and without a seam", worst[1], 0, 0, 1e-12);

@@ -264,7 +264,7 @@ namespace cosmo
     /**
      * The element's energy and its derivatives in y = (chord c, q_a, q_b) by
      * the chain rule through z = (theta, u), what nested AD of the whole
-     * energy in 11 variables gives at a fifth of the Jacobian's cost
+     * energy in 11 variables gives at a tenth of the Jacobian's cost
      * (benchmarks/README.md):
      *  - theta(q_a, q_b) and u(c, q_a) with their derivatives in closed
      *    form (kinematics/rod_element_derivatives.h; strain_variables());
