@@ -233,7 +233,8 @@ namespace cosmo
                         "section or a strip), its boundary as deformed at its natural shape "
                         "(a strip's: its width line thickened by h) swept along the "
                         "centreline in each node's director frame, coloured by the section's "
-                        "von Mises stress there (section_stress; 0 for a strip) and by the "
+                        "von Mises stress at each element's strains (section_stress: part 1's "
+                        "stress linearized about its natural shape; 0 for a strip) and by the "
                         "rod's strains and resultants: body-NNNN.vtu (body.pvd).");
       prm.leave_subsection();
     }

@@ -372,11 +372,38 @@ namespace cosmo
       }
 
       /**
+       * The section's von Mises stress at an outline point P at the elastic
+       * strains e: part 1's Cauchy stress linearized about the state it was
+       * computed at, sigma + dsigma/de e (theory-rod.md 10), where P carries
+       * the linearization; else the stress P was written with (a strip's
+       * outline: 0).
+       */
+      double
+      section_stress(const std::vector<double> &P, const std::array<double, 6> &e)
+      {
+        if (P.size() < 48)
+          return P[5];
+        std::array<double, 6> sigma;
+        for (unsigned int c = 0; c < 6; ++c)
+          {
+            sigma[c] = P[6 + c];
+            for (unsigned int k = 0; k < 6; ++k)
+              sigma[c] += P[12 + 6 * k + c] * e[k];
+          }
+        const double mean = (sigma[0] + sigma[1] + sigma[2]) / 3;
+        double       J2   = 0;
+        for (unsigned int c = 0; c < 3; ++c)
+          J2 += 0.5 * (sigma[c] - mean) * (sigma[c] - mean) + sigma[3 + c] * sigma[3 + c];
+        return std::sqrt(3 * J2);
+      }
+
+      /**
        * The rod drawn as its own cross-section: each outline segment of the
        * law's section (points P with placement w(P) in the director frame
        * at the natural state) swept along each element, x = r + R w at its
-       * nodes, bilinear patches; the section's stress there and the
-       * element's strains and resultants as fields.
+       * nodes, bilinear patches; the section's stress there at the
+       * element's strains and the element's strains and resultants as
+       * fields.
        */
       io::VTUPatches<2>
       swept_section(const RodProblem &p, const Vector<double> &X, const double t,
@@ -389,6 +416,11 @@ namespace cosmo
         for (unsigned int e = 0; e < p.n_elements; ++e)
           {
             const auto m = sample(p, X, e, t);
+            // The strains the section sees (of its natural state, unweighted by
+            // 'Stiffness factors': the stress of the section itself).
+            auto natural    = p.natural_state((e + 0.5) * p.element_length(), t);
+            natural.weights = {{1, 1, 1, 1, 1, 1}};
+            const auto elastic = materials::elastic_rod_strains(m.strain, natural);
             for (const auto &loop : outline)
               for (std::size_t j = 0; j < loop.size(); ++j)
                 {
@@ -402,7 +434,7 @@ namespace cosmo
                         for (unsigned int d = 0; d < 3; ++d)
                           x[c] += m.frames[i][c][d] * P[2 + d];
                       auto v = strains_and_resultants(m, i);
-                      v.push_back(P[5]);
+                      v.push_back(section_stress(P, elastic));
                       out.set_position(k, x);
                       out.set_values(k, v);
                     }

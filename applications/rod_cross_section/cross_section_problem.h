@@ -122,6 +122,11 @@ namespace cosmo
       classify_critical_mode(const Vector<double> &mode) const override;
 
     private:
+      /// du/de_k of the field in the six strains at the current state, if
+      /// the factorization in place is its own (else empty).
+      std::vector<Vector<double>>
+      field_sensitivities() const;
+
       bool                           quiet = false;   // a coarser copy says nothing
       std::string                    coarse_start_report; // Newton iterations per coarser mesh
       assembly::ConstitutiveTable    table;

@@ -52,13 +52,29 @@ namespace cosmo
       /// surface-NNNN.vtu: the surface layers with their growth and stress (as write_rod_piece).
       std::string
       write_surface_layers(const std::string &name) const;
-      /// outline.csv: the section's boundary at this state, as closed loops of
-      /// points (X1, X2) with the section placement w and the von Mises stress
-      /// there (what the rod application sweeps along a whole rod).
+      /**
+       * outline.csv: the section's boundary at this state, as closed loops of
+       * points (X1, X2) with the section placement w and the von Mises stress
+       * there (what the rod application sweeps along a whole rod). Given the
+       * field's derivatives du/de_k in the six strains (the factorization's,
+       * at this state), also the Cauchy stress there and its derivatives in
+       * the strains: the rod then colours its section by the stress at its
+       * own strains, linearized about this state.
+       */
       void
-      write_outline() const;
+      write_outline(const std::vector<Vector<double>> &field_sensitivities = {}) const;
 
     private:
+      /// Per face (or loop), per point, outline.csv's values.
+      using OutlineRows = std::vector<std::vector<std::vector<double>>>;
+      void
+      add_stress_derivatives(
+        const std::vector<Vector<double>> &                                                 field_sensitivities,
+        const std::function<OutlineRows(const Vector<double> &, const std::array<double, 6> &)> &at,
+        OutlineRows &                                                                       segments) const;
+      void
+      write_outline_csv(const OutlineRows &loops, bool linearized) const;
+
       const SectionDiscretization & discretization;
       const CrossSectionParameters &parameters;
       const Vector<double> &        solution;

@@ -32,25 +32,31 @@ namespace cosmo
       public:
         SectionPostprocessor(const materials::MaterialLibrary &materials,
                              const std::array<double, 6> &     strains,
-                             const double                      t)
+                             const double                      t,
+                             const bool                        with_stress_tensor = false)
           : materials(materials)
           , nu({strains[0], strains[1], strains[2]})
           , kappa({strains[3], strains[4], strains[5]})
           , t(t)
+          , with_stress_tensor(with_stress_tensor)
         {}
 
         std::vector<std::string>
         get_names() const override
         {
-          return {"position", "position", "position", "traction_E3", "traction_E3",
-                  "traction_E3", "von_Mises_stress", "mean_stress", "growth_J",
-                  "elastic_J", "energy_density", "region"};
+          std::vector<std::string> names = {"position", "position", "position", "traction_E3", "traction_E3",
+                                            "traction_E3", "von_Mises_stress", "mean_stress", "growth_J",
+                                            "elastic_J", "energy_density", "region"};
+          if (with_stress_tensor)
+            for (const char *c : stress_components)
+              names.push_back(std::string("sigma_") + c);
+          return names;
         }
         std::vector<DataComponentInterpretation::DataComponentInterpretation>
         get_data_component_interpretation() const override
         {
           std::vector<DataComponentInterpretation::DataComponentInterpretation> v(
-            12, DataComponentInterpretation::component_is_scalar);
+            get_names().size(), DataComponentInterpretation::component_is_scalar);
           for (unsigned int k = 0; k < 6; ++k)
             v[k] = DataComponentInterpretation::component_is_part_of_vector;
           return v;
@@ -99,13 +105,21 @@ namespace cosmo
               out[p][9]  = J / determinant(Fg);
               out[p][10] = d.energy;
               out[p][11] = cell->material_id();
+              if (with_stress_tensor)
+                for (unsigned int k = 0; k < 6; ++k)
+                  out[p][12 + k] = sigma[stress_index[k][0]][stress_index[k][1]];
             }
         }
+
+        /// The Cauchy stress's six components, in the order of outline.csv's columns.
+        static constexpr const char *stress_components[6] = {"11", "22", "33", "12", "13", "23"};
+        static constexpr unsigned int stress_index[6][2]  = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
 
       private:
         const materials::MaterialLibrary &materials;
         const Tensor<1, 3>                nu, kappa;
         const double                      t;
+        const bool                        with_stress_tensor;
       };
     } // namespace
 
@@ -117,12 +131,27 @@ namespace cosmo
       std::vector<std::pair<std::string, std::string>> files = {
         {"solution", writer.write_section(tag)}, {"rod", writer.write_rod_piece("rod-" + tag)}};
       if (!distributed_mesh)
-        writer.write_outline();
+        writer.write_outline(field_sensitivities());
       // (a distributed mesh: every rank writes its piece, with or without faces of its own)
       if (!surface_layers.layers().empty() &&
           (!discretization.get_surface_faces().empty() || distributed_mesh))
         files.emplace_back("surface", writer.write_surface_layers("surface-" + tag));
       return files;
+    }
+
+    std::vector<Vector<double>>
+    CrossSectionProblem::field_sensitivities() const
+    {
+      // du/de_k = -A^-1 E_Ue e_k, from the factorization and border columns
+      // of this very state (condensed_state()'s, for its stiffness); none if
+      // the factorization in place is another state's.
+      if (!system || system->distributed() || !factorization.here(solution, load_parameter))
+        return {};
+      std::vector<Vector<double>> du = system->border_columns;
+      system->solver().solve(du);
+      for (auto &v : du)
+        v *= -1.;
+      return du;
     }
 
     SectionVTUWriter::SectionVTUWriter(const SectionDiscretization & discretization,
@@ -309,15 +338,19 @@ namespace cosmo
 
     namespace
     {
-      /// A boundary face's points: (X1, X2, w1, w2, w3, von Mises stress) each.
-      using OutlineSegment = std::vector<std::array<double, 6>>;
+      /**
+       * A boundary face's points, each (X1, X2, w1, w2, w3, von Mises
+       * stress), then, if linearized, the Cauchy stress's six components and
+       * their derivatives in the six rod strains (outline.csv's columns).
+       */
+      using OutlineSegment = std::vector<std::vector<double>>;
 
       /// The segments chained end to end into closed loops (a hole is a loop
       /// of its own); the shared end points once.
       std::vector<OutlineSegment>
       chain_into_loops(std::vector<OutlineSegment> segments, const double tolerance)
       {
-        auto same = [tolerance](const std::array<double, 6> &a, const std::array<double, 6> &b) {
+        auto same = [tolerance](const std::vector<double> &a, const std::vector<double> &b) {
           return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance;
         };
         std::vector<OutlineSegment> loops;
@@ -347,44 +380,133 @@ namespace cosmo
             }
         return loops;
       }
+
+      /**
+       * The postprocessor on the boundary faces of the field u: per face
+       * its points, each the reference point (X1, X2), curved by the
+       * section's mapping, then the postprocessor's columns.
+       */
+      std::vector<OutlineSegment>
+      boundary_columns(const SectionDiscretization &discretization,
+                       const Vector<double> &       u,
+                       const SectionPostprocessor & post,
+                       const unsigned int           degree)
+      {
+        DataOutFaces<2> out;
+        out.attach_dof_handler(discretization.get_dof_handler());
+        out.add_data_vector(u, post);
+        out.build_patches(discretization.get_mapping(), degree);
+        const unsigned int          n_data = post.get_names().size();
+        std::vector<OutlineSegment> faces;
+        for (const auto &patch : out.get_patches())
+          {
+            OutlineSegment face;
+            for (unsigned int k = 0; k < patch.data.n_cols(); ++k)
+              {
+                const double xi = double(k) / patch.n_subdivisions;
+                Point<2>     X  = (1 - xi) * patch.vertices[0] + xi * patch.vertices[1];
+                if (patch.points_are_available)
+                  X = Point<2>(patch.data(n_data, k), patch.data(n_data + 1, k));
+                std::vector<double> row = {X[0], X[1]};
+                for (unsigned int c = 0; c < n_data; ++c)
+                  row.push_back(patch.data(c, k));
+                face.push_back(row);
+              }
+            faces.push_back(face);
+          }
+        return faces;
+      }
     } // namespace
 
     void
-    SectionVTUWriter::write_outline() const
+    SectionVTUWriter::write_outline(const std::vector<Vector<double>> &field_sensitivities) const
     {
       // The postprocessor of solution-NNNN.vtu on the boundary faces: the
       // placement w (its first three columns) and the von Mises stress (its
-      // seventh) at the faces' points, curved by the section's mapping.
-      Vector<double>       u(solution.begin(), solution.begin() + discretization.n_u());
-      SectionPostprocessor post(parameters.materials, strains, t);
-      DataOutFaces<2>      out;
-      out.attach_dof_handler(discretization.get_dof_handler());
-      out.add_data_vector(u, post);
-      out.build_patches(discretization.get_mapping(), parameters.degree);
-      constexpr unsigned int      n_data = 12; // the postprocessor's columns
+      // seventh) at the faces' points; with the field's sensitivities, also
+      // the stress tensor (columns 12-17) and its derivatives in the strains.
+      const unsigned int n_u        = discretization.n_u();
+      const bool         linearized = field_sensitivities.size() == 6;
+      Vector<double>     u(solution.begin(), solution.begin() + n_u);
+      const auto         at = [&](const Vector<double> &v, const std::array<double, 6> &e) {
+        return boundary_columns(discretization, v, SectionPostprocessor(parameters.materials, e, t, linearized),
+                                parameters.degree);
+      };
+      const auto                  base = at(u, strains);
       std::vector<OutlineSegment> segments;
-      for (const auto &patch : out.get_patches())
+      for (const auto &face : base)
         {
           OutlineSegment segment;
-          for (unsigned int k = 0; k < patch.data.n_cols(); ++k)
+          for (const auto &row : face)
             {
-              const double xi = double(k) / patch.n_subdivisions;
-              Point<2>     X  = (1 - xi) * patch.vertices[0] + xi * patch.vertices[1];
-              if (patch.points_are_available)
-                X = Point<2>(patch.data(n_data, k), patch.data(n_data + 1, k));
-              segment.push_back({{X[0], X[1], patch.data(0, k), patch.data(1, k), patch.data(2, k),
-                                  patch.data(6, k)}});
+              std::vector<double> p = {row[0], row[1], row[2], row[3], row[4], row[8]};
+              if (linearized)
+                p.insert(p.end(), row.begin() + 14, row.begin() + 20);
+              segment.push_back(p);
             }
           segments.push_back(segment);
         }
-      const double diameter = discretization.properties().diameter;
+      if (linearized)
+        add_stress_derivatives(field_sensitivities, at, segments);
+      write_outline_csv(chain_into_loops(segments, 1e-9 * discretization.properties().diameter), linearized);
+    }
+
+    void
+    SectionVTUWriter::add_stress_derivatives(
+      const std::vector<Vector<double>> &                                                     field_sensitivities,
+      const std::function<OutlineRows(const Vector<double> &, const std::array<double, 6> &)> &at,
+      OutlineRows &                                                                           segments) const
+    {
+      // d sigma/d e_k along the section's linearized response: the strain
+      // e_k moved with the field's du/de_k = -A^-1 E_Ue e_k, by central
+      // differences of step 1e-5 (1e-5/D for a curvature): sigma is smooth
+      // in both, so the difference's error is ~1e-10 of sigma, far below
+      // what the drawing of a stress needs (validation.rod_section_stress).
+      const unsigned int n_u = discretization.n_u();
+      const double       D   = discretization.properties().diameter;
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          const double                     h = 1e-5 * (k < 3 ? 1. : 1. / D);
+          std::array<OutlineRows, 2> sides;
+          for (unsigned int side = 0; side < 2; ++side)
+            {
+              const double   sign = side == 0 ? 1. : -1.;
+              auto           e    = strains;
+              Vector<double> v(solution.begin(), solution.begin() + n_u);
+              e[k] += sign * h;
+              for (unsigned int i = 0; i < n_u; ++i)
+                v[i] += sign * h * field_sensitivities[k][i];
+              sides[side] = at(v, e);
+            }
+          for (std::size_t f = 0; f < segments.size(); ++f)
+            for (std::size_t q = 0; q < segments[f].size(); ++q)
+              for (unsigned int c = 0; c < 6; ++c)
+                segments[f][q].push_back((sides[0][f][q][14 + c] - sides[1][f][q][14 + c]) / (2 * h));
+        }
+    }
+
+    void
+    SectionVTUWriter::write_outline_csv(const OutlineRows &loops, const bool linearized) const
+    {
       std::ostringstream csv;
-      csv << "loop,X1,X2,w1,w2,w3,von_Mises_stress\n" << std::setprecision(17);
-      const auto loops = chain_into_loops(segments, 1e-9 * diameter);
+      csv << "loop,X1,X2,w1,w2,w3,von_Mises_stress";
+      if (linearized)
+        {
+          for (const char *c : SectionPostprocessor::stress_components)
+            csv << ",sigma_" << c;
+          for (const auto &strain : kinematics::strain_names)
+            for (const char *c : SectionPostprocessor::stress_components)
+              csv << ",dsigma_" << c << "/d" << strain;
+        }
+      csv << '\n' << std::setprecision(17);
       for (std::size_t l = 0; l < loops.size(); ++l)
         for (const auto &p : loops[l])
-          csv << l << ',' << p[0] << ',' << p[1] << ',' << p[2] << ',' << p[3] << ',' << p[4] << ','
-              << p[5] << '\n';
+          {
+            csv << l;
+            for (const double v : p)
+              csv << ',' << v;
+            csv << '\n';
+          }
       io::write_file_atomically(parameters.output_directory + "/outline.csv",
                                 [&csv](std::ostream &o) { o << csv.str(); });
     }

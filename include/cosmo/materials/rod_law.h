@@ -134,10 +134,14 @@ namespace cosmo
        * section swept along the centreline: closed loops (the boundary, and
        * a hole's) of points, each (X1, X2, w1, w2, w3, stress): the reference
        * point, its placement w in the director frame at the natural state
-       * and the section's von Mises stress there. Empty if the law has no
-       * section (a part-1 outline.csv beside the law's result).
+       * and the section's von Mises stress there; then, where the section
+       * was linearized (6 + 6 + 36 values), the Cauchy stress's components
+       * (11, 22, 33, 12, 13, 23) there and their derivatives in the six
+       * strains (strain-major), so that the stress follows the rod's strains.
+       * Empty if the law has no section (a part-1 or strip outline.csv
+       * beside the law's result).
        */
-      using SectionOutline = std::vector<std::vector<std::array<double, 6>>>;
+      using SectionOutline = std::vector<std::vector<std::vector<double>>>;
       virtual SectionOutline
       section_outline() const
       {

@@ -82,25 +82,29 @@ namespace cosmo
     RodLaw::SectionOutline
     read_outline(const std::string &file)
     {
-      // loop,X1,X2,w1,w2,w3,von_Mises_stress (rod_cross_section's outline.csv);
+      // loop,X1,X2,w1,w2,w3,von_Mises_stress (rod_cross_section's or a
+      // strip's outline.csv), and part 1's stress linearization (42 more);
       // absent or unreadable: no outline (the body is then drawn as a tube).
       RodLaw::SectionOutline loops;
       std::ifstream          in(file);
       std::string            line;
       std::getline(in, line);
+      const std::size_t n_cells = split_csv(line).size();
+      if (n_cells != 7 && n_cells != 49)
+        return {};
       while (std::getline(in, line))
         try
         {
           const auto cells = split_csv(line);
-          if (cells.size() != 7)
+          if (cells.size() != n_cells)
             return {};
           const std::size_t l = std::stoul(cells[0]);
           if (l > loops.size())
             return {};
           if (l == loops.size())
             loops.emplace_back();
-          std::array<double, 6> p;
-          for (unsigned int k = 0; k < 6; ++k)
+          std::vector<double> p(n_cells - 1);
+          for (unsigned int k = 0; k + 1 < n_cells; ++k)
             p[k] = std::stod(cells[1 + k]);
           loops[l].push_back(p);
         }
