@@ -136,10 +136,13 @@ def main(argv):
             lo, hi = reader.PointData[name].GetRange()
             return max(abs(lo), abs(hi))
         field = max(["kappa1", "kappa2", "kappa3"], key=largest)
+        # A part-1 section's body: its stress at the rod's strains, if any.
+        if body and "section_stress" in reader.PointData.keys() and largest("section_stress") > 0:
+            field = "section_stress"
         ColorBy(d, ("POINTS", field))
         view.CameraPosition = [3, -4, 3]
         view.CameraViewUp = [0, 0, 1]
-        what = "%s at t = %g, curvature %s" % (os.path.basename(pvd), t, field)
+        what = "%s at t = %g, %s" % (os.path.basename(pvd), t, field)
     else:
         sys.stderr.write("render_paraview.py: unknown application '%s'\n" % app)
         return 1
