@@ -50,6 +50,14 @@ namespace cosmo
           }
         return out.str();
       }
+
+      /**
+       * The format of what the callers read of a nested run (summary.json,
+       * sweep.csv, table.h5, outline.csv): a result written by a suite whose
+       * outputs differ is computed again, not reused. 2: outline.csv with the
+       * section's stress linearized in the strains.
+       */
+      constexpr unsigned int output_format = 2;
     } // namespace
 
     NestedRun
@@ -82,7 +90,7 @@ namespace cosmo
       // The key: every value, as a run of these parameters would read them.
       std::ostringstream key;
       prm.print_parameters(key, ParameterHandler::ShortPRM);
-      key << named_files(key.str());
+      key << named_files(key.str()) << "# outputs of format " << output_format << "\n";
       const std::filesystem::path done = std::filesystem::path(directory) / "finished-parameters.prm";
       if (std::filesystem::exists(done) && text_of(done) == key.str())
         return {directory, true};
