@@ -77,7 +77,7 @@ def _figures():
                                               f"{REF}/rod_euler_clamped.output", "scripts/plot_rod.py",
                                               "scripts/plot_plate_rod.py", "scripts/plot_steps.py"]
     for n in ["helix", "rollup", "euler_clamped", "tendril", "ribbon_rollup", "michell_figure_eight", "tendril_perversion",
-              "seed_pod"]:
+              "seed_pod", "plectoneme"]:
         f[f"rod_{n}.png"] = [f"parameter_files/rod/{n}.prm", f"{REF}/rod_{n}.output",
                              "scripts/render_paraview.py"]
     f["rod_tendril.png"].append("parameter_files/rod/sections/tendril_bilayer.prm")

@@ -27,7 +27,7 @@
 #                                   the critical curve against the independent study
 #   doc/figures/rod_euler_clamped_bifurcation.png
 #                                   output/rod/euler_clamped/bifurcation.png
-#   doc/figures/rod_{helix,rollup,euler_clamped,tendril,ribbon_rollup,michell_figure_eight,tendril_perversion}.png
+#   doc/figures/rod_{helix,rollup,euler_clamped,tendril,ribbon_rollup,michell_figure_eight,tendril_perversion,plectoneme}.png
 #                                   output/rod/<example>: its last state (the
 #                                   buckled branch's for euler_clamped) drawn
 #                                   by ParaView (scripts/render_paraview.py on
@@ -67,7 +67,8 @@ for f in output/strip_shearing/branches.png output/strip_torque_buckling/branche
          output/rod/euler_clamped/summary.json output/rod/euler_clamped/bifurcation.png \
          output/rod/tendril/summary.json output/rod/ribbon_rollup/summary.json \
          output/rod/michell_figure_eight/summary.json output/rod/tendril_perversion/summary.json \
-         output/rod/seed_pod/summary.json output/rod/tendril_overwinding/summary.json; do
+         output/rod/seed_pod/summary.json output/rod/tendril_overwinding/summary.json \
+         output/rod/plectoneme/summary.json; do
   [[ -f "$f" ]] || { log "missing $f" >&2; missing=1; }
 done
 if ((missing)); then
@@ -97,7 +98,7 @@ cp output/rod/euler_clamped/bifurcation.png doc/figures/rod_euler_clamped_bifurc
 display=$((90 + RANDOM % 100))
 Xvfb ":$display" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 & xvfb=$!
 sleep 2
-for n in helix rollup euler_clamped tendril ribbon_rollup michell_figure_eight tendril_perversion seed_pod; do
+for n in helix rollup euler_clamped tendril ribbon_rollup michell_figure_eight tendril_perversion seed_pod plectoneme; do
   DISPLAY=":$display" pvbatch scripts/render_paraview.py "output/rod/$n" "doc/figures/rod_$n.png" >/dev/null 2>&1 \
     || { kill $xvfb; log "rendering output/rod/$n FAILED" >&2; exit 1; }
 done

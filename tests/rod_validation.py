@@ -53,6 +53,11 @@ Cases:
           state, against part 1 run directly at the element's strains:
           their difference is the linearization's O(|e|^2), halving the
           rotation quarters it.
+  twisted_threshold a straight isotropic rod clamped at both ends, pulled
+          (T = 400 B/L^2), twisted by 7 turns and shortened until it buckles:
+          the double branch point (0 -> 2) at the tension of the clamped
+          twisted rod's determinant (theory-rod.md 9.3), approached at second
+          order on 100 and 200 elements.
   overwinding a perverted tendril pulled (quadratic law, B = 1, kappa0 = 20/L,
           L = 3): formed at C = B/1.3, its torsion then softened to C = B/4
           at fixed D ('Stiffness factors'), then pulled to D = 0.96 L. In the
@@ -971,9 +976,72 @@ def section_stress():
     check("the difference is the linearization's O(|e|^2): ratio at 2 alpha and alpha", errors[1] / errors[0], 4, 1)
 
 
+def twisted_clamped_threshold(M, B, L):
+    # The tension T below which a straight rod clamped at both ends, twisted
+    # by the moment M, buckles (theory-rod.md 9.3): the first root, coming
+    # down from above M^2/4B, of the clamped determinant of
+    # B u'''' - i M u''' - T u'' = 0 (u = x + i y the lateral displacement).
+    a = M / (2 * B)
+
+    def det(T):
+        b = np.sqrt(complex(4 * B * T - M * M)) / (2 * B)
+        E = np.exp(1j * a * L)
+        ch = np.cosh(b * L)
+        sh = np.sinh(b * L) / b if b != 0 else L  # sinh(b s)/b: real-analytic in b^2
+        d = ((-1 - 1j * a * L + E * ch) * (-1 + E * (ch + 1j * a * sh)) -
+             (-L + E * sh) * (-1j * a + E * (1j * a * ch + b * b * sh)))
+        return (d / E).real  # (d/E is real: its imaginary part is round-off)
+
+    T = np.linspace(2 * M * M / (4 * B), 0, 4001)
+    values = [det(x) for x in T]
+    k = next(i for i in range(len(T) - 1) if values[i] * values[i + 1] < 0)
+    return brentq(det, T[k + 1], T[k], xtol=1e-12)
+
+
+def twisted_threshold():
+    # A straight isotropic rod (B = 1, C = 0.77, GA = EA = 1e6, L = 1)
+    # clamped at both ends: pulled to T = 400 (t < 0.1), its end B turned by
+    # 7 turns (t < 0.3, M = 14 pi C = 33.87, below Greenhill's 2 sqrt(B T)
+    # at that tension), then shortened, T falling. The straight branch loses
+    # stability at a double branch point (the isotropic rod's two lateral
+    # directions, count 0 -> 2) at the tension of the clamped twisted rod's
+    # determinant, 276.768 (Greenhill's infinite rod: M^2/4B = 286.7). The
+    # discrete threshold approaches it at the element's second order: the
+    # errors at 100 and 200 elements in the ratio 4 +- 1, and the
+    # Richardson extrapolation within the extensible rod's O(T/EA + T/GA)
+    # = 5.5e-4 relative of the inextensible closed form. Resolution: the
+    # bisection's bracket, 1e-8 in t (1e-5 in T).
+    M, B = 0.77 * 2 * math.pi * 7, 1.0
+    exact = twisted_clamped_threshold(M, B, 1.0)
+    check("the closed form's threshold below Greenhill's M^2/4B", exact < M * M / (4 * B), True, 0)
+    errors = []
+    for n in (100, 200):
+        s = run("twisted-%d" % n, {
+            "Rod": {"Length": 1, "Number of elements": n,
+                    "Material": {"Law": "quadratic", "Stiffnesses": "1e6, 1e6, 1e6, 1, 1, 0.77"}},
+            "End A": {"Support": "clamped"},
+            "End B": {"Support": "clamped",
+                      "Displacement": "0; 0; 0.0004*min(t/0.1, 1) - 0.0006*max(0, (t-0.3)/0.7)",
+                      "Rotation": "0; 0; 2*pi*7*min(1, t/0.3)"},
+            "Path following": {"Method": "arclength"},
+            "Arclength continuation": {"Parameter range": "0, 1", "Initial step": 0.005, "Maximum step": 0.01,
+                                       "Field weight": 1e-5, "Maximum number of steps": 600,
+                                       "Switch branches": "false", "Stop at first event": "true"},
+            "Output": {"Tube radius": 0}, **NEWTON})
+        e = s["events"][0]
+        check("%d elements: a double branch point (0 -> 2)" % n,
+              (e["kind"], e["n_negative_before"], e["n_negative_after"]) == ("branch point", 0, 2), True, 0)
+        check("%d elements: the end moment 14 pi C" % n, e["loads_B"][5], M, 1e-9 * M)
+        errors.append(e["loads_B"][2] - exact)
+        print("  %d elements: T = %.9g, closed form %.9g" % (n, e["loads_B"][2], exact))
+    check("second order: the errors' ratio", errors[0] / errors[1], 4, 1)
+    richardson = exact + (4 * errors[1] - errors[0]) / 3
+    check("Richardson's T against the closed form", richardson, exact, 5.5e-4 * exact)
+
+
 {"helix": helix, "section": section, "table": table, "elastica": elastica, "rollup": rollup, "euler": euler, "euler_pinned": lambda: euler(True),
  "growth": growth, "michell": michell, "figure_eight": figure_eight, "clamped_link": clamped_link, "perversion": perversion, "link": link, "study": study, "loads": loads,
  "chain_rule": chain_rule, "body": body, "overwinding": overwinding,
- "section_stress": section_stress}[case]()
+ "section_stress": section_stress, "twisted_threshold": twisted_threshold}[case]()
 print("%d check(s) failed" % failures if failures else "all checks passed")
 sys.exit(1 if failures else 0)

@@ -65,7 +65,7 @@ namespace cosmo
                           "any angle (e.g. '0; 0; 2*pi*t' twists a rod along e3 by t turns).");
         prm.declare_entry("Force", "0; 0; 0", Patterns::Anything(),
                           "A dead force on the end (it keeps its direction), 3 expressions "
-                          "of t; it works on a free end only.");
+                          "of t; it works on an end whose position is free (free, rotation only).");
         prm.leave_subsection();
       }
 
