@@ -8,6 +8,7 @@
 
 #include <cosmo/io/ranks.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/critical_estimate.h>
 #include <cosmo/solvers/newton.h>
 #include <cosmo/solvers/sparse_direct.h>
 
@@ -897,6 +898,147 @@ namespace
           r.iterations >= 1 && setups == r.iterations && residuals == 1 + r.iterations &&
             r.residual_norm <= settings.relative_tolerance);
   }
+  /**
+   * A chain's lateral stiffness K (the cantilever's) under a compression
+   * u h that a stiff axial unknown u carries, u following the load:
+   * E = a/2 (u - lambda)^2 + 1/2 w.K w - u h/2 w.w. On the path w = 0,
+   * u = lambda, the Hessian's w block is K - lambda h I: linear in the load
+   * along the tangent (du = 1) but independent of it at a fixed state, so
+   * the estimate sees the critical load only through the state's motion.
+   */
+  class MovingPrestress : public DenseProblem
+  {
+  public:
+    explicit MovingPrestress(unsigned int n)
+      : DenseProblem(n + 1)
+      , h(1. / n)
+    {}
+    const double h;
+    const double a = 1e3;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      H                   = 0;
+      const unsigned int m = n - 1; // lateral unknowns w_i = U[1 + i]
+      R[0]                 = a * (U[0] - l);
+      H(0, 0)              = a;
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          const double w = U[1 + i], left = (i == 0) ? 0. : U[i];
+          R[0] -= 0.5 * h * w * w;
+          H(0, 1 + i) = H(1 + i, 0) = -h * w;
+          R[1 + i]                  = (w - left) / h - U[0] * h * w;
+          H(1 + i, 1 + i)           = 1 / h - U[0] * h;
+          if (i > 0)
+            H(1 + i, i) = -1 / h;
+          if (i + 1 < m)
+            {
+              R[1 + i] -= (U[2 + i] - w) / h;
+              H(1 + i, 1 + i) += 1 / h;
+              H(1 + i, 2 + i) = -1 / h;
+            }
+        }
+    }
+  };
+
+  /// The cantilever's chain with the load entering as g(lambda) = lambda + c lambda^2.
+  class QuadraticLoad : public Cantilever
+  {
+  public:
+    QuadraticLoad(unsigned int n, double c)
+      : Cantilever(n)
+      , c(c)
+    {}
+    const double c;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      Cantilever::evaluate(U, l + c * l * l, R, H);
+    }
+  };
+
+  void
+  critical_estimate()
+  {
+    // The first critical load ahead from one eigenproblem
+    // (solvers/critical_estimate.h). Its resolution: J' by differences of
+    // residuals, round-off ~1e-16 |R|/(eps delta |J' v|), ~1e-8 relative
+    // on these chains (eps = 1e-6, delta = 1e-4, h^2 = 6e-4): tolerances
+    // 1e-6, a hundred times that.
+    const unsigned int n        = 40;
+    const double       h        = 1. / n;
+    const double       lambda_1 = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (h * h);
+    const double       lambda_2 = (2 - 2 * std::cos(3 * M_PI / (2 * n + 1))) / (h * h);
+    {
+      // The trivial state of the cantilever: J = K - lambda h I, exact.
+      Cantilever     p(n);
+      Vector<double> U(n), dU(n), mask(n);
+      mask = 1.;
+      p.set_load_parameter(0.);
+      p.setup_jacobian(U);
+      const auto e = solvers::estimate_first_critical_point(p, U, 0., dU, mask);
+      std::cout << "  cantilever: lambda " << e.lambda << " (exact " << lambda_1 << "), next " << e.next_lambda
+                << " (" << lambda_2 << "), " << e.steps << " Lanczos steps, " << e.residuals << " residuals, "
+                << e.solves << " solves\n";
+      check("cantilever: found and converged", e.found && e.converged);
+      check_close("cantilever: the first critical load", e.lambda, lambda_1, 1e-6);
+      check_close("cantilever: the second", e.next_lambda, lambda_2, 1e-6);
+      // The mode: K v = lambda_1 h v, its residual against |K v|.
+      Vector<double>     R(n);
+      FullMatrix<double> H(n, n);
+      p.set_load_parameter(lambda_1);
+      Vector<double> zero(n), Kv(n);
+      p.residual(zero, R);
+      Vector<double> v = e.mode;
+      v *= 1e-8; // (the residual is linear in so small a v: sin(x) = x to 1e-17)
+      p.residual(v, Kv);
+      check("cantilever: the mode is the critical mode (|J(lambda_1) v| / |v|/h^2 below 1e-6)",
+            Kv.l2_norm() <= 1e-6 * v.l2_norm() / (h * h));
+      check("cantilever: the predicted state U0 + tau dU is the trivial one", e.U.linfty_norm() == 0);
+    }
+    {
+      // The compression carried by a state that moves with the load: the
+      // estimate is exact along the tangent (du = 1), and finds nothing
+      // with a tangent that misses the motion.
+      MovingPrestress p(n);
+      Vector<double>  U(n + 1), dU(n + 1), mask(n + 1);
+      mask = 1.;
+      p.set_load_parameter(0.);
+      p.setup_jacobian(U);
+      const auto none = solvers::estimate_first_critical_point(p, U, 0., dU, mask);
+      check("moving prestress, the tangent without the motion: no critical point ahead", !none.found);
+      dU[0]        = 1;
+      const auto e = solvers::estimate_first_critical_point(p, U, 0., dU, mask);
+      std::cout << "  moving prestress: lambda " << e.lambda << " (exact " << lambda_1 << "), " << e.steps
+                << " Lanczos steps\n";
+      check("moving prestress: found", e.found && e.converged);
+      check_close("moving prestress: the first critical load", e.lambda, lambda_1, 1e-6);
+      check_close("moving prestress: the predicted state u = lambda", e.U[0], e.lambda, 1e-14);
+    }
+    {
+      // A load entering nonlinearly, g = lambda + c lambda^2: from lambda0
+      // the estimate is the linear prediction, one Newton step on
+      // g(lambda) = lambda_1 with g' the difference over the load step
+      // delta = 1e-4 (1 + lambda0): exactly that, not the critical load.
+      const double   c = 0.5 / lambda_1, lambda0 = 0.3 * lambda_1, delta = 1e-4 * (1 + lambda0);
+      QuadraticLoad  p(n, c);
+      Vector<double> U(n), dU(n), mask(n);
+      mask = 1.;
+      p.set_load_parameter(lambda0);
+      p.setup_jacobian(U);
+      const auto e     = solvers::estimate_first_critical_point(p, U, lambda0, dU, mask);
+      auto       g     = [c](const double l) { return l + c * l * l; };
+      const double newton = lambda0 + (lambda_1 - g(lambda0)) * delta / (g(lambda0 + delta) - g(lambda0));
+      std::cout << "  quadratic load: lambda " << e.lambda << ", the linear prediction " << newton
+                << ", the critical load " << (std::sqrt(1 + 4 * c * lambda_1) - 1) / (2 * c) << "\n";
+      check_close("quadratic load: the linear prediction", e.lambda, newton, 1e-6);
+    }
+  }
+
 } // namespace
 
   /**
@@ -980,6 +1122,7 @@ main(int argc, char **argv)
                                    {"bordered_ordering", bordered_ordering},
                                    {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},
                                    {"newton_guess", newton_guess},
-                                   {"predictor_step", predictor_step}};
+                                   {"predictor_step", predictor_step},
+                                   {"critical_estimate", critical_estimate}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

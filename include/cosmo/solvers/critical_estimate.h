@@ -1,0 +1,78 @@
+#ifndef cosmo_solvers_critical_estimate_h
+#define cosmo_solvers_critical_estimate_h
+
+#include <deal.II/lac/vector.h>
+
+#include <string>
+
+/**
+ * The first critical load ahead of a stable state from one eigenproblem
+ * (doc/theory-continuation.md 10): along the path the Hessian is, to first
+ * order in the load, J(lambda0 + tau) = J0 + tau J', J' = dJ/dlambda along
+ * the tangent (the state moving with it); it becomes singular first at the
+ * smallest tau > 0 with J0 v = -tau J' v. For a state that does not move
+ * with the load in the directions the Hessian depends on (a flat plate's
+ * von Karman prestress, a straight column, the trivial state of a
+ * bifurcation problem) J is linear in lambda and the estimate is the
+ * critical load itself; otherwise it is the linear prediction, which
+ * Newton on the augmented system then corrects (critical_point.h).
+ */
+namespace cosmo
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    class BifurcationProblem;
+
+    struct CriticalEstimateSettings
+    {
+      /// Lanczos steps at most (each two residuals and one solve).
+      unsigned int max_steps = 40;
+      /// The largest Ritz value converged when its residual estimate
+      /// |beta_m s_m| is below this fraction of it.
+      double tolerance = 1e-8;
+      /// The load step of the difference for J' (times 1 + |lambda0|).
+      double load_step = 1e-4;
+      /// The state step of the differences J v (times the problem's
+      /// unknowns_scale over |v|_inf).
+      double state_step = 1e-6;
+    };
+
+    struct CriticalEstimate
+    {
+      /// A critical point ahead: a positive eigenvalue theta = 1/tau of
+      /// -J0^-1 J' (none: J' does not destabilize, to first order).
+      bool           found  = false;
+      double         lambda = 0; ///< lambda0 + tau
+      Vector<double> U;          ///< U0 + tau dU, the tangent's prediction there
+      Vector<double> mode;       ///< the Ritz vector, masked, unit max-norm
+      /// The next Ritz value's tau (the second critical load's estimate;
+      /// +inf if none): how well separated the first is.
+      double       next_lambda = 0;
+      unsigned int steps = 0, residuals = 0, solves = 0;
+      bool         converged = false; ///< the Ritz residual below the tolerance
+      std::string  message;
+    };
+
+    /**
+     * The estimate from a state (U0, lambda0) at which the problem's
+     * Jacobian is factorized and positive definite on the mode unknowns
+     * (mask), dU = dU/dlambda the path's tangent there (J0 dU = -dR/dlambda).
+     * Lanczos on K = -J0^-1 J', self-adjoint in the J0 inner product,
+     * with full reorthogonalization; J0 q is carried along the recurrence
+     * (J0 K q = -J' q), so that only J' products (two residuals: a
+     * difference in the state and one in the load) and solves with J0's
+     * factorization are needed. The problem's load is left at lambda0.
+     */
+    CriticalEstimate
+    estimate_first_critical_point(BifurcationProblem             &problem,
+                                  const Vector<double>           &U0,
+                                  double                          lambda0,
+                                  const Vector<double>           &dU,
+                                  const Vector<double>           &mask,
+                                  const CriticalEstimateSettings &settings = CriticalEstimateSettings());
+  } // namespace solvers
+} // namespace cosmo
+
+#endif
