@@ -2,6 +2,7 @@
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/fault_injection.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/critical_estimate.h>
 #include <cosmo/solvers/critical_point.h>
 #include <cosmo/solvers/step_control.h>
 
@@ -268,6 +269,14 @@ namespace cosmo
                         "End the run at the first located fold or branch point (the "
                         "critical point of the first branch): what a study of critical "
                         "points (section Parameter sweep) needs of each run.");
+      prm.declare_entry("First event by estimate", "false", Patterns::Bool(),
+                        "With 'Stop at first event': from the stable start, estimate the first "
+                        "critical load from one eigenproblem (the Hessian's rate along the "
+                        "path, Lanczos with the start's factorization: "
+                        "doc/theory-continuation.md 10) and locate it by Newton on the "
+                        "augmented system from there, instead of following the path to it. "
+                        "The inertia guards it (no other negative mode at the located point); "
+                        "where the estimate or its location fails, the path is followed.");
       prm.leave_subsection();
     }
 
@@ -293,6 +302,7 @@ namespace cosmo
       maximum_depth    = prm.get_integer("Maximum branch depth");
       follow_mirror_images = prm.get_bool("Follow mirror images");
       stop_at_first_event  = prm.get_bool("Stop at first event");
+      first_event_by_estimate = prm.get_bool("First event by estimate");
       if (!(lambda_min < lambda_max))
         throw io::InputError("Arclength continuation", "Parameter range",
                              prm.get("Parameter range"), "min < max");
@@ -1573,6 +1583,163 @@ namespace cosmo
       }
     } // namespace
 
+    namespace
+    {
+      /// The critical point from one estimate at (U, lambda) with the tangent dU
+      /// = dU/dlambda there (the factorization in place is J(U, lambda)):
+      /// the guess converged onto the path at the estimated load, then Newton
+      /// on the augmented system from it. Returns false with `why` set if
+      /// the estimate, its state or the location fails; `estimate` is kept.
+      bool
+      locate_from_estimate(BifurcationProblem &                             problem,
+                           const Vector<double> &                           U,
+                           const double                                     lambda,
+                           const Vector<double> &                           dU,
+                           const Vector<double> &                           mask,
+                           const ArclengthSettings &                        settings,
+                           const NewtonSettings &                           newton,
+                           const double                                     lambda0,
+                           const std::function<void(const std::string &)> & say,
+                           CriticalEstimate &                               estimate,
+                           Vector<double> &                                 on_path,
+                           bool &                                           fold,
+                           CriticalPoint &                                  cp,
+                           std::string &                                    why)
+      {
+        estimate = estimate_first_critical_point(problem, U, lambda, dU, mask);
+        if (!estimate.found || estimate.lambda > settings.lambda_max)
+          {
+            why = estimate.found ? "estimated beyond the parameter range" : estimate.message;
+            return false;
+          }
+        std::ostringstream m;
+        m << std::setprecision(10) << "  first critical point estimated at t = " << estimate.lambda << " from t = "
+          << lambda << " (" << estimate.steps << " Lanczos steps, " << estimate.residuals << " residuals, "
+          << estimate.solves << " solves; the next at t = " << estimate.next_lambda << ")";
+        say(m.str());
+        Vector<double> dR(U.size());
+        problem.set_load_parameter(lambda);
+        problem.load_derivative(U, lambda, dR);
+        const double dR_norm = std::sqrt(masked_dot(dR, dR, mask));
+        const double v_norm  = std::sqrt(masked_dot(estimate.mode, estimate.mode, mask));
+        fold = dR_norm > 0 && std::abs(masked_dot(estimate.mode, dR, mask)) > 1e-4 * dR_norm * v_norm;
+        // The guess converged onto the path first: Newton on the augmented
+        // system fixes the load to its tolerance, but a branch point's state
+        // along the mode only to about its square root; from a state on the
+        // path (as the followed path's bracket gives it) it stays there.
+        on_path = estimate.U;
+        try
+          {
+            problem.set_load_parameter(estimate.lambda);
+            newton_solve(problem, on_path, newton);
+          }
+        catch (NewtonFailure &f)
+          {
+            why = std::string("its state does not converge: ") + f.what();
+            return false;
+          }
+        CriticalPointSettings location;
+        location.resolution_fraction = 0.1;
+        location.max_iterations      = 6; // (a distant guess: re-estimate rather than wander)
+        // (a branch point's system takes the tangent for the branch's direction)
+        cp = locate_critical_point(problem, fold, on_path, estimate.lambda, estimate.mode, mask, dU, 1., false,
+                                   std::abs(estimate.lambda - lambda0), newton.relative_tolerance, location);
+        if (!cp.converged)
+          why = "Newton on the augmented system: " + cp.message;
+        return cp.converged;
+      }
+
+      /**
+       * The first event of a 'Stop at first event' path from one
+       * eigenproblem (critical_estimate.h, doc/theory-continuation.md 10):
+       * from the stable start (U, lambda) with its tangent (tU, tlambda) and
+       * its factorization in place, the estimate's guess located by Newton
+       * on the augmented system; where that does not converge (a path far
+       * from linear in the load), the estimate is made again from the
+       * guess's state on the path while it is stable, up to four times. The
+       * inertia guards the result: no mode other than the critical one may
+       * be negative at the located point (a crossing the estimate missed).
+       * A mode orthogonal to dR/dlambda is taken for a branch point, else a
+       * fold. Returns false, with nothing reported, where it does not hold:
+       * the path is then followed ('First event by estimate').
+       */
+      bool
+      estimated_first_event(BifurcationProblem &                             problem,
+                            const Vector<double> &                           U0,
+                            const double                                     lambda0,
+                            const Vector<double> &                           tU,
+                            const double                                     tlambda,
+                            const Vector<double> &                           mask,
+                            const ArclengthSettings &                        settings,
+                            const NewtonSettings &                           newton,
+                            const std::function<void(const std::string &)> & say,
+                            EventRecord &                                    record)
+      {
+        if (!(tlambda > 0))
+          return false;
+        Vector<double> U = U0, dU = tU, on_path, dR(U0.size());
+        dU /= tlambda;
+        double           lambda = lambda0;
+        CriticalEstimate estimate;
+        CriticalPoint    cp;
+        bool             fold = false;
+        std::string      why;
+        unsigned int     factorizations = 0;
+        for (unsigned int attempt = 0;; ++attempt)
+          {
+            const bool located = locate_from_estimate(problem, U, lambda, dU, mask, settings, newton, lambda0, say,
+                                                      estimate, on_path, fold, cp, why);
+            factorizations += cp.factorizations;
+            if (located)
+              break;
+            // Again from the guess's state on the path, if it is stable there.
+            problem.set_load_parameter(estimate.lambda);
+            if (attempt == 3 || on_path.size() != U.size() || problem.setup_jacobian(on_path) != 0 ||
+                problem.n_negative_eigenvalues() != 0)
+              {
+                say("  the estimated critical point: " + why + "; following the path");
+                problem.set_load_parameter(lambda0);
+                return false;
+              }
+            ++factorizations;
+            U      = on_path;
+            lambda = estimate.lambda;
+            problem.load_derivative(U, lambda, dR);
+            problem.solve_with_jacobian(dR, dU);
+            dU *= -1.;
+          }
+        auto &e             = record.event;
+        e.kind              = fold ? BifurcationProblem::Event::Kind::fold : BifurcationProblem::Event::Kind::branch_point;
+        e.factorizations    = factorizations;
+        e.n_negative_before = 0;
+        e.n_negative_after  = problem.n_negative_eigenvalues();
+        e.lambda_lo         = lambda0;
+        e.lambda_hi         = estimate.lambda;
+        take_location(cp, record);
+        if (e.n_negative_after < 0 || other_negative_modes(e) != 0)
+          {
+            say("  the estimated critical point has " + std::to_string(e.n_negative_after) +
+                " negative eigenvalues: a crossing below it; following the path");
+            problem.set_load_parameter(lambda0);
+            return false;
+          }
+        e.n_negative_after = 1;
+        Vector<double> phi = cp.mode;
+        problem.complete_mode(phi);
+        phi /= std::sqrt(masked_dot(phi, phi, mask));
+        record.mode.assign(phi.begin(), phi.end());
+        std::ostringstream l;
+        l << std::setprecision(12) << "  " << e.name() << " at t = " << e.lambda
+          << " from the estimate (Newton on the augmented system: " << e.newton_iterations << " iterations; "
+          << e.factorizations << " factorizations since the start, resolution " << std::setprecision(2)
+          << event_resolution(e) << ")";
+        say(l.str());
+        problem.set_load_parameter(e.lambda);
+        report_located_event(problem, e, cp.U, fold ? nullptr : &phi);
+        return true;
+      }
+    } // namespace
+
     std::vector<EventRecord>
     ArclengthContinuation::run(BifurcationProblem &problem, Vector<double> &U, const double lambda)
     {
@@ -1594,6 +1761,20 @@ namespace cosmo
           at = Progress();
           incomplete.clear();
           report_first_state(problem, s.U, lambda, r0, s.n_negative, 0, 0, false);
+          if (settings.first_event_by_estimate && settings.stop_at_first_event && s.n_negative == 0)
+            {
+              EventRecord record;
+              // (the factorization in place is the start's: analyse's)
+              if (estimated_first_event(problem, s.U, lambda, s.tU, s.tlambda, mask, settings, newton,
+                                        [this](const std::string &l) { say(l); },
+                                        record))
+                {
+                  factorizations += record.event.factorizations;
+                  events.push_back(record);
+                  say("  stopped at the first event ('Stop at first event')");
+                  return events;
+                }
+            }
           at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
           follow(problem, s, 0, at.may_switch, events, switches, at.step, settings.initial_step,
                  0);

@@ -251,6 +251,10 @@ namespace cosmo
       /// End the run at the first located event ("Stop at first event"):
       /// what a study of critical points needs of each run.
       bool         stop_at_first_event = false;
+      /// With stop_at_first_event: the first event from one eigenproblem at
+      /// the stable start ("First event by estimate", critical_estimate.h),
+      /// the path followed where it does not hold.
+      bool         first_event_by_estimate = false;
 
       static void
       declare_parameters(ParameterHandler &prm);
