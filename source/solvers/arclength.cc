@@ -1606,6 +1606,7 @@ namespace cosmo
                            CriticalPoint &                                  cp,
                            std::string &                                    why)
       {
+        cp       = CriticalPoint(); // (this attempt's: none until located)
         estimate = estimate_first_critical_point(problem, U, lambda, dU, mask);
         if (!estimate.found || estimate.lambda > settings.lambda_max)
           {
@@ -1627,11 +1628,13 @@ namespace cosmo
         // system fixes the load to its tolerance, but a branch point's state
         // along the mode only to about its square root; from a state on the
         // path (as the followed path's bracket gives it) it stays there.
-        on_path = estimate.U;
+        on_path.reinit(0); // (set below once the guess has converged onto the path)
+        Vector<double> guess = estimate.U;
         try
           {
             problem.set_load_parameter(estimate.lambda);
-            newton_solve(problem, on_path, newton);
+            newton_solve(problem, guess, newton);
+            on_path = guess;
           }
         catch (NewtonFailure &f)
           {
@@ -1692,9 +1695,11 @@ namespace cosmo
             factorizations += cp.factorizations;
             if (located)
               break;
-            // Again from the guess's state on the path, if it is stable there.
+            // Again from the guess's state on the path, if it is stable there
+            // (not if there was no estimate, or its state did not converge).
             problem.set_load_parameter(estimate.lambda);
-            if (attempt == 3 || on_path.size() != U.size() || problem.setup_jacobian(on_path) != 0 ||
+            if (attempt == 3 || !estimate.found || estimate.lambda > settings.lambda_max ||
+                on_path.size() != U.size() || problem.setup_jacobian(on_path) != 0 ||
                 problem.n_negative_eigenvalues() != 0)
               {
                 say("  the estimated critical point: " + why + "; following the path");
