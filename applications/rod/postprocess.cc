@@ -248,6 +248,7 @@ namespace cosmo
         std::array<Point<3>, 3>     x;
         std::array<Tensor<2, 3>, 3> frames;
         std::array<double, 6>       strain, resultants;
+        materials::RodNaturalState  natural; ///< at the element's midpoint
       };
 
       ElementSample
@@ -256,7 +257,8 @@ namespace cosmo
         const double  h = p.element_length();
         ElementSample out;
         out.strain                   = p.element_strains(X, e, t);
-        out.resultants               = materials::grown_rod_resultants(*p.law, out.strain, p.natural_state((e + 0.5) * h, t));
+        out.natural                  = p.natural_state((e + 0.5) * h, t);
+        out.resultants               = materials::grown_rod_resultants(*p.law, out.strain, out.natural);
         const Tensor<2, 3> R_a       = kinematics::quaternion_rotation(p.quaternion(X, e));
         const kinematics::RodStrains xi(out.strain);
         out.frames = {{R_a, R_a * kinematics::helix_rotation(xi.kappa, 0.5 * h), R_a * kinematics::helix_rotation(xi.kappa, h)}};
@@ -418,7 +420,7 @@ namespace cosmo
             const auto m = sample(p, X, e, t);
             // The strains the section sees (of its natural state, unweighted by
             // 'Stiffness factors': the stress of the section itself).
-            auto natural    = p.natural_state((e + 0.5) * p.element_length(), t);
+            auto natural    = m.natural;
             natural.weights = {{1, 1, 1, 1, 1, 1}};
             const auto elastic = materials::elastic_rod_strains(m.strain, natural);
             for (const auto &loop : outline)
