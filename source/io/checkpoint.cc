@@ -88,10 +88,13 @@ namespace cosmo
       header.put(application);
       header.put(std::string(COSMO_VERSION));
       header.put(parameters);
-      header.put(payload.bytes());
+      // (header.put(payload.bytes()) written in two parts: the same bytes
+      // without a copy of the payload)
+      header.put(std::uint64_t(payload.bytes().size()));
       write_file_atomically(directory + "/" + checkpoint_name, [&](std::ostream &o) {
         o << magic;
         o.write(header.bytes().data(), header.bytes().size());
+        o.write(payload.bytes().data(), payload.bytes().size());
       });
     }
 

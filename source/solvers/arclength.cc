@@ -388,12 +388,18 @@ namespace cosmo
         /// How many factorizations this system made, and where the last was.
         unsigned int   setups = 0;
         Vector<double> setup_X;
+        bool           setup_ok = false;
 
         int
         setup_jacobian(const Vector<double> &X) override
         {
+          // Set up already at this point (the corrector's first, at the
+          // predictor): the problem's factorization is still that one.
+          if (setups > 0 && setup_ok && same_point(X, setup_X))
+            return 0;
           ++setups;
-          setup_X = X;
+          setup_X  = X;
+          setup_ok = false;
           Vector<double> U(X.begin(), X.begin() + n), Rl(n);
           problem.set_load_parameter(X[n]);
           if (problem.load_derivative(U, X[n], Rl) != 0)
@@ -401,7 +407,9 @@ namespace cosmo
           ++factorizations;
           if (problem.setup_jacobian(U) != 0)
             return 1;
-          return problem.solve_with_jacobian(Rl, b); // b = J^-1 dR/dlambda
+          // b = J^-1 dR/dlambda
+          setup_ok = problem.solve_with_jacobian(Rl, b) == 0;
+          return setup_ok ? 0 : 1;
         }
 
         int
@@ -776,6 +784,14 @@ namespace cosmo
             at_predictor.valid          = true;
           }
       };
+      // The Jacobian at the predictor first: every path below sets it up
+      // (Newton's first iteration, or the step from an accepted guess), and
+      // a problem that keeps the residual its Jacobian's assembly computed
+      // (the rod, the plate) then answers the guess's test without a
+      // residual assembly of its own: one assembly per step saved. A
+      // failure here is left to Newton's own first setup, as before.
+      if (take_guess)
+        system.setup_jacobian(X);
       NewtonResult r = newton_solve(system, X, newton, take_guess);
       // Newton from the predictor converged on the factorization made there
       // (its only one: one iteration, where round-off kept the predictor

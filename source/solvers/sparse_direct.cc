@@ -405,11 +405,24 @@ namespace cosmo
       banded_cholesky(const SparseMatrix<double> &A, const int kd, std::vector<double> &band)
       {
         const int n = A.m(), ldab = kd + 1;
-        band.assign(static_cast<std::size_t>(ldab) * n, 0.);
+        band.resize(static_cast<std::size_t>(ldab) * n);
+        // Row `row`'s upper entries go to columns row .. row + kd, and
+        // column c is first written by row c - kd: each column is zeroed
+        // just before that, while it is in cache, instead of the whole band
+        // (8 MB at 7e4 unknowns) up front.
+        const auto zero_column = [&](const int c) {
+          std::fill_n(band.begin() + static_cast<std::size_t>(c) * ldab, ldab, 0.);
+        };
+        for (int c = 0; c < std::min(kd, n); ++c)
+          zero_column(c);
         for (int row = 0; row < n; ++row)
-          for (auto it = A.begin(row); it != A.end(row); ++it)
-            if (static_cast<int>(it->column()) >= row)
-              band[static_cast<std::size_t>(it->column()) * ldab + kd + row - it->column()] = it->value();
+          {
+            if (row + kd < n)
+              zero_column(row + kd);
+            for (auto it = A.begin(row); it != A.end(row); ++it)
+              if (static_cast<int>(it->column()) >= row)
+                band[static_cast<std::size_t>(it->column()) * ldab + kd + row - it->column()] = it->value();
+          }
         int info = 0;
         dpbtrf_("U", &n, &kd, band.data(), &ldab, &info);
         return info == 0;

@@ -74,8 +74,17 @@ namespace cosmo
       put_vector(const Vec &v)
       {
         put(std::uint64_t(v.size()));
-        for (const double x : v)
-          put(double(x));
+        // One resize and a copy per value, not an append per value (a path's
+        // states of 7e4 unknowns: 2 ms a checkpoint otherwise).
+        const std::size_t at = data.size();
+        data.resize(at + v.size() * sizeof(double));
+        char *p = &data[at];
+        for (const auto &x : v)
+          {
+            const double d = x;
+            std::memcpy(p, &d, sizeof d);
+            p += sizeof d;
+          }
       }
       void
       put(const std::vector<std::string> &v)
