@@ -15,7 +15,10 @@
 #     'fields' writes the event's state and mode (event-01.vtu,
 #     event-01-mode.vtu) with no converged state's VTU (Steps between
 #     outputs = 0 and the run stops at the event); without 'fields', no
-#     event file.
+#     event file;
+#  6. 'Steps between outputs' left at auto: the same strip stopping at its
+#     event writes the event's files and no converged state's; followed
+#     past it (no stop), every converged state's VTU, as with 1.
 # usage: postprocess_outputs.sh <rod_cross_section> <strip> <scratch dir>
 set -uo pipefail
 exe=$(realpath "$1") strip=$(realpath "$2") dir=$3
@@ -49,7 +52,7 @@ end
 PRM
 }
 fail=0
-strip_prm() { # name, list
+strip_prm() { # name, list, interval (auto: the entry left out), stop at the first event
   cat <<PRM
 subsection Strip
   set Width = 1
@@ -68,7 +71,8 @@ subsection Arclength continuation
   set Parameter range = 0, 0.8
   set Initial step = 0.05
   set Maximum step = 0.1
-  set Stop at first event = true
+  set Stop at first event = $4
+  set Maximum number of branches = 1
 end
 subsection Output
   set Output directory = $1
@@ -76,7 +80,7 @@ end
 subsection Postprocess
   set List of postprocessors = $2
   subsection fields
-    set Steps between outputs = 0
+$([[ $3 == auto ]] || echo "    set Steps between outputs = $3")
   end
 end
 PRM
@@ -91,9 +95,10 @@ timeout 300 "$exe" --quiet stalled.prm > stalled.txt 2>&1
 status=$?
 [[ $status == 2 ]] && echo "  ok    stalled: exit status 2 (target not reached)" ||
   { echo "  FAIL  stalled: status $status, not 2"; cat stalled.txt; fail=1; }
-for run in "events|steps table, fields" "no_events|steps table"; do
-  IFS='|' read -r name list <<< "$run"
-  strip_prm "$name" "$list" > "$name.prm"
+for run in "events|steps table, fields|0|true" "no_events|steps table|0|true" \
+  "auto_stop|steps table, fields|auto|true" "auto_path|steps table, fields|auto|false"; do
+  IFS='|' read -r name list interval stop <<< "$run"
+  strip_prm "$name" "$list" "$interval" "$stop" > "$name.prm"
   timeout 300 "$strip" --quiet "$name.prm" > "$name.txt" 2>&1 || { echo "  FAIL  $name: status $?"; cat "$name.txt"; fail=1; }
 done
 python3 - <<'PY' || fail=1
@@ -134,6 +139,13 @@ check("events: the event's state and mode", os.path.exists("events/event-01.vtu"
 check("events: no converged state's VTU (the run stopped at the event)",
       not glob.glob("events/section-*.vtu") + glob.glob("events/strip-*.vtu"), glob.glob("events/*.vtu"))
 check("no_events: no event file without 'fields'", not glob.glob("no_events/*.vtu"), glob.glob("no_events/*"))
+check("auto_stop: the event's state and mode", os.path.exists("auto_stop/event-01.vtu") and
+      os.path.exists("auto_stop/event-01-mode.vtu"), glob.glob("auto_stop/*.vtu"))
+check("auto_stop: no converged state's VTU on the way to the event",
+      not glob.glob("auto_stop/section-*.vtu") + glob.glob("auto_stop/strip-*.vtu"), glob.glob("auto_stop/*.vtu"))
+n = len(steps("auto_path"))
+m = len(glob.glob("auto_path/strip-*.vtu"))
+check("auto_path: past the event, every converged state's VTU (%d states)" % n, n > 2 and m == n, (n, m))
 sys.exit(0 if ok else 1)
 PY
 exit $fail

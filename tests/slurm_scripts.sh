@@ -27,9 +27,11 @@ if [ $s -eq 0 ] && [ -f table/table.csv ] && grep -q "on 2 MPI ranks" table/log.
   ok "slurm-table.sh: the table on 2 ranks"
 else bad "slurm-table.sh: exit $s"; tail -n 5 table.txt; fi
 
+# (the path followed to the event, 'First event by estimate = false': what
+# is stopped and resumed is a path's checkpoint)
 for run in whole path; do
   sed -e "s|^\( *set Output directory *=\).*|\1 $run|" \
-      -e "s|^\( *set Event tolerance *=.*\)|\1\n  set Stop at first event = true|" \
+      -e "s|^\( *set Event tolerance *=.*\)|\1\n  set Stop at first event = true\n  set First event by estimate = false|" \
       "$here/../parameter_files/plate_rod/dome.prm" > $run.prm
 done
 timeout 300 bash "$here/../doc/slurm-path.sh" whole.prm > whole.txt 2>&1 || { bad "slurm-path.sh, uninterrupted"; tail -n 5 whole.txt; }

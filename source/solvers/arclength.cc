@@ -269,14 +269,17 @@ namespace cosmo
                         "End the run at the first located fold or branch point (the "
                         "critical point of the first branch): what a study of critical "
                         "points (section Parameter sweep) needs of each run.");
-      prm.declare_entry("First event by estimate", "false", Patterns::Bool(),
+      prm.declare_entry("First event by estimate", "true", Patterns::Bool(),
                         "With 'Stop at first event': from the stable start, estimate the first "
                         "critical load from one eigenproblem (the Hessian's rate along the "
                         "path, Lanczos with the start's factorization: "
                         "doc/theory-continuation.md 10) and locate it by Newton on the "
                         "augmented system from there, instead of following the path to it. "
-                        "The inertia guards it (no other negative mode at the located point); "
-                        "where the estimate or its location fails, the path is followed.");
+                        "The inertia guards it (no other negative mode at the located point). "
+                        "Where the next critical load is estimated less than twice as far as "
+                        "the first (a cluster of modes the linear model does not order), or "
+                        "the location fails, the path is followed, from the last stable state "
+                        "the estimates reached. false: always follow the path.");
       prm.leave_subsection();
     }
 
@@ -1436,6 +1439,7 @@ namespace cosmo
             s.factorized_at_predictor && factorizations == analysed_with;
           report.final = (k + 1 == settings.maximum_steps || s.lambda < settings.lambda_min ||
                           s.lambda > settings.lambda_max);
+          report.toward_first_event = settings.stop_at_first_event;
           problem.set_load_parameter(s.lambda);
           report_converged_step(problem, s.U, report);
           io::inject_fault("step " + std::to_string(step)); // (robustness tests only)
@@ -1514,7 +1518,8 @@ namespace cosmo
                          const int             n_negative,
                          const unsigned int    step,
                          const unsigned int    branch,
-                         const bool            factorized_at_predictor)
+                         const bool            factorized_at_predictor,
+                         const bool            toward_first_event)
       {
         StepReport report;
         report.step                    = step;
@@ -1524,6 +1529,7 @@ namespace cosmo
         report.branch                  = branch;
         report.n_negative              = n_negative;
         report.factorized_at_predictor = factorized_at_predictor;
+        report.toward_first_event      = toward_first_event;
         problem.set_load_parameter(t);
         report_converged_step(problem, U, report);
       }
@@ -1623,6 +1629,7 @@ namespace cosmo
                            std::string &                                    why)
       {
         cp       = CriticalPoint(); // (this attempt's: none until located)
+        on_path.reinit(0);          // (set once the guess has converged onto the path)
         estimate = estimate_first_critical_point(problem, U, lambda, dU, mask);
         if (!estimate.found || estimate.lambda > settings.lambda_max)
           {
@@ -1634,6 +1641,21 @@ namespace cosmo
           << lambda << " (" << estimate.steps << " Lanczos steps, " << estimate.residuals << " residuals, "
           << estimate.solves << " solves; the next at t = " << estimate.next_lambda << ")";
         say(m.str());
+        // A second critical load estimated less than twice as far as the
+        // first: the linear model does not single out the first mode (a
+        // twisted strip's or section's cluster of modes, which the path's
+        // nonlinearity reorders: estimates of 0.0345 and 0.039 for a
+        // threshold at 0.304). The plate's flat states separate them 3-7x.
+        // A double eigenvalue (a symmetric mode pair) is not a cluster.
+        const double first = estimate.lambda - lambda, second = estimate.next_lambda - lambda;
+        if (!(std::abs(second - first) <= 1e-6 * first) && second < 2 * first)
+          {
+            std::ostringstream w;
+            w << std::setprecision(6) << "the next critical point is estimated less than twice as far (t = "
+              << estimate.next_lambda << "): the linear model does not single out the first mode";
+            why = w.str();
+            return false;
+          }
         Vector<double> dR(U.size());
         problem.set_load_parameter(lambda);
         problem.load_derivative(U, lambda, dR);
@@ -1644,7 +1666,6 @@ namespace cosmo
         // system fixes the load to its tolerance, but a branch point's state
         // along the mode only to about its square root; from a state on the
         // path (as the followed path's bracket gives it) it stays there.
-        on_path.reinit(0); // (set below once the guess has converged onto the path)
         Vector<double> guess = estimate.U;
         try
           {
@@ -1680,7 +1701,9 @@ namespace cosmo
        * be negative at the located point (a crossing the estimate missed).
        * A mode orthogonal to dR/dlambda is taken for a branch point, else a
        * fold. Returns false, with nothing reported, where it does not hold:
-       * the path is then followed ('First event by estimate').
+       * the path is then followed ('First event by estimate'), from
+       * `reached` (at reached_lambda) if the estimates reached a stable state
+       * on the path beyond the start (else `reached` is left empty).
        */
       bool
       estimated_first_event(BifurcationProblem &                             problem,
@@ -1692,8 +1715,11 @@ namespace cosmo
                             const ArclengthSettings &                        settings,
                             const NewtonSettings &                           newton,
                             const std::function<void(const std::string &)> & say,
-                            EventRecord &                                    record)
+                            EventRecord &                                    record,
+                            Vector<double> &                                 reached,
+                            double &                                         reached_lambda)
       {
+        reached.reinit(0);
         if (!(tlambda > 0))
           return false;
         Vector<double> U = U0, dU = tU, on_path, dR(U0.size());
@@ -1723,8 +1749,10 @@ namespace cosmo
                 return false;
               }
             ++factorizations;
-            U      = on_path;
-            lambda = estimate.lambda;
+            U              = on_path;
+            lambda         = estimate.lambda;
+            reached        = U;
+            reached_lambda = lambda;
             problem.load_derivative(U, lambda, dR);
             problem.solve_with_jacobian(dR, dU);
             dU *= -1.;
@@ -1781,19 +1809,51 @@ namespace cosmo
           analyse(problem, s, nullptr, settings.direction);
           at = Progress();
           incomplete.clear();
-          report_first_state(problem, s.U, lambda, r0, s.n_negative, 0, 0, false);
+          report_first_state(problem, s.U, lambda, r0, s.n_negative, 0, 0, false, settings.stop_at_first_event);
           if (settings.first_event_by_estimate && settings.stop_at_first_event && s.n_negative == 0)
             {
-              EventRecord record;
+              EventRecord    record;
+              Vector<double> reached;
+              double         reached_lambda = lambda;
               // (the factorization in place is the start's: analyse's)
               if (estimated_first_event(problem, s.U, lambda, s.tU, s.tlambda, mask, settings, newton,
                                         [this](const std::string &l) { say(l); },
-                                        record))
+                                        record, reached, reached_lambda))
                 {
                   factorizations += record.event.factorizations;
                   events.push_back(record);
                   say("  stopped at the first event ('Stop at first event')");
                   return events;
+                }
+              if (reached.size() == s.U.size())
+                {
+                  // The path goes on from the last stable state the estimates
+                  // reached (its count taken again here), not from the start:
+                  // the work to get there is kept. The load range between is
+                  // then not sampled by the path: a pair of crossings inside it
+                  // (0 -> 1 -> 0) would pass unseen, as inside a path's step.
+                  State next;
+                  next.U      = reached;
+                  next.lambda = reached_lambda;
+                  problem.set_load_parameter(reached_lambda);
+                  const NewtonResult r = newton_solve(problem, next.U, newton, true);
+                  analyse(problem, next, nullptr, settings.direction);
+                  if (next.n_negative == 0)
+                    {
+                      s       = next;
+                      at.step = 1;
+                      report_first_state(problem, s.U, s.lambda, r, s.n_negative, at.step, 0,
+                                         s.factorized_at_predictor, settings.stop_at_first_event);
+                      std::ostringstream m;
+                      m << std::setprecision(10) << "  following the path from t = " << s.lambda
+                        << ", the last stable state the estimates reached";
+                      say(m.str());
+                    }
+                  else
+                    {
+                      problem.set_load_parameter(s.lambda);
+                      analyse(problem, s, nullptr, settings.direction);
+                    }
                 }
             }
           at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
@@ -1856,7 +1916,7 @@ namespace cosmo
               continue;
             }
           report_first_state(problem, first.U, first.lambda, r, first.n_negative, ++step, branch,
-                             first.factorized_at_predictor);
+                             first.factorized_at_predictor, false);
           say("  following branch " + std::to_string(branch) + " (depth " +
               std::to_string(first.depth) + ", from branch " + std::to_string(start.branch) +
               ") from t = " + std::to_string(first.lambda));

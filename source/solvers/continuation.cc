@@ -62,6 +62,7 @@ namespace cosmo
         s.n_negative = report.n_negative;
         s.final      = report.final;
         s.unknowns   = &U;
+        s.toward_first_event = report.toward_first_event;
         return s;
       }
     } // namespace

@@ -111,6 +111,9 @@ namespace cosmo
       std::string output_directory;
       /// The last state of the run's path (its target, a branch's end).
       bool final = false;
+      /// The run stops at its first event (a threshold run): this state is
+      /// only on the way there ('fields' writes none such by default).
+      bool toward_first_event = false;
       /// The application, for what it shows of the state (null: nothing).
       const StateSource *source = nullptr;
 

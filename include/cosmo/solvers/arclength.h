@@ -254,7 +254,7 @@ namespace cosmo
       /// With stop_at_first_event: the first event from one eigenproblem at
       /// the stable start ("First event by estimate", critical_estimate.h),
       /// the path followed where it does not hold.
-      bool         first_event_by_estimate = false;
+      bool         first_event_by_estimate = true;
 
       static void
       declare_parameters(ParameterHandler &prm);

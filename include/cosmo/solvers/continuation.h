@@ -44,6 +44,9 @@ namespace cosmo
       /// scale) away, from which the count comes (arclength continuation,
       /// doc/theory-continuation.md 1).
       bool factorized_at_predictor = false;
+      /// The driver stops at its first event ('Stop at first event'): this
+      /// state is on the way to it (io::PostprocessedState).
+      bool toward_first_event = false;
     };
 
     /**

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cosmo/io/output.h>
+#include <cosmo/io/parameters.h>
 #include <cosmo/io/postprocessors.h>
 
 #include <algorithm>
@@ -28,16 +29,33 @@ namespace cosmo
       static void
       declare_parameters(ParameterHandler &prm)
       {
-        prm.declare_entry("Steps between outputs", "1", Patterns::Integer(0),
-                          "1: the fields of every converged state; n: of every n-th step "
-                          "and of the last state of the path (or of each branch); 0: of the "
-                          "last state only. A path that ends before its target (the run "
-                          "fails, exit 2) still writes its last converged state.");
+        prm.declare_entry("Steps between outputs", "auto", Patterns::Anything(),
+                          "auto: the fields of every converged state, except in a run that "
+                          "stops at its first event (Arclength continuation/Stop at first "
+                          "event): there only the event's state and mode (and the last state, "
+                          "should the path end without one), since the states on the way are "
+                          "of no use and their files cost more than the threshold's "
+                          "computation on small problems. 1: every converged state; n: every "
+                          "n-th step and the last state of the path (or of each branch); 0: "
+                          "the last state only. Events are always written. A path that ends "
+                          "before its target (the run fails, exit 2) still writes its last "
+                          "converged state.");
       }
       void
       parse_parameters(ParameterHandler &prm) override
       {
-        interval = prm.get_integer("Steps between outputs");
+        const std::string value = Utilities::trim(prm.get("Steps between outputs"));
+        if (value == "auto")
+          {
+            interval = automatic;
+            return;
+          }
+        // (a whole number: digits only, at most 9 of them)
+        if (value.empty() || value.size() > 9 ||
+            value.find_first_not_of("0123456789") != std::string::npos)
+          throw InputError("Postprocess/fields", "Steps between outputs", value,
+                           "auto, or a whole number >= 0 (0: the last state only)");
+        interval = std::stoi(value);
       }
       void
       execute(const PostprocessedState &s) override
@@ -52,7 +70,9 @@ namespace cosmo
               s.source->write_event_fields(Utilities::int_to_string(events, 2), *s.unknowns, s.mode);
             return;
           }
-        last_written = s.final || (interval != 0 && s.step % interval == 0);
+        // auto: every state, but none on the way to a first event
+        const int every = interval != automatic ? interval : (s.toward_first_event ? 0 : 1);
+        last_written    = s.final || (every != 0 && s.step % every == 0);
         if (last_written)
           write(s);
       }
@@ -112,7 +132,8 @@ namespace cosmo
           c = std::make_unique<PathCollections>(directory, kind);
         return *c;
       }
-      unsigned int                                            interval = 1;
+      static constexpr int                                    automatic = -1;
+      int                                                     interval  = automatic;
       bool                                                    written  = false;
       /// Whether the last converged state's fields were written.
       bool                                                    last_written = true;
