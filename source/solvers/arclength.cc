@@ -278,8 +278,8 @@ namespace cosmo
                         "The inertia guards it (no other negative mode at the located point). "
                         "Where the next critical load is estimated less than twice as far as "
                         "the first (a cluster of modes the linear model does not order), or "
-                        "the location fails, the path is followed, from the last stable state "
-                        "the estimates reached. false: always follow the path.");
+                        "the location fails, the path is followed from the start. false: always "
+                        "follow the path.");
       prm.leave_subsection();
     }
 
@@ -1701,9 +1701,8 @@ namespace cosmo
        * be negative at the located point (a crossing the estimate missed).
        * A mode orthogonal to dR/dlambda is taken for a branch point, else a
        * fold. Returns false, with nothing reported, where it does not hold:
-       * the path is then followed ('First event by estimate'), from
-       * `reached` (at reached_lambda) if the estimates reached a stable state
-       * on the path beyond the start (else `reached` is left empty).
+       * the path is then followed from the start ('First event by
+       * estimate').
        */
       bool
       estimated_first_event(BifurcationProblem &                             problem,
@@ -1715,11 +1714,8 @@ namespace cosmo
                             const ArclengthSettings &                        settings,
                             const NewtonSettings &                           newton,
                             const std::function<void(const std::string &)> & say,
-                            EventRecord &                                    record,
-                            Vector<double> &                                 reached,
-                            double &                                         reached_lambda)
+                            EventRecord &                                    record)
       {
-        reached.reinit(0);
         if (!(tlambda > 0))
           return false;
         Vector<double> U = U0, dU = tU, on_path, dR(U0.size());
@@ -1749,10 +1745,8 @@ namespace cosmo
                 return false;
               }
             ++factorizations;
-            U              = on_path;
-            lambda         = estimate.lambda;
-            reached        = U;
-            reached_lambda = lambda;
+            U      = on_path;
+            lambda = estimate.lambda;
             problem.load_derivative(U, lambda, dR);
             problem.solve_with_jacobian(dR, dU);
             dU *= -1.;
@@ -1812,48 +1806,16 @@ namespace cosmo
           report_first_state(problem, s.U, lambda, r0, s.n_negative, 0, 0, false, settings.stop_at_first_event);
           if (settings.first_event_by_estimate && settings.stop_at_first_event && s.n_negative == 0)
             {
-              EventRecord    record;
-              Vector<double> reached;
-              double         reached_lambda = lambda;
+              EventRecord record;
               // (the factorization in place is the start's: analyse's)
               if (estimated_first_event(problem, s.U, lambda, s.tU, s.tlambda, mask, settings, newton,
                                         [this](const std::string &l) { say(l); },
-                                        record, reached, reached_lambda))
+                                        record))
                 {
                   factorizations += record.event.factorizations;
                   events.push_back(record);
                   say("  stopped at the first event ('Stop at first event')");
                   return events;
-                }
-              if (reached.size() == s.U.size())
-                {
-                  // The path goes on from the last stable state the estimates
-                  // reached (its count taken again here), not from the start:
-                  // the work to get there is kept. The load range between is
-                  // then not sampled by the path: a pair of crossings inside it
-                  // (0 -> 1 -> 0) would pass unseen, as inside a path's step.
-                  State next;
-                  next.U      = reached;
-                  next.lambda = reached_lambda;
-                  problem.set_load_parameter(reached_lambda);
-                  const NewtonResult r = newton_solve(problem, next.U, newton, true);
-                  analyse(problem, next, nullptr, settings.direction);
-                  if (next.n_negative == 0)
-                    {
-                      s       = next;
-                      at.step = 1;
-                      report_first_state(problem, s.U, s.lambda, r, s.n_negative, at.step, 0,
-                                         s.factorized_at_predictor, settings.stop_at_first_event);
-                      std::ostringstream m;
-                      m << std::setprecision(10) << "  following the path from t = " << s.lambda
-                        << ", the last stable state the estimates reached";
-                      say(m.str());
-                    }
-                  else
-                    {
-                      problem.set_load_parameter(s.lambda);
-                      analyse(problem, s, nullptr, settings.direction);
-                    }
                 }
             }
           at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
