@@ -24,10 +24,7 @@ REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="$(realpath "${1:-$REPO/build}")" REF="${2:-5}" RINGS="${3:-40}" RUNS="${4:-3}"
 GROWTH="${5:-1 + 0.3*x}" LEVELS="${6:-2}" PEER="${7:-shape}"
 PYGROWTH="$(echo "$GROWTH" | sed -e 's/x/X[0]/g' -e 's/y/X[1]/g' -e 's/\^/**/g')"
-if ! dpkg-query -W -f='${Status}' python3-dolfin 2>/dev/null | grep -q "install ok installed"; then
-  SUDO=""; [[ $(id -u) -ne 0 ]] && SUDO="sudo"
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q python3-dolfin >/dev/null
-fi
+source "$REPO/benchmarks/dolfin_peer.sh" && ensure_dolfin
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 sed -e "s|^\( *set Global refinements *=\).*|\1 $REF|" -e "s|^\( *set Output directory *=\).*|\1 $work/cosmo|" \

@@ -43,10 +43,7 @@ set -euo pipefail
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="$(realpath "${1:-$REPO/build}")" LEVELS="${2:-1 2 3 4 5}" RINGS="${3:-2 3 4 6 8 12 16}" RUNS="${4:-3}"
 DEGREE="${5:-2}" CREF="${6:-}"
-if ! dpkg-query -W -f='${Status}' python3-dolfin 2>/dev/null | grep -q "install ok installed"; then
-  SUDO=""; [[ $(id -u) -ne 0 ]] && SUDO="sudo"
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q python3-dolfin >/dev/null
-fi
+source "$REPO/benchmarks/dolfin_peer.sh" && ensure_dolfin
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # the rim: GA = (6/7) G pi a^2 (the circle's shear coefficient,
