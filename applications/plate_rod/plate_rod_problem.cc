@@ -27,6 +27,7 @@
 #include "plate_rod_problem.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <cmath>
 #include <iomanip>
@@ -99,6 +100,13 @@ namespace cosmo
     int
     PlateRodProblem::setup_jacobian(const Vector<double> &U)
     {
+      // The factorization in place may be this very state's: the start's
+      // stability check (run.cc) and the driver's tangent there ask for the
+      // same one. The Jacobian depends on nothing but (U, t) within a run.
+      // COSMO_NO_REUSE: factorize anyway, to measure against (benchmarks/).
+      static const bool reuse = std::getenv("COSMO_NO_REUSE") == nullptr;
+      if (reuse && factorization.here(U, load_parameter))
+        return 0;
       {
         io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
         if (energy_assembly.assemble(U, load_parameter, nullptr, true) != 0)

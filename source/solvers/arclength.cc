@@ -1609,9 +1609,11 @@ namespace cosmo
     {
       /// The critical point from one estimate at (U, lambda) with the tangent dU
       /// = dU/dlambda there (the factorization in place is J(U, lambda)):
-      /// the guess converged onto the path at the estimated load, then Newton
-      /// on the augmented system from it. Returns false with `why` set if
+      /// Newton on the augmented system from the prediction, or where that
+      /// does not converge within a few iterations, from the guess converged
+      /// onto the path at the estimated load. Returns false with `why` set if
       /// the estimate, its state or the location fails; `estimate` is kept.
+      /// `spent` counts the factorizations of a direct attempt that failed.
       bool
       locate_from_estimate(BifurcationProblem &                             problem,
                            const Vector<double> &                           U,
@@ -1626,8 +1628,12 @@ namespace cosmo
                            Vector<double> &                                 on_path,
                            bool &                                           fold,
                            CriticalPoint &                                  cp,
+                           unsigned int &                                   spent,
                            std::string &                                    why)
       {
+        // COSMO_ESTIMATE_VIA_PATH: always converge the guess onto the path
+        // first, to measure against (benchmarks/).
+        static const unsigned int direct_iterations = std::getenv("COSMO_ESTIMATE_VIA_PATH") ? 0 : 4;
         cp       = CriticalPoint(); // (this attempt's: none until located)
         on_path.reinit(0);          // (set once the guess has converged onto the path)
         estimate = estimate_first_critical_point(problem, U, lambda, dU, mask);
@@ -1662,6 +1668,30 @@ namespace cosmo
         const double dR_norm = std::sqrt(masked_dot(dR, dR, mask));
         const double v_norm  = std::sqrt(masked_dot(estimate.mode, estimate.mode, mask));
         fold = dR_norm > 0 && std::abs(masked_dot(estimate.mode, dR, mask)) > 1e-4 * dR_norm * v_norm;
+        CriticalPointSettings location;
+        location.resolution_fraction = 0.1;
+        // Newton on the augmented system straight from the prediction: it
+        // converges the state onto the path and the load together, which
+        // saves the 1-2 factorizations of converging onto the path at the
+        // estimated load first (an exact estimate, a flat von Karman start,
+        // is located in one iteration). A few iterations only: where they
+        // do not converge (a path far from linear in the load), the guess
+        // is converged onto the path and located from there, as below.
+        if (direct_iterations > 0)
+          {
+            location.max_iterations = direct_iterations;
+            cp = locate_critical_point(problem, fold, estimate.U, estimate.lambda, estimate.mode, mask, dU, 1.,
+                                       false, std::abs(estimate.lambda - lambda0), newton.relative_tolerance,
+                                       location);
+            if (cp.converged)
+              {
+                on_path = cp.U;
+                return true;
+              }
+            spent += cp.factorizations;
+            say("  from the prediction: " + cp.message + "; converging the guess onto the path");
+            cp = CriticalPoint();
+          }
         // The guess converged onto the path first: Newton on the augmented
         // system fixes the load to its tolerance, but a branch point's state
         // along the mode only to about its square root; from a state on the
@@ -1678,9 +1708,7 @@ namespace cosmo
             why = std::string("its state does not converge: ") + f.what();
             return false;
           }
-        CriticalPointSettings location;
-        location.resolution_fraction = 0.1;
-        location.max_iterations      = 6; // (a distant guess: re-estimate rather than wander)
+        location.max_iterations = 6; // (a distant guess: re-estimate rather than wander)
         // (a branch point's system takes the tangent for the branch's direction)
         cp = locate_critical_point(problem, fold, on_path, estimate.lambda, estimate.mode, mask, dU, 1., false,
                                    std::abs(estimate.lambda - lambda0), newton.relative_tolerance, location);
@@ -1729,7 +1757,7 @@ namespace cosmo
         for (unsigned int attempt = 0;; ++attempt)
           {
             const bool located = locate_from_estimate(problem, U, lambda, dU, mask, settings, newton, lambda0, say,
-                                                      estimate, on_path, fold, cp, why);
+                                                      estimate, on_path, fold, cp, factorizations, why);
             factorizations += cp.factorizations;
             if (located)
               break;
