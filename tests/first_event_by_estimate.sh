@@ -12,8 +12,8 @@
 # they do with the setting off; no point says "from the estimate" then.
 # A plate point from the estimate costs at most 4 factorizations: the
 # start's (its stability check and the driver's tangent share it) and one
-# per Newton iteration on the augmented system from the prediction (2 within
-# 1 % of the estimate, 3 at 2 %: the thick Cosserat plates); converging the
+# per Newton iteration on the augmented system from the prediction (2; 3 for
+# the thickest Cosserat plates, 0.8 % and 1.9 % off the estimate); converging the
 # guess onto the path first, or factorizing the start twice, took 5-6.
 # usage: first_event_by_estimate.sh <build dir> <scratch dir>
 set -uo pipefail

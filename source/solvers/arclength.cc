@@ -1673,8 +1673,8 @@ namespace cosmo
         // Newton on the augmented system straight from the prediction: it
         // converges the state onto the path and the load together, which
         // saves the 1-2 factorizations of converging onto the path at the
-        // estimated load first (within 1 % of the estimate two iterations
-        // locate it to its resolution). A few iterations only: where they
+        // estimated load first (on the plate's flat starts two or three
+        // iterations locate it to its resolution). A few only: where they
         // do not converge (a path far from linear in the load), the guess
         // is converged onto the path and located from there, as below.
         if (direct_iterations > 0)
