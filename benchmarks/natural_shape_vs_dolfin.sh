@@ -76,8 +76,8 @@ it = s.get("newton_iterations") or 0
 if it > 0:
     rest = sum(t[p]["seconds"] for p in ("assembly (residual)", "solve") if p in t)
     per = jf + rest / it
-    print("  per Newton iteration on the full mesh (%d): %.3f s = %.2fx (Jacobian + factorization)"
-          % (it, per, per / jf))
+    print("  per factorized Newton iteration on the full mesh (%d; the chord steps' residuals and"
+          " solves in it): %.3f s = %.2fx (Jacobian + factorization)" % (it, per, per / jf))
 print("  the rest of the process (start-up, mesh, section properties, output): %.2f s"
       % (mc - sum(t[p]["seconds"] for p in ("assembly (residual)", "assembly (Jacobian)", "factorization", "solve",
                                               "coarse-mesh start") if p in t)))

@@ -837,6 +837,105 @@ namespace
     check("exact J p: the same solution", d.linfty_norm() <= 1e-13);
   }
 
+  /// R(U) = atan(U - c) + 0.1 (U - c) coupled to its neighbours: full
+  /// Newton steps from 3 away overshoot (atan's), so a start there needs a
+  /// line search.
+  class Arctan : public DenseProblem
+  {
+  public:
+    using DenseProblem::DenseProblem;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double x = U[i] - std::sin(0.5 * i);
+          R[i]           = std::atan(x) + 0.1 * x;
+          H(i, i)        = 1 / (1 + x * x) + 0.1;
+          for (const unsigned int k : {i - 1, i + 1})
+            if (k < n)
+              R[i] += 0.1 * (x - (U[k] - std::sin(0.5 * k))), H(i, i) += 0.1, H(i, k) = -0.1;
+        }
+    }
+  };
+
+  /**
+   * newton_solve with reuse_factorization (chord steps): from a start near
+   * the solution it reaches exact Newton's solution to round-off with fewer
+   * factorizations (each step it keeps one contracts the residual tenfold
+   * or more); from a start far off, the same solution; where a fresh step
+   * does not decrease the residual (atan's overshoot from 3 away), KINSOL's
+   * line search from there, to the same solution as without reuse.
+   */
+  void
+  newton_chord()
+  {
+    const unsigned int      n = 50;
+    solvers::NewtonSettings exact;
+    exact.relative_tolerance = 1e-12;
+    solvers::NewtonSettings chord = exact;
+    chord.reuse_factorization     = true;
+    auto solve = [&](DenseProblem &&system, Vector<double> U, const solvers::NewtonSettings &s,
+                     solvers::NewtonResult &r, unsigned int &setups) {
+      system.exact_solves = true;
+      r                   = solvers::newton_solve(system, U, s);
+      setups              = system.setups;
+      return U;
+    };
+    // Near: the solution less 1e-3 in every entry (a residual ~3e-3).
+    Vector<double> far(n), near(n);
+    for (unsigned int i = 0; i < n; ++i)
+      far[i] = 2 * std::cos(0.7 * i);
+    solvers::NewtonResult r_exact, r_chord;
+    unsigned int          f_exact = 0, f_chord = 0;
+    // The reference: exact Newton to the round-off floor (weighted |R| ~ 5e-16).
+    solvers::NewtonSettings tight = exact;
+    tight.relative_tolerance      = 1e-15;
+    const Vector<double> solution = solve(Cubic(n), far, tight, r_exact, f_exact);
+    for (unsigned int i = 0; i < n; ++i)
+      near[i] = solution[i] - 1e-3 * std::cos(1.3 * i);
+    for (const auto &[name, start] : {std::make_pair("near", near), std::make_pair("far", far)})
+      {
+        const Vector<double> U_exact = solve(Cubic(n), start, exact, r_exact, f_exact);
+        const Vector<double> U_chord = solve(Cubic(n), start, chord, r_chord, f_chord);
+        Vector<double>       d = U_chord, e = U_exact;
+        d -= solution;
+        e -= solution;
+        std::cout << "chord, " << name << " start: " << r_chord.iterations << " iterations ("
+                  << r_chord.chord_steps << " chord steps), " << f_chord << " factorizations, against "
+                  << r_exact.iterations << " and " << f_exact << "; errors " << d.linfty_norm() << " and "
+                  << e.linfty_norm()
+                  << ", residual " << r_chord.residual_norm << "\n";
+        // The chord's converged state is polished while its steps contract
+        // tenfold: at least as exact as exact Newton's at this tolerance
+        // (measured 2e-13 off from the near start: it stops once below the
+        // tolerance), or within 1e-13 (|U| ~ 1, the condition ~3, the
+        // round-off floor ~1e-15).
+        check(std::string("chord: the solution, as exact as exact Newton's, ") + name,
+              d.linfty_norm() <= std::max(1e-13, e.linfty_norm()));
+        check(std::string("chord: no more factorizations, ") + name, f_chord <= f_exact);
+      }
+    // From near, one factorization does the work of two or more.
+    check("chord from near: fewer factorizations, chord steps counted",
+          f_chord < f_exact && r_chord.chord_steps >= 1 && r_chord.iterations > r_chord.chord_steps);
+    // atan's overshoot: the fresh step from 3 away increases |R|; KINSOL's
+    // line search takes over and converges to c.
+    Vector<double> start(n), c(n);
+    for (unsigned int i = 0; i < n; ++i)
+      c[i] = std::sin(0.5 * i), start[i] = c[i] + 3;
+    for (const auto *s : {&exact, &chord})
+      {
+        Vector<double> U = solve(Arctan(n), start, *s, r_chord, f_chord);
+        U -= c;
+        std::cout << (s == &chord ? "chord" : "exact") << ", atan from 3 away: " << r_chord.iterations
+                  << " iterations, " << f_chord << " factorizations, error " << U.linfty_norm() << "\n";
+        check(std::string("atan from 3 away converges: ") + (s == &chord ? "chord" : "exact"),
+              U.linfty_norm() <= 1e-12);
+      }
+  }
+
   /**
    * newton_solve with take_guess takes a guess that passes its stopping
    * test (the weighted max-norm of R at most the tolerance) as the
@@ -1121,7 +1220,7 @@ main(int argc, char **argv)
                                    {"secondary_bifurcation", secondary_bifurcation},
                                    {"bordered_ordering", bordered_ordering},
                                    {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},
-                                   {"newton_guess", newton_guess},
+                                   {"newton_guess", newton_guess}, {"newton_chord", newton_chord},
                                    {"predictor_step", predictor_step},
                                    {"critical_estimate", critical_estimate}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);

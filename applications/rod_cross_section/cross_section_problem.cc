@@ -95,7 +95,10 @@ namespace cosmo
       solvers::NewtonResult r;
       try
         {
-          r = solvers::newton_solve(coarse, Uc, newton_settings);
+          // (the first step's Newton, as the driver solves it)
+          solvers::NewtonSettings newton = newton_settings;
+          newton.reuse_factorization     = continuation_settings.reuse_factorization;
+          r = solvers::newton_solve(coarse, Uc, newton);
         }
       catch (const solvers::NewtonFailure &e)
         {

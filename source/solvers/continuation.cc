@@ -96,9 +96,21 @@ namespace cosmo
                         "Stop with an error if the target is not reached in this many steps.");
       prm.declare_entry("Easy step iterations", "4", Patterns::Integer(1),
                         "A step that converges in at most this many Newton iterations "
-                        "lets the next step grow by 'Step growth factor'.");
+                        "(those with a new factorization: chord steps, see 'Reuse "
+                        "factorization', are not counted) lets the next step grow by "
+                        "'Step growth factor'.");
       prm.declare_entry("Step growth factor", "1.5", Patterns::Double(1, 10),
                         "Factor by which an easy step lets the next one grow.");
+      prm.declare_entry("Reuse factorization", "true", Patterns::Bool(),
+                        "Newton keeps the factorization of the Jacobian for its next "
+                        "steps while each contracts the residual at least tenfold (chord "
+                        "steps: one residual and one solve instead of a Jacobian and a "
+                        "factorization), and makes a new one where a step contracts less. "
+                        "Where the tolerance is reached by such a step, up to two more "
+                        "follow while they contract tenfold, so that the state is as exact "
+                        "as after Newton's quadratic last step. The Newton iterations "
+                        "reported count them; 'Easy step iterations' counts the "
+                        "factorized ones. false: a new factorization at every iteration.");
       prm.leave_subsection();
     }
 
@@ -107,6 +119,7 @@ namespace cosmo
     {
       prm.enter_subsection("Continuation");
       parse_step_control(prm, *this);
+      reuse_factorization = prm.get_bool("Reuse factorization");
       if (minimum_step > initial_step)
         throw io::InputError("Continuation", "Minimum step", prm.get("Minimum step"),
                              "must not exceed 'Initial step' = " + prm.get("Initial step"));
@@ -121,7 +134,9 @@ namespace cosmo
       const NewtonSettings &      newton)
       : settings(settings)
       , newton(newton)
-    {}
+    {
+      this->newton.reuse_factorization = settings.reuse_factorization;
+    }
 
     void
     NaturalParameterContinuation::save(io::CheckpointWriter &w) const
@@ -293,7 +308,9 @@ namespace cosmo
                   report.final             = (t >= settings.target - 1e-14);
                   report_converged_step(problem, U, report);
                   cutbacks = 0;
-                  if (r.iterations <= settings.easy_iterations)
+                  // (a chord step costs a residual and a solve: the
+                  // factorized iterations measure the step's cost)
+                  if (r.iterations - r.chord_steps <= settings.easy_iterations)
                     dt = std::min(settings.maximum_step, dt * settings.growth_factor);
                   save_point();
                 }

@@ -302,6 +302,103 @@ namespace cosmo
       }
     } // namespace
 
+    namespace
+    {
+      /**
+       * Newton with the factorization kept while it pays (the chord method,
+       * Kelley 2003, ch. 5; settings.reuse_factorization). A step with the
+       * Jacobian of an earlier iterate u0 contracts the residual by about
+       * |J(u0)^-1 (J(u) - J(u0))|, that is, by the distance from u0: once a
+       * fresh Newton step has contracted it tenfold, the next steps keep
+       * its factorization, and a new one is made only where a step
+       * contracts less than tenfold. From a start near the solution (a
+       * coarse-mesh start, a secant predictor) one factorization then does
+       * the work of two or three, each further step costing one residual and
+       * one solve. Where the tolerance is reached by such a step, further
+       * steps follow while they contract tenfold (at most two), so that the
+       * state is as exact as after Newton's last, quadratic step, not just
+       * below the tolerance. No line search: a fresh step that does not
+       * decrease the residual, a failed setup or solve, or the iteration
+       * limit ends the attempt with U at its last accepted iterate, and
+       * newton_solve() goes on from there with KINSOL's line search.
+       * Returns whether U has converged.
+       */
+      bool
+      chord_newton(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings,
+                   const bool take_guess, NewtonResult &result)
+      {
+        constexpr double reuse_rate = 0.1, guess_fraction = 0.01;
+        constexpr unsigned int max_polish = 2;
+        const unsigned int n = system.n_unknowns();
+        Vector<double>     R(n), rhs(n), dU(n), U_new(n), R_new(n);
+        if (system.residual(U, R) != 0)
+          return false;
+        io::check_interrupt();
+        double norm = scaled_residual_norm(system, R);
+        if (!std::isfinite(norm))
+          return false;
+        // (the same rule for a guess as KINSOL's, or take_guess's)
+        if (norm <= (take_guess ? 1. : guess_fraction) * settings.relative_tolerance)
+          {
+            result.residual_norm = norm;
+            return true;
+          }
+        bool         fresh = false; // the factorization in place is of U
+        bool         keep   = false; // the next step keeps it
+        unsigned int polish = 0;
+        for (unsigned int it = 0; it < settings.max_iterations;)
+          {
+            if (!keep)
+              {
+                if (system.setup_jacobian(U) != 0)
+                  return false;
+                fresh = true;
+              }
+            rhs = R;
+            rhs *= -1.;
+            if (system.solve_with_jacobian(rhs, dU) != 0)
+              return false;
+            U_new = U;
+            U_new += dU;
+            const int status = system.residual(U_new, R_new);
+            io::check_interrupt();
+            const double norm_new = status == 0 ? scaled_residual_norm(system, R_new) : INFINITY;
+            if (!(norm_new < norm))
+              {
+                // The polish of a converged U just stops; a stale
+                // factorization that no longer contracts is made afresh; a
+                // fresh step that does not decrease R is KINSOL's (line search).
+                if (polish > 0)
+                  return true;
+                if (fresh)
+                  return false;
+                keep = false;
+                continue;
+              }
+            const double rate  = norm_new / norm;
+            const bool   chord = !fresh;
+            U.swap(U_new);
+            R.swap(R_new);
+            norm                 = norm_new;
+            result.residual_norm = norm;
+            ++it;
+            ++result.iterations;
+            result.chord_steps += chord ? 1 : 0;
+            if (norm <= settings.relative_tolerance)
+              {
+                // A quadratic step's result is final; a chord step's is
+                // polished while it contracts tenfold.
+                if (!chord || rate > reuse_rate || polish == max_polish)
+                  return true;
+                ++polish;
+              }
+            keep  = rate <= reuse_rate;
+            fresh = false; // (the factorization is of the previous iterate now)
+          }
+        return false;
+      }
+    } // namespace
+
     NewtonResult
     newton_solve(NonlinearSystem &      system,
                  Vector<double> &       U,
@@ -309,6 +406,16 @@ namespace cosmo
                  const bool             take_guess)
     {
       NewtonResult result;
+      Vector<double> U_start = U;
+      if (settings.reuse_factorization)
+        {
+          if (chord_newton(system, U, settings, take_guess, result))
+            return result;
+          // Not converged: KINSOL, with its line search, from the last
+          // accepted iterate (no worse than the guess), its count after the
+          // chord steps'.
+        }
+      const NewtonResult chord = result;
       Vector<double> weights;
       system.residual_weights(weights);
 
@@ -334,7 +441,18 @@ namespace cosmo
       };
 
       Vector<double>    U0       = U;
-      const std::string messages = solve_capturing_messages(kinsol, U, U0, result);
+      std::string       messages;
+      try
+        {
+          messages = solve_capturing_messages(kinsol, U, U0, result);
+        }
+      catch (const NewtonFailure &)
+        {
+          U = U_start; // (the guess, not the chord steps' last iterate)
+          throw;
+        }
+      result.iterations += chord.iterations;
+      result.chord_steps = chord.chord_steps;
 
       // A signal ends the solve with an error KINSOL does not report in
       // Release: whatever U is now, it is an interruption, not a failure
@@ -353,7 +471,7 @@ namespace cosmo
           s << "Newton did not converge in " << settings.max_iterations
             << " iterations: scaled residual " << result.residual_norm << " > tolerance "
             << settings.relative_tolerance << messages;
-          U = U0;
+          U = U_start;
           throw NewtonFailure(s.str());
         }
       return result;

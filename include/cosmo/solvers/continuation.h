@@ -136,6 +136,9 @@ namespace cosmo
       unsigned int maximum_steps    = 200;
       unsigned int easy_iterations  = 4;
       double       growth_factor    = 1.5;
+      /// Newton keeps its factorization while it converges fast (chord
+      /// steps, NewtonSettings::reuse_factorization).
+      bool reuse_factorization = true;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -83,6 +83,15 @@ namespace cosmo
     {
       double       relative_tolerance = 1e-10;
       unsigned int max_iterations     = 25;
+      /**
+       * Keep the factorization while Newton converges fast (newton_solve():
+       * chord steps). Not a parameter of this section: the drivers that may
+       * reuse it set it (NaturalParameterContinuation, from 'Continuation /
+       * Reuse factorization'); the arclength driver and the critical-point
+       * locator analyse the factorization at the last iterate and keep it
+       * false.
+       */
+      bool reuse_factorization = false;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -96,6 +105,9 @@ namespace cosmo
       double       residual_norm = 0; ///< weighted max-norm of R at the solution
       /// KINSOL's products J p answered from the solve (solves_exactly()).
       unsigned int exact_jacobian_products = 0;
+      /// Of the iterations, those made with an earlier iterate's
+      /// factorization (reuse_factorization: chord steps).
+      unsigned int chord_steps = 0;
     };
 
     /**
@@ -166,6 +178,11 @@ namespace cosmo
      * arclength corrector): the tolerance alone can leave a state short of
      * what Newton's last, quadratic step gives (a thin plate's buckled
      * state, doc/theory-continuation.md 1).
+     * settings.reuse_factorization: Newton steps that keep the last
+     * factorization while the residual contracts at least tenfold a step
+     * (chord steps, doc/theory-continuation.md 1), KINSOL from where they
+     * stop if they do not converge. The factorization in place afterwards
+     * may then be an earlier iterate's.
      */
     NewtonResult
     newton_solve(NonlinearSystem &      system,
