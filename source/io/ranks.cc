@@ -3,9 +3,9 @@
 
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/ranks.h>
+#include <cosmo/solvers/blas_threads.h>
 #include <cosmo/solvers/sparse_direct.h>
 
-#include <dlfcn.h>
 #include <sched.h>
 #include <unistd.h>
 
@@ -341,13 +341,11 @@ namespace cosmo
       void
       share_cores()
       {
-        if (size() == 1 || std::getenv("OPENBLAS_NUM_THREADS") != nullptr)
+        if (size() == 1)
           return;
-        // OpenBLAS read its environment when it was loaded; its own setter
-        // (if the BLAS in use is OpenBLAS) is found at run time.
-        using Setter = void (*)(int);
-        if (auto set = reinterpret_cast<Setter>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-          set(1);
+        // (OpenBLAS read its environment when it was loaded; its own setter,
+        // if the BLAS in use is OpenBLAS, is found at run time)
+        solvers::pin_blas_threads(1);
       }
     } // namespace ranks
   }   // namespace io

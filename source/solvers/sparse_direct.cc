@@ -1,5 +1,8 @@
 #include <cosmo/config.h>
+#include <cosmo/solvers/blas_threads.h>
 #include <cosmo/solvers/sparse_direct.h>
+
+#include <dlfcn.h>
 
 #ifdef COSMO_WITH_MUMPS
 #  include <dmumps_c.h>
@@ -430,6 +433,60 @@ namespace cosmo
     } // namespace
 #endif
 
+    namespace
+    {
+      using BlasThreadsGetter = int (*)();
+      using BlasThreadsSetter = void (*)(int);
+
+      struct BlasThreads
+      {
+        BlasThreadsSetter set = nullptr;
+        int               own = 1, current = 0;
+        bool              pinned = false;
+
+        BlasThreads()
+        {
+          // (the environment's choice is kept: nothing is set then)
+          if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr || std::getenv("OMP_NUM_THREADS") != nullptr)
+            return;
+          set = reinterpret_cast<BlasThreadsSetter>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+          if (auto get = reinterpret_cast<BlasThreadsGetter>(::dlsym(RTLD_DEFAULT, "openblas_get_num_threads")))
+            own = current = get();
+          else
+            set = nullptr;
+        }
+        void
+        use(const int n)
+        {
+          if (set != nullptr && n != current)
+            set(n), current = n;
+        }
+      };
+
+      BlasThreads &
+      blas_threads()
+      {
+        static BlasThreads b;
+        return b;
+      }
+    } // namespace
+
+    void
+    blas_threads_for(const unsigned int n_rows)
+    {
+      auto &b = blas_threads();
+      if (!b.pinned)
+        b.use(n_rows < 20000 ? 1 : b.own);
+    }
+
+    void
+    pin_blas_threads(const int n)
+    {
+      auto &b = blas_threads();
+      b.use(n);
+      b.pinned = true;
+    }
+
     SparseDirectSolver::SparseDirectSolver(const Kind kind)
       : solver_kind(kind)
     {
@@ -545,6 +602,7 @@ namespace cosmo
           id.irn = mumps->irn.data();
           id.jcn = mumps->jcn.data();
           id.a   = mumps->values.data();
+          blas_threads_for(sp.n_rows());
           mumps->call(1); // analysis
           analysed_pattern = &sp;
           analysed_nnz     = sp.n_nonzero_elements();
