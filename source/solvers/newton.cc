@@ -395,7 +395,8 @@ namespace cosmo
             keep  = rate <= reuse_rate;
             fresh = false; // (the factorization is of the previous iterate now)
           }
-        return false;
+        // (the iteration limit, possibly in the polish of a converged state)
+        return norm <= settings.relative_tolerance;
       }
     } // namespace
 
