@@ -107,8 +107,10 @@ namespace cosmo
                         "steps: one residual and one solve instead of a Jacobian and a "
                         "factorization), and makes a new one where a step contracts less. "
                         "Where the tolerance is reached by such a step, up to two more "
-                        "follow while they contract tenfold, so that the state is as exact "
-                        "as after Newton's quadratic last step. The Newton iterations "
+                        "follow (chord steps while they contract tenfold, else a fresh one "
+                        "where the residual is above 1/100 of the tolerance), so that the "
+                        "state is as exact as after Newton's quadratic last step. The Newton "
+                        "iterations "
                         "reported count them; 'Easy step iterations' counts the "
                         "factorized ones. false: a new factorization at every iteration.");
       prm.leave_subsection();

@@ -315,9 +315,10 @@ namespace cosmo
        * coarse-mesh start, a secant predictor) one factorization then does
        * the work of two or three, each further step costing one residual and
        * one solve. Where the tolerance is reached by such a step, further
-       * steps follow while they contract tenfold (at most two), so that the
-       * state is as exact as after Newton's last, quadratic step, not just
-       * below the tolerance. No line search: a fresh step that does not
+       * steps follow (at most two: a chord step where the last contracted
+       * tenfold, else a fresh one), so that the state is as exact as after
+       * Newton's last, quadratic step, not just below the tolerance. No
+       * line search: a fresh step that does not
        * decrease the residual, a failed setup or solve, or the iteration
        * limit ends the attempt with U at its last accepted iterate, and
        * newton_solve() goes on from there with KINSOL's line search.
@@ -348,16 +349,17 @@ namespace cosmo
         unsigned int polish = 0;
         for (unsigned int it = 0; it < settings.max_iterations;)
           {
+            // (a failure in the polish of a converged U keeps it)
             if (!keep)
               {
                 if (system.setup_jacobian(U) != 0)
-                  return false;
+                  return polish > 0;
                 fresh = true;
               }
             rhs = R;
             rhs *= -1.;
             if (system.solve_with_jacobian(rhs, dU) != 0)
-              return false;
+              return polish > 0;
             U_new = U;
             U_new += dU;
             const int status = system.residual(U_new, R_new);
@@ -387,8 +389,13 @@ namespace cosmo
             if (norm <= settings.relative_tolerance)
               {
                 // A quadratic step's result is final; a chord step's is
-                // polished while it contracts tenfold.
-                if (!chord || rate > reuse_rate || polish == max_polish)
+                // polished: by chord steps while they contract tenfold, else
+                // by a fresh step where it stopped above 1/100 of the
+                // tolerance (KINSOL's own bar for a guess: a chord step that
+                // just passed the tolerance says little about the state's
+                // error; one at the round-off floor needs nothing).
+                if (!chord || polish == max_polish ||
+                    (rate > reuse_rate && norm <= guess_fraction * settings.relative_tolerance))
                   return true;
                 ++polish;
               }
@@ -406,21 +413,37 @@ namespace cosmo
                  const NewtonSettings & settings,
                  const bool             take_guess)
     {
-      NewtonResult result;
+      NewtonResult   result;
       Vector<double> U_start = U;
       if (settings.reuse_factorization)
         {
-          if (chord_newton(system, U, settings, take_guess, result))
-            return result;
+          try
+            {
+              if (chord_newton(system, U, settings, take_guess, result))
+                return result;
+            }
+          catch (...)
+            {
+              U = U_start; // (an interruption: the caller's state as it was)
+              throw;
+            }
           // Not converged: KINSOL, with its line search, from the last
-          // accepted iterate (no worse than the guess), its count after the
-          // chord steps'.
+          // accepted iterate (no worse than the guess), with the iterations
+          // left and its count after the chord steps'.
         }
       const NewtonResult chord = result;
+      result                   = NewtonResult();
+      NewtonSettings rest      = settings;
+      rest.max_iterations      = std::max(1u, settings.max_iterations - std::min(settings.max_iterations, chord.iterations));
+      auto with_chord          = [&chord](NewtonResult r) {
+        r.iterations += chord.iterations;
+        r.chord_steps = chord.chord_steps;
+        return r;
+      };
       Vector<double> weights;
       system.residual_weights(weights);
 
-      SUNDIALS::KINSOL<Vector<double>> kinsol(exact_newton_data(settings));
+      SUNDIALS::KINSOL<Vector<double>> kinsol(exact_newton_data(rest));
       const unsigned int                n = system.n_unknowns();
       kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
       kinsol.get_function_scaling = [&]() -> Vector<double> & { return weights; };
@@ -429,7 +452,7 @@ namespace cosmo
       // take_guess: the guess first, taken if it passes the stopping test;
       // otherwise its residual is KINSOL's first.
       if (take_guess && evaluations.guess_converged(U, settings.relative_tolerance))
-        return result;
+        return with_chord(result);
       kinsol.residual = [&](const Vector<double> &u, Vector<double> &r) {
         return evaluations.residual(u, r);
       };
@@ -452,8 +475,7 @@ namespace cosmo
           U = U_start; // (the guess, not the chord steps' last iterate)
           throw;
         }
-      result.iterations += chord.iterations;
-      result.chord_steps = chord.chord_steps;
+      result = with_chord(result);
 
       // A signal ends the solve with an error KINSOL does not report in
       // Release: whatever U is now, it is an interruption, not a failure

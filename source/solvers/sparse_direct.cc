@@ -438,17 +438,22 @@ namespace cosmo
       using BlasThreadsGetter = int (*)();
       using BlasThreadsSetter = void (*)(int);
 
+      /// OpenBLAS's thread count, set from the main thread only (the
+      /// factorizations and solves are the main thread's; the assembly's
+      /// threads make no BLAS calls).
       struct BlasThreads
       {
         BlasThreadsSetter set = nullptr;
         int               own = 1, current = 0;
         bool              pinned = false;
+        // The environment's choice: OPENBLAS_NUM_THREADS is kept always,
+        // OMP_NUM_THREADS by the choice per size (not by the ranks' pin,
+        // which io::ranks::share_cores made before this code existed).
+        const bool openblas_env = std::getenv("OPENBLAS_NUM_THREADS") != nullptr,
+                   omp_env      = std::getenv("OMP_NUM_THREADS") != nullptr;
 
         BlasThreads()
         {
-          // (the environment's choice is kept: nothing is set then)
-          if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr || std::getenv("OMP_NUM_THREADS") != nullptr)
-            return;
           set = reinterpret_cast<BlasThreadsSetter>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
           if (auto get = reinterpret_cast<BlasThreadsGetter>(::dlsym(RTLD_DEFAULT, "openblas_get_num_threads")))
             own = current = get();
@@ -475,7 +480,7 @@ namespace cosmo
     blas_threads_for(const unsigned int n_rows)
     {
       auto &b = blas_threads();
-      if (!b.pinned)
+      if (!b.pinned && !b.openblas_env && !b.omp_env)
         b.use(n_rows < 20000 ? 1 : b.own);
     }
 
@@ -483,6 +488,8 @@ namespace cosmo
     pin_blas_threads(const int n)
     {
       auto &b = blas_threads();
+      if (b.openblas_env)
+        return;
       b.use(n);
       b.pinned = true;
     }
@@ -531,6 +538,9 @@ namespace cosmo
     void
     SparseDirectSolver::factorize(const SparseMatrix<double> &A)
     {
+      // (per call: the count is the process's, and each matrix's size
+      // decides it, whatever was factorized before)
+      blas_threads_for(A.m());
       if (solver_kind == Kind::umfpack)
         {
           if (!umfpack)
@@ -602,7 +612,6 @@ namespace cosmo
           id.irn = mumps->irn.data();
           id.jcn = mumps->jcn.data();
           id.a   = mumps->values.data();
-          blas_threads_for(sp.n_rows());
           mumps->call(1); // analysis
           analysed_pattern = &sp;
           analysed_nnz     = sp.n_nonzero_elements();
@@ -675,6 +684,7 @@ namespace cosmo
     void
     SparseDirectSolver::solve(Vector<double> &x) const
     {
+      blas_threads_for(x.size());
       if (solver_kind == Kind::umfpack)
         {
           umfpack->solve(x);
@@ -702,6 +712,7 @@ namespace cosmo
     {
       if (xs.empty())
         return;
+      blas_threads_for(xs[0].size());
       if (solver_kind == Kind::umfpack)
         {
           for (auto &x : xs)

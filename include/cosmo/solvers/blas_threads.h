@@ -3,16 +3,17 @@
 
 /**
  * OpenBLAS's threads, set at run time where the BLAS in use is OpenBLAS
- * (its setter found by dlsym; any other BLAS is left alone). The
- * environment's choice (OPENBLAS_NUM_THREADS or OMP_NUM_THREADS set) is
- * always kept.
+ * (its setter found by dlsym; any other BLAS is left alone), from the main
+ * thread. OPENBLAS_NUM_THREADS set in the environment is always kept;
+ * OMP_NUM_THREADS is kept by blas_threads_for().
  */
 namespace cosmo
 {
   namespace solvers
   {
     /**
-     * BLAS threads for the factorization of a matrix of n rows: one below
+     * BLAS threads for a factorization or solve with a matrix of n rows
+     * (SparseDirectSolver calls it each time): one below
      * 20 000, OpenBLAS's own count (the cores) from there on. A small
      * matrix's fronts are a few hundred wide, where threads do not pay,
      * and OpenBLAS's workers spin (sched_yield) between calls on the cores
