@@ -113,6 +113,11 @@ namespace
     unsigned int residuals    = 0;     ///< residual() calls
     unsigned int setups       = 0;     ///< setup_jacobian() calls (factorizations)
     unsigned int at_predictor = 0;     ///< states reported with the predictor's factorization
+    bool
+    chord_steps_on_path() const override
+    {
+      return true;
+    }
     double
     jacobian_abs_form(const Vector<double> &v) const override
     {
@@ -459,7 +464,10 @@ namespace
     NearlyLinear            p(1e-7);
     solvers::NewtonSettings loose = newton();
     loose.relative_tolerance      = 1e-8;
-    solvers::ArclengthContinuation driver(settings(-1, 1.5), loose);
+    // (the predictor step alone: no chord steps, solvers.arclength_chord)
+    solvers::ArclengthSettings straight = settings(-1, 1.5);
+    straight.reuse_factorization        = false;
+    solvers::ArclengthContinuation driver(straight, loose);
     Vector<double>                 U(2);
     const auto                     events = driver.run(p, U, 0.);
     double                         off    = 0;
@@ -481,6 +489,7 @@ namespace
     NearlyLinear                   q(1e-7, true);
     solvers::ArclengthSettings     no_switch = settings(-1, 1.5);
     no_switch.switch_branches                = false;
+    no_switch.reuse_factorization            = false;
     solvers::ArclengthContinuation e(no_switch, loose);
     Vector<double>                 W(2);
     const auto                     located = e.run(q, W, 0.);
@@ -502,6 +511,7 @@ namespace
     Fold                           f;
     auto                           s = settings(0.01, 1);
     s.direction                      = -1;
+    s.reuse_factorization            = false;
     solvers::ArclengthContinuation d(s, newton());
     Vector<double>                 V(2);
     V[0]                    = 1;
@@ -628,6 +638,60 @@ namespace
     check("post-buckled branch reaches large rotations", max_tip > 1.5);
     check("stability: straight unstable beyond lambda_c, buckled stable (" + std::to_string(wrong) + " wrong)",
           wrong == 0);
+  }
+
+  // The corrector's chord steps from the last state's factorization
+  // ('Arclength continuation / Reuse factorization'), with and without them
+  // on the fold's curved branch x^2 = lambda: from (1, 1) down to lambda =
+  // 0.01 (no event), and from (-1, 1) to the fold at lambda = 0, on the way
+  // to which they are used. Every state solves R = 0 to the Newton
+  // tolerance either way (the chord steps change only how), the fold is
+  // the same, and the chord steps need fewer factorizations per state.
+  void
+  arclength_chord()
+  {
+    double per_state[2], fold_at[2];
+    for (const bool reuse : {false, true})
+      {
+        Fold p;
+        auto s                = settings(0.01, 1);
+        s.direction           = -1;
+        s.reuse_factorization = reuse;
+        solvers::ArclengthContinuation driver(s, newton());
+        Vector<double>                 U(2);
+        U[0]              = 1;
+        const auto events = driver.run(p, U, 1.);
+        double     worst  = 0;
+        for (const auto &pt : p.history)
+          worst = std::max(worst, std::abs(pt.U[0] * pt.U[0] - pt.lambda) + std::abs(pt.U[1]));
+        per_state[reuse] = double(p.setups) / p.history.size();
+        std::cout << "  " << (reuse ? "with" : "without") << " chord steps: " << p.history.size()
+                  << " states, " << p.setups << " factorizations, |x^2 - lambda| + |y| <= " << worst << "\n";
+        check(std::string(reuse ? "with" : "without") + " chord steps: no event, states down to lambda = 0.01",
+              events.empty() && p.history.size() >= 5);
+        // (Newton's stopping test: max |R_i| <= 1e-12)
+        check_close(std::string(reuse ? "with" : "without") + " chord steps: every state on x^2 = lambda",
+                    worst, 0, 0, 1e-12);
+
+        Fold q;
+        auto t                = settings(-1, 1);
+        t.direction           = -1;
+        t.stop_at_first_event = true;
+        t.reuse_factorization = reuse;
+        solvers::ArclengthContinuation to_fold(t, newton());
+        Vector<double>                 W(2);
+        W[0]                = -1;
+        const auto located  = to_fold.run(q, W, 1.);
+        fold_at[reuse]      = located.empty() ? NAN : located[0].event.lambda;
+        check(std::string(reuse ? "with" : "without") + " chord steps: the fold located",
+              located.size() == 1 && located[0].event.kind == solvers::BifurcationProblem::Event::Kind::fold);
+      }
+    // (the fold test's bound: lambda = 0 to 1e-12)
+    check_close("the fold at lambda = 0 with chord steps", fold_at[1], 0, 0, 1e-12);
+    check_close("the fold at lambda = 0 without", fold_at[0], 0, 0, 1e-12);
+    check("fewer factorizations per state with chord steps (" + std::to_string(per_state[1]) + " against " +
+            std::to_string(per_state[0]) + ")",
+          per_state[1] < 0.8 * per_state[0]);
   }
 
   // The bordered ordering (solvers/sparse_direct.h): a grid Laplacian with
@@ -1064,6 +1128,27 @@ namespace
     }
   };
 
+  /// Uncoupled modes of stiffness k_i = 1 + 0.4 i under one load:
+  /// critical loads 1, 1.4, 1.8, ..., a cluster (the second less than
+  /// twice the first).
+  class Cluster : public DenseProblem
+  {
+  public:
+    using DenseProblem::DenseProblem;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      H = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          H(i, i) = 1 + 0.4 * i - l;
+          R[i]    = H(i, i) * U[i];
+        }
+    }
+  };
+
   void
   critical_estimate()
   {
@@ -1139,6 +1224,29 @@ namespace
       std::cout << "  quadratic load: lambda " << e.lambda << ", the linear prediction " << newton
                 << ", the critical load " << (std::sqrt(1 + 4 * c * lambda_1) - 1) / (2 * c) << "\n";
       check_close("quadratic load: the linear prediction", e.lambda, newton, 1e-6);
+    }
+    {
+      // A cluster: the Lanczos run asked to stop once the second critical
+      // load is certain to lie less than twice as far (cluster_factor 2)
+      // stops before the full run, and both tell the same: a second load
+      // less than twice as far (the full run's 1.4, to 1e-6).
+      Cluster        p(n);
+      Vector<double> U(n), dU(n), mask(n);
+      mask = 1.;
+      p.set_load_parameter(0.);
+      p.setup_jacobian(U);
+      const auto                        full = solvers::estimate_first_critical_point(p, U, 0., dU, mask);
+      solvers::CriticalEstimateSettings early_settings;
+      early_settings.cluster_factor = 2;
+      const auto early              = solvers::estimate_first_critical_point(p, U, 0., dU, mask, early_settings);
+      std::cout << "  cluster: full run " << full.lambda << ", next " << full.next_lambda << " (" << full.steps
+                << " steps); stopped early " << early.lambda << ", next " << early.next_lambda << " ("
+                << early.steps << " steps)\n";
+      check_close("cluster, full run: the first critical load", full.lambda, 1, 1e-6);
+      check_close("cluster, full run: the second", full.next_lambda, 1.4, 1e-6);
+      check("cluster: stopped early, in fewer steps", early.cluster && early.steps < full.steps);
+      check("cluster: both runs find the second load less than twice as far",
+            full.next_lambda < 2 * full.lambda && early.next_lambda < 2 * early.lambda);
     }
   }
 
@@ -1226,6 +1334,6 @@ main(int argc, char **argv)
                                    {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},
                                    {"newton_guess", newton_guess}, {"newton_chord", newton_chord},
                                    {"predictor_step", predictor_step},
-                                   {"critical_estimate", critical_estimate}};
+                                   {"critical_estimate", critical_estimate}, {"arclength_chord", arclength_chord}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

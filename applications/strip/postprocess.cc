@@ -60,10 +60,13 @@ namespace cosmo
       const auto &s = last_state;
       // The eigenvalue of smallest magnitude of the Hessian on the
       // constrained field space (free strains condensed): the one that
-      // crosses zero where the section buckles.
+      // crosses zero where the section buckles. Reported, not acted on (the
+      // count is): an iterate that moves by less than 1e-4 gives it to
+      // ~1e-8 (a Rayleigh quotient), or to the width of a cluster; on the
+      // strip's 90-cell threshold run 221 solves in all instead of 431.
       Vector<double> mask, mode;
       mode_mask(mask);
-      const double smallest = solvers::smallest_eigenvalue(*this, mask, mode, 50);
+      const double smallest = solvers::smallest_eigenvalue(*this, mask, mode, 30, {}, 1e-4);
       record_state(report, s);
       std::ostringstream line;
       line << "step " << std::setw(3) << report.step << "  t = " << std::setw(8) << report.t

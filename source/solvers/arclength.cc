@@ -2,6 +2,7 @@
 #include <cosmo/io/run_directory.h>
 #include <cosmo/io/fault_injection.h>
 #include <cosmo/solvers/arclength.h>
+#include <cosmo/solvers/chord_newton.h>
 #include <cosmo/solvers/critical_estimate.h>
 #include <cosmo/solvers/critical_point.h>
 #include <cosmo/solvers/step_control.h>
@@ -280,6 +281,18 @@ namespace cosmo
                         "the first (a cluster of modes the linear model does not order), or "
                         "the location fails, the path is followed from the start. false: always "
                         "follow the path.");
+      prm.declare_entry("Reuse factorization", "true", Patterns::Bool(),
+                        "The corrector's Newton starts from the factorization of the last "
+                        "converged state (made there for its stability count and tangent) "
+                        "and keeps it while each step contracts the residual at least "
+                        "tenfold (chord steps: one residual and one solve instead of a "
+                        "Jacobian and a factorization); a new one is made where a step "
+                        "contracts less. The Newton iterations reported count them; 'Easy "
+                        "step iterations' counts the factorized ones. The states are those "
+                        "of exact Newton to the tolerance. For the sections, strips and "
+                        "rods; the plate-rod application keeps exact Newton (its weighted "
+                        "residual does not see the bending equations of thin plates). false: "
+                        "a new factorization at every iteration, the first at the predictor.");
       prm.leave_subsection();
     }
 
@@ -306,6 +319,7 @@ namespace cosmo
       follow_mirror_images = prm.get_bool("Follow mirror images");
       stop_at_first_event  = prm.get_bool("Stop at first event");
       first_event_by_estimate = prm.get_bool("First event by estimate");
+      reuse_factorization     = prm.get_bool("Reuse factorization");
       if (!(lambda_min < lambda_max))
         throw io::InputError("Arclength continuation", "Parameter range",
                              prm.get("Parameter range"), "min < max");
@@ -386,6 +400,14 @@ namespace cosmo
         J_inv_R_lambda() const
         {
           return b;
+        }
+
+        /// Solve with the problem's factorization in place (of a nearby
+        /// state, with J^-1 dR/dlambda there) until the first setup.
+        void
+        take_factorization_in_place(const Vector<double> &J_inv_R_lambda)
+        {
+          b = J_inv_R_lambda;
         }
 
         /// How many factorizations this system made, and where the last was.
@@ -682,6 +704,7 @@ namespace cosmo
       save_state(w, at.s);
       w.put(at.ds);
       w.put(at.k);
+      w.put(at.chord_from_state);
       w.put(factorizations);
       w.put(incomplete);
     }
@@ -711,6 +734,7 @@ namespace cosmo
       load_state(r, at.s);
       at.ds          = r.get_double();
       at.k           = r.get_unsigned();
+      at.chord_from_state = r.get_bool();
       factorizations = r.get_unsigned();
       incomplete     = r.get_strings();
       resume         = true;
@@ -747,7 +771,8 @@ namespace cosmo
                                    const Vector<double> &direction_U,
                                    const double          direction_lambda,
                                    const Vector<double> &predictor_U,
-                                   const double          predictor_lambda)
+                                   const double          predictor_lambda,
+                                   const bool            from_state_factorization)
     {
       const unsigned int n = problem.n_unknowns();
       AugmentedSystem    system(problem, theta, mask, direction_U, direction_lambda, predictor_U,
@@ -793,6 +818,32 @@ namespace cosmo
       // (the rod, the plate) then answers the guess's test without a
       // residual assembly of its own: one assembly per step saved. A
       // failure here is left to Newton's own first setup, as before.
+      // From the last state's factorization (from_state_factorization, at
+      // s, which the predictor left by the step ds): chord steps on it
+      // while each contracts tenfold, a new factorization where not. On
+      // the strip's and the rod's paths one per state (analyse's) instead of
+      // two or three (doc/theory-continuation.md 1).
+      // (a predictor that passes the stopping test takes the step below:
+      // as exact as Newton's last, with the factorization the analysis keeps)
+      bool predictor_passes = false;
+      if (from_state_factorization && take_guess)
+        {
+          Vector<double> R0(n + 1);
+          predictor_passes =
+            system.residual(X, R0) == 0 && scaled_residual_norm(system, R0) <= newton.relative_tolerance;
+        }
+      if (from_state_factorization && !predictor_passes)
+        {
+          system.take_factorization_in_place(at_state.J_inv_R_lambda);
+          NewtonResult r = newton_solve_from_factorization(system, X, newton);
+          if (r.iterations > 0 && system.setups == 1 && same_point(system.setup_X, X_predictor))
+            keep_predictor_factorization(X);
+          s.U.reinit(n);
+          std::copy(X.begin(), X.begin() + n, s.U.begin());
+          s.lambda = X[n];
+          problem.set_load_parameter(s.lambda);
+          return r;
+        }
       if (take_guess)
         system.setup_jacobian(X);
       NewtonResult r = newton_solve(system, X, newton, take_guess);
@@ -842,10 +893,11 @@ namespace cosmo
     {
       const unsigned int n = problem.n_unknowns();
       problem.set_load_parameter(s.lambda);
-      Vector<double> Rl(n), z(n);
+      Vector<double> z(n);
       s.factorized_at_predictor =
         at_predictor.valid && at_predictor.lambda == s.lambda && same_point(s.U, at_predictor.U);
       at_predictor.valid = false;
+      at_state.valid = false;
       if (s.factorized_at_predictor)
         {
           // The count and J^-1 R_lambda of the predictor, one Newton step
@@ -855,12 +907,9 @@ namespace cosmo
         }
       else
         {
-          ++factorizations;
-          if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
-            throw NewtonFailure("the Jacobian cannot be set up at a converged state");
+          factorize_state(problem, s);
           s.n_negative = problem.n_negative_eigenvalues();
-          if (problem.solve_with_jacobian(Rl, z) != 0) // z = J^-1 R_lambda; tangent (-z, 1)
-            throw NewtonFailure("the tangent solve failed at a converged state");
+          z            = at_state.J_inv_R_lambda;
         }
       z *= -1.;
       const double tl = 1. / std::sqrt(1. + norm2(z));
@@ -873,6 +922,36 @@ namespace cosmo
           s.tU *= -1.;
           s.tlambda *= -1.;
         }
+    }
+
+    void
+    ArclengthContinuation::factorize_state(BifurcationProblem &problem, const State &s)
+    {
+      const unsigned int n = problem.n_unknowns();
+      Vector<double>     Rl(n), z(n);
+      problem.set_load_parameter(s.lambda);
+      ++factorizations;
+      at_state.valid = false;
+      if (problem.load_derivative(s.U, s.lambda, Rl) != 0 || problem.setup_jacobian(s.U) != 0)
+        throw NewtonFailure("the Jacobian cannot be set up at a converged state");
+      if (problem.solve_with_jacobian(Rl, z) != 0) // z = J^-1 R_lambda; tangent (-z, 1)
+        throw NewtonFailure("the tangent solve failed at a converged state");
+      at_state.U              = s.U;
+      at_state.J_inv_R_lambda = z;
+      at_state.factorizations = factorizations;
+      at_state.valid          = true;
+    }
+
+    bool
+    ArclengthContinuation::reuse_factorization(const BifurcationProblem &problem) const
+    {
+      return settings.reuse_factorization && problem.chord_steps_on_path();
+    }
+
+    bool
+    ArclengthContinuation::StateFactorization::of(const State &s, const unsigned int count) const
+    {
+      return valid && factorizations == count && same_point(U, s.U);
     }
 
     bool
@@ -1358,6 +1437,15 @@ namespace cosmo
                                   const unsigned int        k0)
     {
       unsigned int cutbacks = 0;
+      // Chord steps on the last state's factorization only on the way to the
+      // first critical point of the first branch: near a branch point the
+      // factorization of a state a step away is nearly singular along the
+      // mode, and chord steps with it can land on the other branch's point
+      // of the arclength hyperplane (the seed pod's switched branch fell back
+      // onto the symmetric one; doc/theory-continuation.md 1).
+      const auto chord_from = [&](const State &x) {
+        return reuse_factorization(problem) && branch == 0 && events.empty() && at_state.of(x, factorizations);
+      };
       // A point to go on from: the state, the next step length, the steps taken.
       auto save_point = [&](const unsigned int next_k) {
         if (!checkpoint)
@@ -1366,6 +1454,7 @@ namespace cosmo
         at.ds   = ds;
         at.k    = next_k;
         at.step = step;
+        at.chord_from_state = chord_from(s);
         checkpoint();
       };
       save_point(k0);
@@ -1387,7 +1476,7 @@ namespace cosmo
           unsigned int analysed_with = 0; // the factorization count after analyse(next)
           try
             {
-              r = correct(problem, next, s.tU, s.tlambda, Up, lp);
+              r = correct(problem, next, s.tU, s.tlambda, Up, lp, chord_from(s));
               analyse(problem, next, &s.tU, s.tlambda);
               analysed_with = factorizations;
             }
@@ -1444,7 +1533,8 @@ namespace cosmo
           report_converged_step(problem, s.U, report);
           io::inject_fault("step " + std::to_string(step)); // (robustness tests only)
           cutbacks = 0;
-          if (r.iterations <= settings.easy_iterations)
+          // (the factorized iterations: chord steps cost a residual and a solve)
+          if (r.iterations - r.chord_steps <= settings.easy_iterations)
             ds = std::min(settings.maximum_step, ds * settings.growth_factor);
           save_point(k + 1);
         }
@@ -1636,7 +1726,11 @@ namespace cosmo
         static const unsigned int direct_iterations = std::getenv("COSMO_ESTIMATE_VIA_PATH") ? 0 : 4;
         cp       = CriticalPoint(); // (this attempt's: none until located)
         on_path.reinit(0);          // (set once the guess has converged onto the path)
-        estimate = estimate_first_critical_point(problem, U, lambda, dU, mask);
+        // (the Lanczos run stops where the separation test below is
+        // certain to fail: the twisted strip's 15 steps become 7)
+        CriticalEstimateSettings lanczos;
+        lanczos.cluster_factor = 2;
+        estimate = estimate_first_critical_point(problem, U, lambda, dU, mask, lanczos);
         if (!estimate.found || estimate.lambda > settings.lambda_max)
           {
             why = estimate.found ? "estimated beyond the parameter range" : estimate.message;
@@ -1770,6 +1864,10 @@ namespace cosmo
               {
                 say("  the estimated critical point: " + why + "; following the path");
                 problem.set_load_parameter(lambda0);
+                // (whether Newton ran: the factorization in place is then
+                // no longer the start's)
+                record.event.factorizations =
+                  (attempt > 0 || factorizations > 0 || cp.iterations > 0 || on_path.size() > 0) ? 1 : 0;
                 return false;
               }
             ++factorizations;
@@ -1845,6 +1943,8 @@ namespace cosmo
                   say("  stopped at the first event ('Stop at first event')");
                   return events;
                 }
+              if (record.event.factorizations > 0)
+                at_state.valid = false;
             }
           at.may_switch = settings.switch_branches && settings.maximum_depth > 0;
           follow(problem, s, 0, at.may_switch, events, switches, at.step, settings.initial_step,
@@ -1852,8 +1952,15 @@ namespace cosmo
         }
       else
         {
-          // Go on inside the branch the checkpoint was written on.
+          // Go on inside the branch the checkpoint was written on, from the
+          // factorization the uninterrupted run's next corrector started on.
           resume = false;
+          if (at.chord_from_state && reuse_factorization(problem))
+            {
+              factorize_state(problem, at.s);
+              // (made again, not one more: the counts stay the uninterrupted run's)
+              at_state.factorizations = --factorizations;
+            }
           follow(problem, at.s, at.branch, at.may_switch, events, switches, at.step, at.ds, at.k);
           if (at.q != Progress::no_switch)
             {

@@ -170,6 +170,19 @@ namespace cosmo
               out.converged = true;
               break;
             }
+          // (K is self-adjoint in the J0 inner product: the k-th largest
+          // Ritz value is at most the k-th largest eigenvalue, and the top
+          // one lies within r of an eigenvalue)
+          if (settings.cluster_factor > 0 && top > 0 && theta[top] > 0)
+            {
+              const double r = b * std::abs(S(j, top)), second = theta[top - 1];
+              if (r <= 1e-2 * theta[top] && second > (theta[top] + r) / settings.cluster_factor &&
+                  second < (1 - 1e-3) * theta[top])
+                {
+                  out.cluster = true;
+                  break;
+                }
+            }
           if (b <= 1e-14 * scale)
             {
               out.converged = true; // an invariant subspace: the Ritz values are exact

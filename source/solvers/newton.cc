@@ -5,6 +5,7 @@
 #include <cosmo/io/parameters.h>
 #include <cosmo/io/run_directory.h>
 #include <cosmo/solvers/distributed_direct.h>
+#include <cosmo/solvers/chord_newton.h>
 #include <cosmo/solvers/newton.h>
 
 #include <algorithm>
@@ -322,11 +323,14 @@ namespace cosmo
        * decrease the residual, a failed setup or solve, or the iteration
        * limit ends the attempt with U at its last accepted iterate, and
        * newton_solve() goes on from there with KINSOL's line search.
+       * in_place: the first step is a chord step with the factorization in
+       * place (a nearby state's: newton_solve_from_factorization()), made
+       * afresh where that step fails or contracts less than tenfold.
        * Returns whether U has converged.
        */
       bool
       chord_newton(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings,
-                   const bool take_guess, NewtonResult &result)
+                   const bool take_guess, const bool in_place, NewtonResult &result)
       {
         constexpr double reuse_rate = 0.1, guess_fraction = 0.01;
         constexpr unsigned int max_polish = 2;
@@ -344,8 +348,8 @@ namespace cosmo
             result.residual_norm = norm;
             return true;
           }
-        bool         fresh = false; // the factorization in place is of U
-        bool         keep   = false; // the next step keeps it
+        bool         fresh = false;    // the factorization in place is of U
+        bool         keep   = in_place; // the next step keeps it
         unsigned int polish = 0;
         for (unsigned int it = 0; it < settings.max_iterations;)
           {
@@ -359,7 +363,13 @@ namespace cosmo
             rhs = R;
             rhs *= -1.;
             if (system.solve_with_jacobian(rhs, dU) != 0)
-              return polish > 0;
+              {
+                // (a kept factorization that no longer solves is made afresh)
+                if (fresh || polish > 0)
+                  return polish > 0;
+                keep = false;
+                continue;
+              }
             U_new = U;
             U_new += dU;
             const int status = system.residual(U_new, R_new);
@@ -407,97 +417,118 @@ namespace cosmo
       }
     } // namespace
 
+    namespace
+    {
+      NewtonResult
+      solve(NonlinearSystem &      system,
+            Vector<double> &       U,
+            const NewtonSettings & settings,
+            const bool             take_guess,
+            const bool             in_place)
+      {
+        NewtonResult   result;
+        Vector<double> U_start = U;
+        if (settings.reuse_factorization)
+          {
+            try
+              {
+                if (chord_newton(system, U, settings, take_guess, in_place, result))
+                  return result;
+              }
+            catch (...)
+              {
+                U = U_start; // (an interruption: the caller's state as it was)
+                throw;
+              }
+            // Not converged: KINSOL, with its line search, from the last
+            // accepted iterate (no worse than the guess), with the iterations
+            // left and its count after the chord steps'.
+          }
+        const NewtonResult chord = result;
+        result                   = NewtonResult();
+        NewtonSettings rest      = settings;
+        rest.max_iterations      = std::max(1u, settings.max_iterations - std::min(settings.max_iterations, chord.iterations));
+        auto with_chord          = [&chord](NewtonResult r) {
+          r.iterations += chord.iterations;
+          r.chord_steps = chord.chord_steps;
+          return r;
+        };
+        Vector<double> weights;
+        system.residual_weights(weights);
+
+        SUNDIALS::KINSOL<Vector<double>> kinsol(exact_newton_data(rest));
+        const unsigned int                n = system.n_unknowns();
+        kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
+        kinsol.get_function_scaling = [&]() -> Vector<double> & { return weights; };
+        KinsolEvaluations evaluations(system, result);
+
+        // take_guess: the guess first, taken if it passes the stopping test;
+        // otherwise its residual is KINSOL's first.
+        if (take_guess && evaluations.guess_converged(U, settings.relative_tolerance))
+          return with_chord(result);
+        kinsol.residual = [&](const Vector<double> &u, Vector<double> &r) {
+          return evaluations.residual(u, r);
+        };
+        kinsol.setup_jacobian = [&](const Vector<double> &u, const Vector<double> &) {
+          return system.setup_jacobian(u);
+        };
+        static const bool exact_jp = std::getenv("COSMO_DQ_JP") == nullptr; // to measure against
+        kinsol.solve_with_jacobian = [&](const Vector<double> &rhs, Vector<double> &dst, double) {
+          return evaluations.solve_with_jacobian(rhs, dst, exact_jp);
+        };
+
+        Vector<double>    U0       = U;
+        std::string       messages;
+        try
+          {
+            messages = solve_capturing_messages(kinsol, U, U0, result);
+          }
+        catch (const NewtonFailure &)
+          {
+            U = U_start; // (the guess, not the chord steps' last iterate)
+            throw;
+          }
+        result = with_chord(result);
+
+        // A signal ends the solve with an error KINSOL does not report in
+        // Release: whatever U is now, it is an interruption, not a failure
+        // (which a caller might work around, e.g. by bisecting an event).
+        io::check_interrupt();
+        // KINSOL reports failure only through (Debug-mode) assertions: check.
+        Vector<double> R(n);
+        const int      status = evaluations.is_last(U) ?
+                                  (R = evaluations.last_r, evaluations.last_status) :
+                                  system.residual(U, R);
+        result.residual_norm = (status == 0) ? scaled_residual_norm(system, R) : INFINITY;
+        if (status != 0 || !std::isfinite(result.residual_norm) ||
+            result.residual_norm > settings.relative_tolerance)
+          {
+            std::ostringstream s;
+            s << "Newton did not converge in " << settings.max_iterations
+              << " iterations: scaled residual " << result.residual_norm << " > tolerance "
+              << settings.relative_tolerance << messages;
+            U = U_start;
+            throw NewtonFailure(s.str());
+          }
+        return result;
+      }
+    } // namespace
+
     NewtonResult
     newton_solve(NonlinearSystem &      system,
                  Vector<double> &       U,
                  const NewtonSettings & settings,
                  const bool             take_guess)
     {
-      NewtonResult   result;
-      Vector<double> U_start = U;
-      if (settings.reuse_factorization)
-        {
-          try
-            {
-              if (chord_newton(system, U, settings, take_guess, result))
-                return result;
-            }
-          catch (...)
-            {
-              U = U_start; // (an interruption: the caller's state as it was)
-              throw;
-            }
-          // Not converged: KINSOL, with its line search, from the last
-          // accepted iterate (no worse than the guess), with the iterations
-          // left and its count after the chord steps'.
-        }
-      const NewtonResult chord = result;
-      result                   = NewtonResult();
-      NewtonSettings rest      = settings;
-      rest.max_iterations      = std::max(1u, settings.max_iterations - std::min(settings.max_iterations, chord.iterations));
-      auto with_chord          = [&chord](NewtonResult r) {
-        r.iterations += chord.iterations;
-        r.chord_steps = chord.chord_steps;
-        return r;
-      };
-      Vector<double> weights;
-      system.residual_weights(weights);
+      return solve(system, U, settings, take_guess, false);
+    }
 
-      SUNDIALS::KINSOL<Vector<double>> kinsol(exact_newton_data(rest));
-      const unsigned int                n = system.n_unknowns();
-      kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
-      kinsol.get_function_scaling = [&]() -> Vector<double> & { return weights; };
-      KinsolEvaluations evaluations(system, result);
-
-      // take_guess: the guess first, taken if it passes the stopping test;
-      // otherwise its residual is KINSOL's first.
-      if (take_guess && evaluations.guess_converged(U, settings.relative_tolerance))
-        return with_chord(result);
-      kinsol.residual = [&](const Vector<double> &u, Vector<double> &r) {
-        return evaluations.residual(u, r);
-      };
-      kinsol.setup_jacobian = [&](const Vector<double> &u, const Vector<double> &) {
-        return system.setup_jacobian(u);
-      };
-      static const bool exact_jp = std::getenv("COSMO_DQ_JP") == nullptr; // to measure against
-      kinsol.solve_with_jacobian = [&](const Vector<double> &rhs, Vector<double> &dst, double) {
-        return evaluations.solve_with_jacobian(rhs, dst, exact_jp);
-      };
-
-      Vector<double>    U0       = U;
-      std::string       messages;
-      try
-        {
-          messages = solve_capturing_messages(kinsol, U, U0, result);
-        }
-      catch (const NewtonFailure &)
-        {
-          U = U_start; // (the guess, not the chord steps' last iterate)
-          throw;
-        }
-      result = with_chord(result);
-
-      // A signal ends the solve with an error KINSOL does not report in
-      // Release: whatever U is now, it is an interruption, not a failure
-      // (which a caller might work around, e.g. by bisecting an event).
-      io::check_interrupt();
-      // KINSOL reports failure only through (Debug-mode) assertions: check.
-      Vector<double> R(n);
-      const int      status = evaluations.is_last(U) ?
-                                (R = evaluations.last_r, evaluations.last_status) :
-                                system.residual(U, R);
-      result.residual_norm = (status == 0) ? scaled_residual_norm(system, R) : INFINITY;
-      if (status != 0 || !std::isfinite(result.residual_norm) ||
-          result.residual_norm > settings.relative_tolerance)
-        {
-          std::ostringstream s;
-          s << "Newton did not converge in " << settings.max_iterations
-            << " iterations: scaled residual " << result.residual_norm << " > tolerance "
-            << settings.relative_tolerance << messages;
-          U = U_start;
-          throw NewtonFailure(s.str());
-        }
-      return result;
+    NewtonResult
+    newton_solve_from_factorization(NonlinearSystem &system, Vector<double> &U, const NewtonSettings &settings)
+    {
+      NewtonSettings chord      = settings;
+      chord.reuse_factorization = true;
+      return solve(system, U, chord, false, true);
     }
   } // namespace solvers
 } // namespace cosmo

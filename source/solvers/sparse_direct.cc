@@ -297,6 +297,7 @@ namespace cosmo
       std::vector<int>    irn, jcn; // 1-based, upper triangle
       std::vector<double> values;
       std::vector<bool>   upper; // storage position is in the upper triangle
+      bool                ordering_checked = false; // (the first factorization's flops)
 
       // The banded Cholesky fast path (band_try()): the half-bandwidth of
       // the analysed pattern (-1: not banded enough), LAPACK's upper band
@@ -551,68 +552,67 @@ namespace cosmo
         }
 #ifdef COSMO_WITH_MUMPS
       const SparsityPattern &sp = A.get_sparsity_pattern();
+      // An instance analysed for A's pattern with an ordering (ICNTL(7); 100:
+      // METIS's nested dissection of the sparse block, the dense border
+      // rows last, a user ordering); null for 100 where there is no border.
+      const auto analysed_mumps = [&](const int ordering, const bool shared) -> std::unique_ptr<MumpsData> {
+        auto  data = std::make_unique<MumpsData>(shared);
+        auto &id   = data->id;
+        // Extra workspace: dense border rows make the fill estimate loose.
+        id.icntl[13] = 60;
+        id.icntl[6]  = ordering;
+        if (ordering == 100)
+          {
+            data->perm_in = border_last_ordering(sp);
+            if (data->perm_in.empty())
+              return nullptr;
+            id.perm_in  = data->perm_in.data();
+            id.icntl[6] = 1;
+          }
+        // No maximum weighted matching where the caller says the diagonal has
+        // no zero (set_nonzero_diagonal()) and the matrix analysed agrees
+        // (later matrices of the same pattern are not checked again: a zero
+        // there costs delayed pivots, not accuracy).
+        if (nonzero_diagonal)
+          {
+            bool zero_on_diagonal = false;
+            for (unsigned int row = 0; row < A.m() && !zero_on_diagonal; ++row)
+              zero_on_diagonal = A.diag_element(row) == 0;
+            if (!zero_on_diagonal)
+              id.icntl[5] = 0;
+          }
+        // The upper triangle in coordinate format; the pattern is fixed,
+        // so the index map is computed once.
+        for (unsigned int row = 0; row < sp.n_rows(); ++row)
+          for (auto it = sp.begin(row); it != sp.end(row); ++it)
+            {
+              data->upper.push_back(it->column() >= row);
+              if (it->column() >= row)
+                {
+                  data->irn.push_back(row + 1);
+                  data->jcn.push_back(it->column() + 1);
+                }
+            }
+        data->values.resize(data->irn.size());
+        id.n   = sp.n_rows();
+        id.nnz = data->irn.size();
+        id.irn = data->irn.data();
+        id.jcn = data->jcn.data();
+        id.a   = data->values.data();
+        data->call(1); // analysis
+        return data;
+      };
       if (!mumps || analysed_pattern != &sp || analysed_nnz != sp.n_nonzero_elements())
         {
           mumps.reset();
-          mumps    = std::make_unique<MumpsData>(factorization_ranks::active() &&
-                                              sp.n_rows() >= factorization_ranks::min_unknowns());
-          auto &id = mumps->id;
-          // Extra workspace: dense border rows make the fill estimate loose.
-          id.icntl[13] = 60;
-          // QAMD ordering: AMD that treats the quasi-dense constraint rows of
-          // the bordered Hessians separately (measured fastest of MUMPS'
-          // orderings on these matrices, see benchmarks/README.md).
-          id.icntl[6] = 6;
-          int ordering = id.icntl[6];
+          const bool shared = factorization_ranks::active() && sp.n_rows() >= factorization_ranks::min_unknowns();
+          // QAMD: AMD that treats the quasi-dense constraint rows of the
+          // bordered Hessians separately (measured fastest of MUMPS'
+          // orderings on the 2D sections and plates, benchmarks/README.md).
+          int ordering = 6;
           if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
             ordering = std::atoi(o);
-          // 100: METIS nested dissection of the sparse block, the dense
-          // border rows last (a user ordering, ICNTL(7) = 1).
-          if (ordering == 100)
-            {
-              mumps->perm_in = border_last_ordering(sp);
-              if (!mumps->perm_in.empty())
-                {
-                  id.perm_in  = mumps->perm_in.data();
-                  id.icntl[6] = 1;
-                }
-            }
-          else
-            id.icntl[6] = ordering;
-          // No maximum weighted matching where the caller says the diagonal has
-          // no zero (set_nonzero_diagonal()) and the matrix analysed agrees
-          // (later matrices of the same pattern are not checked again: a zero
-          // there costs delayed pivots, not accuracy).
-          if (nonzero_diagonal)
-            {
-              bool zero_on_diagonal = false;
-              for (unsigned int row = 0; row < A.m() && !zero_on_diagonal; ++row)
-                zero_on_diagonal = A.diag_element(row) == 0;
-              if (!zero_on_diagonal)
-                id.icntl[5] = 0;
-            }
-          // The upper triangle in coordinate format; the pattern is fixed,
-          // so the index map is computed once.
-          mumps->irn.clear();
-          mumps->jcn.clear();
-          mumps->upper.clear();
-          for (unsigned int row = 0; row < sp.n_rows(); ++row)
-            for (auto it = sp.begin(row); it != sp.end(row); ++it)
-              {
-                mumps->upper.push_back(it->column() >= row);
-                if (it->column() >= row)
-                  {
-                    mumps->irn.push_back(row + 1);
-                    mumps->jcn.push_back(it->column() + 1);
-                  }
-              }
-          mumps->values.resize(mumps->irn.size());
-          id.n   = sp.n_rows();
-          id.nnz = mumps->irn.size();
-          id.irn = mumps->irn.data();
-          id.jcn = mumps->jcn.data();
-          id.a   = mumps->values.data();
-          mumps->call(1); // analysis
+          mumps = analysed_mumps(ordering, shared);
           analysed_pattern = &sp;
           analysed_nnz     = sp.n_nonzero_elements();
           mumps->band_kd   = mumps->m.shared ? -1 : useful_bandwidth(sp);
@@ -639,6 +639,32 @@ namespace cosmo
       mumps_phases::factorize_enlarging_workspace(mumps->id, [&](const int job) { mumps->run(job); });
       if (mumps->id.infog[0] < 0)
         mumps->check(2); // reports the error with its code
+      // The first factorization of a pattern that cost over 4 times the
+      // flops its analysis estimated (pivots delayed up the tree: QAMD on
+      // the strip's 1D mesh with its six gauge rows delays 8 300 of 911
+      // pivots, 12.4 MFlop against 0.29 estimated) is made again with
+      // METIS's nested dissection of the sparse block, the border rows
+      // last (24 delayed, 0.31 MFlop), which is kept where it at least
+      // halves the flops. Once per pattern; the inertia is the matrix's
+      // either way (solvers.bordered_ordering).
+      if (!mumps->ordering_checked)
+        {
+          mumps->ordering_checked = true;
+          if (!mumps->m.shared && !std::getenv("COSMO_MUMPS_ORDERING") &&
+              mumps->id.rinfog[2] > 4 * mumps->id.rinfog[0])
+            if (auto border_last = analysed_mumps(100, false))
+              {
+                border_last->values = mumps->values;
+                mumps_phases::factorize_enlarging_workspace(border_last->id,
+                                                            [&](const int job) { border_last->run(job); });
+                if (border_last->id.infog[0] >= 0 && border_last->id.rinfog[2] < 0.5 * mumps->id.rinfog[2])
+                  {
+                    border_last->band_kd          = mumps->band_kd;
+                    border_last->ordering_checked = true;
+                    mumps                         = std::move(border_last);
+                  }
+              }
+        }
       n_negative = mumps->id.infog[11];
       FactorizationMemory f;
       f.unknowns       = sp.n_rows();

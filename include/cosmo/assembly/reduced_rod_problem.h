@@ -125,6 +125,12 @@ namespace cosmo
       /// |v|.|J||v| with the assembled Hessian (block A) (resolution of a located event).
       double
       jacobian_abs_form(const Vector<double> &v) const override;
+      /// Chord steps on the path: the weighted residual sees every equation.
+      bool
+      chord_steps_on_path() const override
+      {
+        return true;
+      }
       void
       mode_mask(Vector<double> &mask) const override;
 

@@ -116,6 +116,23 @@ namespace cosmo
       }
 
       /**
+       * Whether the arclength corrector may converge this problem's states
+       * by chord steps on the last state's factorization ('Arclength
+       * continuation / Reuse factorization'): where its weighted residual
+       * below the tolerance means every unknown is converged. Opt-in: the
+       * sections, the strips and the rod. The plate-rod problem keeps
+       * exact Newton: its weights make the bending equations (h/R)^2 of the
+       * membrane ones, and with chord steps its switched branches did not
+       * follow the buckled states at h/R = 0.01 and 0.001
+       * (plate_rod.shear_convergence).
+       */
+      virtual bool
+      chord_steps_on_path() const
+      {
+        return false;
+      }
+
+      /**
        * Project v onto the fixed-point space of one reflection of the
        * problem's symmetry (v = (v + S v)/2) and return true; false (v
        * untouched) if the problem has none. At a double eigenvalue of a
@@ -255,6 +272,9 @@ namespace cosmo
       /// the stable start ("First event by estimate", critical_estimate.h),
       /// the path followed where it does not hold.
       bool         first_event_by_estimate = true;
+      /// The corrector's Newton starts with chord steps on the last state's
+      /// factorization ("Reuse factorization", chord_newton.h).
+      bool         reuse_factorization = true;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -396,6 +416,9 @@ namespace cosmo
         State        s;                              ///< its last converged state
         double       ds = 0;                         ///< the next step length
         unsigned int k  = 0;                         ///< steps taken on it
+        /// The next corrector starts from the factorization at s (at_state):
+        /// a resumed run makes it again there.
+        bool         chord_from_state = false;
         static constexpr std::size_t no_switch = static_cast<std::size_t>(-1);
       };
       Progress at;
@@ -419,6 +442,22 @@ namespace cosmo
         Vector<double> J_inv_R_lambda;
         bool           valid = false;
       } at_predictor;
+      /**
+       * The factorization analyse() made at a converged state (and J^-1
+       * dR/dlambda there), while the driver has made no other since
+       * (factorizations unchanged): the next step's corrector starts with
+       * chord steps on it (settings.reuse_factorization).
+       */
+      struct StateFactorization
+      {
+        Vector<double> U;
+        Vector<double> J_inv_R_lambda;
+        unsigned int   factorizations = 0; ///< the driver's count after it
+        bool           valid          = false;
+        /// Whether it is of state s and still in place.
+        bool
+        of(const State &s, unsigned int count) const;
+      } at_state;
       bool              stopped = false;    ///< the first branch stopped at its first event
       /// Branches that ended before their target (minimum step, failed switch): the run fails.
       std::vector<std::string> incomplete;
@@ -435,7 +474,14 @@ namespace cosmo
               const Vector<double> &direction_U,
               double               direction_lambda,
               const Vector<double> &predictor_U,
-              double               predictor_lambda);
+              double               predictor_lambda,
+              bool                 from_state_factorization = false);
+      /// settings.reuse_factorization, where the problem allows it.
+      bool
+      reuse_factorization(const BifurcationProblem &problem) const;
+      /// Factorize at s, with J^-1 dR/dlambda there (at_state).
+      void
+      factorize_state(BifurcationProblem &problem, const State &s);
       /// Factorize at s, set its stability count and its unit tangent, oriented along (oU, ol).
       void
       analyse(BifurcationProblem &problem, State &s, const Vector<double> *oU, double ol);

@@ -37,6 +37,13 @@ namespace cosmo
       /// The state step of the differences J v (times the problem's
       /// unknowns_scale over |v|_inf).
       double state_step = 1e-6;
+      /// Stop once the second critical load is certain to lie less than
+      /// this factor as far as the first (the caller refuses such a
+      /// cluster): the top Ritz pair's residual r below 1/100 of its value
+      /// theta_1, and the next Ritz value, a lower bound of its eigenvalue,
+      /// above (theta_1 + r)/factor and not within 1e-3 of theta_1 (a
+      /// double eigenvalue in the making). 0: never.
+      double cluster_factor = 0;
     };
 
     struct CriticalEstimate
@@ -52,6 +59,8 @@ namespace cosmo
       double       next_lambda = 0;
       unsigned int steps = 0, residuals = 0, solves = 0;
       bool         converged = false; ///< the Ritz residual below the tolerance
+      /// Stopped early: the next critical load less than cluster_factor as far.
+      bool         cluster = false;
       std::string  message;
     };
 
