@@ -289,10 +289,12 @@ namespace cosmo
                         "Jacobian and a factorization); a new one is made where a step "
                         "contracts less. The Newton iterations reported count them; 'Easy "
                         "step iterations' counts the factorized ones. The states are those "
-                        "of exact Newton to the tolerance. For the sections, strips and "
-                        "rods; the plate-rod application keeps exact Newton (its weighted "
-                        "residual does not see the bending equations of thin plates). false: "
-                        "a new factorization at every iteration, the first at the predictor.");
+                        "of exact Newton to the tolerance. Sections and strips only, on the "
+                        "way to the first critical point of the first branch (past it a "
+                        "state's factorization may be nearly singular along a mode, and "
+                        "chord steps with it can land on another branch); the plate-rod and "
+                        "rod applications keep exact Newton. false: a new factorization at "
+                        "every iteration, the first at the predictor.");
       prm.leave_subsection();
     }
 
@@ -821,8 +823,8 @@ namespace cosmo
       // From the last state's factorization (from_state_factorization, at
       // s, which the predictor left by the step ds): chord steps on it
       // while each contracts tenfold, a new factorization where not. On
-      // the strip's and the rod's paths one per state (analyse's) instead of
-      // two or three (doc/theory-continuation.md 1).
+      // the strip's path to its threshold one or two per state (with
+      // analyse's) instead of three (doc/theory-continuation.md 1).
       // (a predictor that passes the stopping test takes the step below:
       // as exact as Newton's last, with the factorization the analysis keeps)
       bool predictor_passes = false;

@@ -120,11 +120,13 @@ namespace cosmo
        * by chord steps on the last state's factorization ('Arclength
        * continuation / Reuse factorization'): where its weighted residual
        * below the tolerance means every unknown is converged. Opt-in: the
-       * sections, the strips and the rod. The plate-rod problem keeps
-       * exact Newton: its weights make the bending equations (h/R)^2 of the
-       * membrane ones, and with chord steps its switched branches did not
-       * follow the buckled states at h/R = 0.01 and 0.001
-       * (plate_rod.shear_convergence).
+       * sections and the strips (ReducedRodProblem). The plate-rod problem
+       * keeps exact Newton: its weights make the bending equations (h/R)^2
+       * of the membrane ones, and with chord steps its switched branches
+       * did not follow the buckled states at h/R = 0.01 and 0.001
+       * (plate_rod.shear_convergence); so does the rod, whose overwinding
+       * path stopped short of its end with chord steps on every branch
+       * (validation.rod_overwinding).
        */
       virtual bool
       chord_steps_on_path() const
