@@ -335,6 +335,99 @@ namespace cosmo
           id.icntl[12] = 1;
       }
 
+      /**
+       * The analysis of A's pattern with an ordering (ICNTL(7); 100:
+       * METIS's nested dissection of the sparse block, the dense border
+       * rows last, a user ordering); false for 100 where there is no border.
+       */
+      bool
+      analyse(const SparseMatrix<double> &A, const int ordering, const bool nonzero_diagonal)
+      {
+        const SparsityPattern &sp = A.get_sparsity_pattern();
+        // Extra workspace: dense border rows make the fill estimate loose.
+        id.icntl[13] = 60;
+        id.icntl[6]  = ordering;
+        if (ordering == 100)
+          {
+            perm_in = border_last_ordering(sp);
+            if (perm_in.empty())
+              return false;
+            id.perm_in  = perm_in.data();
+            id.icntl[6] = 1;
+          }
+        // No maximum weighted matching where the caller says the diagonal has
+        // no zero (set_nonzero_diagonal()) and the matrix analysed agrees
+        // (later matrices of the same pattern are not checked again: a zero
+        // there costs delayed pivots, not accuracy).
+        if (nonzero_diagonal)
+          {
+            bool zero_on_diagonal = false;
+            for (unsigned int row = 0; row < A.m() && !zero_on_diagonal; ++row)
+              zero_on_diagonal = A.diag_element(row) == 0;
+            if (!zero_on_diagonal)
+              id.icntl[5] = 0;
+          }
+        // The upper triangle in coordinate format; the pattern is fixed,
+        // so the index map is computed once.
+        for (unsigned int row = 0; row < sp.n_rows(); ++row)
+          for (auto it = sp.begin(row); it != sp.end(row); ++it)
+            {
+              upper.push_back(it->column() >= row);
+              if (it->column() >= row)
+                {
+                  irn.push_back(row + 1);
+                  jcn.push_back(it->column() + 1);
+                }
+            }
+        values.resize(irn.size());
+        id.n   = sp.n_rows();
+        id.nnz = irn.size();
+        id.irn = irn.data();
+        id.jcn = jcn.data();
+        id.a   = values.data();
+        call(1); // analysis
+        return true;
+      }
+
+      /// The factorization of the values in place (the caller checks INFOG(1)).
+      void
+      factorize()
+      {
+        // (delayed pivots of indefinite, saddle-point or nearly singular
+        // matrices can exceed the analysis' workspace: mumps_phases.h)
+        mumps_phases::factorize_enlarging_workspace(id, [&](const int job) { run(job); });
+      }
+
+      /**
+       * The first factorization of a pattern that cost over 4 times the
+       * flops its analysis estimated (pivots delayed up the tree: QAMD on
+       * the strip's 1D mesh with its six gauge rows delays 8 300 of 911
+       * pivots, 12.4 MFlop against 0.29 estimated) is made again with
+       * METIS's nested dissection of the sparse block, the border rows
+       * last (24 delayed, 0.31 MFlop), which replaces `current` where it at
+       * least halves the flops. Once per pattern; the inertia is the
+       * matrix's either way (solvers.bordered_ordering).
+       */
+      static void
+      check_ordering(std::unique_ptr<MumpsData> &current, const SparseMatrix<double> &A)
+      {
+        current->ordering_checked = true;
+        if (current->m.shared || std::getenv("COSMO_MUMPS_ORDERING") ||
+            !(current->id.rinfog[2] > 4 * current->id.rinfog[0]))
+          return;
+        auto border_last = std::make_unique<MumpsData>(false);
+        if (!border_last->analyse(A, 100, current->id.icntl[5] == 0))
+          return;
+        border_last->values = current->values;
+        border_last->factorize();
+        if (border_last->id.infog[0] >= 0 && border_last->id.rinfog[2] < 0.5 * current->id.rinfog[2])
+          {
+            border_last->band_kd          = current->band_kd;
+            border_last->ordering_checked = true;
+            current                       = std::move(border_last);
+          }
+      }
+
       /// One phase without the check (the factorization retries on -8, -9).
       void
       run(int job)
@@ -552,56 +645,6 @@ namespace cosmo
         }
 #ifdef COSMO_WITH_MUMPS
       const SparsityPattern &sp = A.get_sparsity_pattern();
-      // An instance analysed for A's pattern with an ordering (ICNTL(7); 100:
-      // METIS's nested dissection of the sparse block, the dense border
-      // rows last, a user ordering); null for 100 where there is no border.
-      const auto analysed_mumps = [&](const int ordering, const bool shared) -> std::unique_ptr<MumpsData> {
-        auto  data = std::make_unique<MumpsData>(shared);
-        auto &id   = data->id;
-        // Extra workspace: dense border rows make the fill estimate loose.
-        id.icntl[13] = 60;
-        id.icntl[6]  = ordering;
-        if (ordering == 100)
-          {
-            data->perm_in = border_last_ordering(sp);
-            if (data->perm_in.empty())
-              return nullptr;
-            id.perm_in  = data->perm_in.data();
-            id.icntl[6] = 1;
-          }
-        // No maximum weighted matching where the caller says the diagonal has
-        // no zero (set_nonzero_diagonal()) and the matrix analysed agrees
-        // (later matrices of the same pattern are not checked again: a zero
-        // there costs delayed pivots, not accuracy).
-        if (nonzero_diagonal)
-          {
-            bool zero_on_diagonal = false;
-            for (unsigned int row = 0; row < A.m() && !zero_on_diagonal; ++row)
-              zero_on_diagonal = A.diag_element(row) == 0;
-            if (!zero_on_diagonal)
-              id.icntl[5] = 0;
-          }
-        // The upper triangle in coordinate format; the pattern is fixed,
-        // so the index map is computed once.
-        for (unsigned int row = 0; row < sp.n_rows(); ++row)
-          for (auto it = sp.begin(row); it != sp.end(row); ++it)
-            {
-              data->upper.push_back(it->column() >= row);
-              if (it->column() >= row)
-                {
-                  data->irn.push_back(row + 1);
-                  data->jcn.push_back(it->column() + 1);
-                }
-            }
-        data->values.resize(data->irn.size());
-        id.n   = sp.n_rows();
-        id.nnz = data->irn.size();
-        id.irn = data->irn.data();
-        id.jcn = data->jcn.data();
-        id.a   = data->values.data();
-        data->call(1); // analysis
-        return data;
-      };
       if (!mumps || analysed_pattern != &sp || analysed_nnz != sp.n_nonzero_elements())
         {
           mumps.reset();
@@ -612,7 +655,8 @@ namespace cosmo
           int ordering = 6;
           if (const char *o = std::getenv("COSMO_MUMPS_ORDERING"))
             ordering = std::atoi(o);
-          mumps = analysed_mumps(ordering, shared);
+          mumps = std::make_unique<MumpsData>(shared);
+          mumps->analyse(A, ordering, nonzero_diagonal);
           analysed_pattern = &sp;
           analysed_nnz     = sp.n_nonzero_elements();
           mumps->band_kd   = mumps->m.shared ? -1 : useful_bandwidth(sp);
@@ -634,37 +678,12 @@ namespace cosmo
           if (mumps->upper[pos])
             mumps->values[k++] = it->value();
       }
-      // (delayed pivots of indefinite, saddle-point or nearly singular
-      // matrices can exceed the analysis' workspace: mumps_phases.h)
-      mumps_phases::factorize_enlarging_workspace(mumps->id, [&](const int job) { mumps->run(job); });
+      mumps->factorize();
       if (mumps->id.infog[0] < 0)
         mumps->check(2); // reports the error with its code
-      // The first factorization of a pattern that cost over 4 times the
-      // flops its analysis estimated (pivots delayed up the tree: QAMD on
-      // the strip's 1D mesh with its six gauge rows delays 8 300 of 911
-      // pivots, 12.4 MFlop against 0.29 estimated) is made again with
-      // METIS's nested dissection of the sparse block, the border rows
-      // last (24 delayed, 0.31 MFlop), which is kept where it at least
-      // halves the flops. Once per pattern; the inertia is the matrix's
-      // either way (solvers.bordered_ordering).
+      // (a pattern's first factorization: another ordering where pivots were delayed)
       if (!mumps->ordering_checked)
-        {
-          mumps->ordering_checked = true;
-          if (!mumps->m.shared && !std::getenv("COSMO_MUMPS_ORDERING") &&
-              mumps->id.rinfog[2] > 4 * mumps->id.rinfog[0])
-            if (auto border_last = analysed_mumps(100, false))
-              {
-                border_last->values = mumps->values;
-                mumps_phases::factorize_enlarging_workspace(border_last->id,
-                                                            [&](const int job) { border_last->run(job); });
-                if (border_last->id.infog[0] >= 0 && border_last->id.rinfog[2] < 0.5 * mumps->id.rinfog[2])
-                  {
-                    border_last->band_kd          = mumps->band_kd;
-                    border_last->ordering_checked = true;
-                    mumps                         = std::move(border_last);
-                  }
-              }
-        }
+        MumpsData::check_ordering(mumps, A);
       n_negative = mumps->id.infog[11];
       FactorizationMemory f;
       f.unknowns       = sp.n_rows();
