@@ -138,6 +138,24 @@ namespace
     {
       events.push_back(e);
     }
+    /// store_jacobian: the Hessian at U (if offer_stored_jacobians)
+    bool
+    store_jacobian(const Vector<double> &U, const unsigned int slot) override
+    {
+      if (!offer_stored_jacobians)
+        return false;
+      Vector<double> R(n);
+      stored[slot].reinit(n, n);
+      evaluate(U, lambda, R, stored[slot]);
+      return true;
+    }
+    void
+    stored_jacobian_vmult(const unsigned int slot, const Vector<double> &x, Vector<double> &y) const override
+    {
+      y.reinit(n);
+      stored[slot].vmult(y, x);
+    }
+    bool offer_stored_jacobians = false;
 
   protected:
     virtual void
@@ -150,6 +168,7 @@ namespace
     FullMatrix<double>       eigenvectors;
     int                      negative = 0;
     FullMatrix<double>       H_last;
+    FullMatrix<double>       stored[3];
   };
 
   /// The event was located by Newton on the augmented system, with at most 8
@@ -1157,6 +1176,165 @@ namespace
     }
   };
 
+  /// MovingPrestress with the axial unknown u = lambda + c lambda^2: the
+  /// lateral Hessian K - u h I is quadratic in the load only through the
+  /// path's curvature d2u = 2c.
+  class CurvedPrestress : public MovingPrestress
+  {
+  public:
+    CurvedPrestress(unsigned int n, double c)
+      : MovingPrestress(n)
+      , c(c)
+    {}
+    const double c;
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      MovingPrestress::evaluate(U, l + c * l * l, R, H);
+    }
+  };
+
+  /// Pairs of modes (k_i = 1 + 0.4 i) coupled at first order in the load
+  /// (b t, indefinite) and softened at second order (-c t^2), like the
+  /// twisted strip's: H_i(t) = [[k_i - c t^2, b t], [b t, k_i - c t^2]].
+  /// The linear model's singular loads k_i / b cluster; the pair is
+  /// singular where k_i - c t^2 = b t, t_i = (sqrt(b^2 + 4 c k_i) - b)/(2c).
+  class TwistPairs : public DenseProblem
+  {
+  public:
+    TwistPairs(unsigned int pairs, double b, double c)
+      : DenseProblem(2 * pairs)
+      , b(b)
+      , c(c)
+    {}
+    const double b, c;
+    double
+    critical(const unsigned int i) const
+    {
+      return (std::sqrt(b * b + 4 * c * (1 + 0.4 * i)) - b) / (2 * c);
+    }
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double t, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      H = 0;
+      for (unsigned int i = 0; 2 * i < n; ++i)
+        {
+          const unsigned int p = 2 * i, q = p + 1;
+          H(p, p) = H(q, q) = 1 + 0.4 * i - c * t * t;
+          H(p, q) = H(q, p) = b * t;
+          R[p]              = H(p, p) * U[p] + H(p, q) * U[q];
+          R[q]              = H(q, p) * U[p] + H(q, q) * U[q];
+        }
+    }
+  };
+
+  void
+  critical_estimate_second_order()
+  {
+    // The second-order estimate (solvers/critical_estimate.h) is exact
+    // where the Hessian along the path is quadratic in the load: through
+    // the load itself, through the path's curvature, and with the linear
+    // model's loads a cluster; by differences of residuals and from
+    // stored Jacobians. Its resolution: J2 by second differences over
+    // h = 1e-2 (1 + |lambda0|) of products, round-off ~1e-16 |J|/h^2 with
+    // stored Jacobians (~1e-12 relative here) and ~1e-16 |J| |x|/(eps h^2)
+    // of the internal forces by residuals at these trivial states (~1e-10);
+    // the Arnoldi run to 1e-10: tolerances 1e-6.
+    const unsigned int                n        = 40;
+    const double                      h        = 1. / n;
+    const double                      lambda_1 = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (h * h);
+    solvers::CriticalEstimateSettings qep;
+    qep.max_steps = 90;
+    qep.tolerance = 1e-10;
+    for (const bool stored : {false, true})
+      {
+        const std::string route = stored ? " (stored Jacobians)" : " (differences of residuals)";
+        {
+          const double   c = 0.5 / lambda_1, lambda0 = 0.3 * lambda_1;
+          QuadraticLoad  p(n, c);
+          Vector<double> U(n), dU(n), mask(n);
+          mask                     = 1.;
+          p.offer_stored_jacobians = stored;
+          p.set_load_parameter(lambda0);
+          p.setup_jacobian(U);
+          const auto e = solvers::estimate_first_critical_point_second_order(p, U, lambda0, dU, mask, 1., qep);
+          const double exact = (std::sqrt(1 + 4 * c * lambda_1) - 1) / (2 * c);
+          std::cout << "  quadratic load" << route << ": lambda " << e.lambda << " (exact " << exact << "), "
+                    << e.steps << " Arnoldi steps, " << e.residuals << " residuals, " << e.jacobians
+                    << " Jacobians\n";
+          check("quadratic load" + route + ": found, converged", e.found && e.converged);
+          check_close("quadratic load" + route + ": the critical load", e.lambda, exact, 1e-6);
+          check("quadratic load" + route + ": the route taken", stored ? e.jacobians == 3 : e.jacobians == 0);
+        }
+        {
+          const double    c = 0.3 / lambda_1;
+          CurvedPrestress p(n, c);
+          Vector<double>  U(n + 1), dU(n + 1), mask(n + 1);
+          mask                     = 1.;
+          p.offer_stored_jacobians = stored;
+          p.set_load_parameter(0.);
+          p.setup_jacobian(U);
+          dU[0]        = 1; // (du/dlambda at 0; the curvature 2c is the estimate's to find)
+          const auto e = solvers::estimate_first_critical_point_second_order(p, U, 0., dU, mask, 1., qep);
+          const double exact = (std::sqrt(1 + 4 * c * lambda_1) - 1) / (2 * c);
+          std::cout << "  curved prestress" << route << ": lambda " << e.lambda << " (exact " << exact << ")\n";
+          check("curved prestress" + route + ": found", e.found);
+          check_close("curved prestress" + route + ": the critical load", e.lambda, exact, 1e-6);
+          check_close("curved prestress" + route + ": the predicted state u = lambda + c lambda^2", e.U[0],
+                      exact + c * exact * exact, 1e-6);
+        }
+        {
+          TwistPairs     p(20, 5., 4.);
+          Vector<double> U(40), dU(40), mask(40);
+          mask                     = 1.;
+          p.offer_stored_jacobians = stored;
+          p.set_load_parameter(0.);
+          p.setup_jacobian(U);
+          const auto linear = solvers::estimate_first_critical_point(p, U, 0., dU, mask);
+          const auto e = solvers::estimate_first_critical_point_second_order(p, U, 0., dU, mask, linear.lambda, qep);
+          std::cout << "  twist pairs" << route << ": linear " << linear.lambda << ", next " << linear.next_lambda
+                    << "; second order " << e.lambda << " (exact " << p.critical(0) << "), next " << e.next_lambda
+                    << " (" << p.critical(1) << "), " << e.steps << " Arnoldi steps\n";
+          check("twist pairs" + route + ": the linear estimates a cluster",
+                linear.found && linear.next_lambda < 2 * linear.lambda);
+          // (J' the forward difference over delta = 1e-4: [[-c delta, b], [b,
+          // -c delta]], singular with J0 = I at 1/(b + c delta), not k_0/b)
+          check_close("twist pairs" + route + ": the linear estimate 1/(b + c delta)", linear.lambda,
+                      1. / (p.b + p.c * 1e-4), 1e-6);
+          check_close("twist pairs" + route + ": the first critical load", e.lambda, p.critical(0), 1e-6);
+          check_close("twist pairs" + route + ": the second", e.next_lambda, p.critical(1), 1e-6);
+          // the mode: J(t_0) v = 0, against |J(0)| |v| = (1 + 0.4 * 19) |v|
+          Vector<double> R(40), v = e.mode;
+          p.set_load_parameter(e.lambda);
+          p.residual(v, R);
+          check("twist pairs" + route + ": the mode is the critical pair's (|J(t_0) v| <= 1e-6 |J| |v|)",
+                R.l2_norm() <= 1e-6 * 8.6 * v.l2_norm());
+        }
+      }
+    // The driver ('Stop at first event'): the linear estimates cluster, the
+    // second-order one is taken, and the branch point is located from it at
+    // t_0, to the location's tolerance, with no crossing below it.
+    TwistPairs p(20, 5., 4.);
+    p.offer_stored_jacobians = true;
+    auto t                   = settings(0, 2);
+    t.stop_at_first_event    = true;
+    solvers::ArclengthContinuation run(t, newton());
+    Vector<double>                 U(40);
+    const auto                     located = run.run(p, U, 0.);
+    std::cout << "  twist pairs, the driver: " << (located.empty() ? NAN : located[0].event.lambda) << " (exact "
+              << p.critical(0) << "), " << p.setups << " factorizations in all, " << p.history.size()
+              << " states\n";
+    check("twist pairs, the driver: one branch point",
+          located.size() == 1 && located[0].event.kind == solvers::BifurcationProblem::Event::Kind::branch_point);
+    if (located.size() == 1)
+      check_close("twist pairs, the driver: at t_0", located[0].event.lambda, p.critical(0), 0, 1e-10);
+    check("twist pairs, the driver: from the estimate (no state followed beyond the start)", p.history.size() == 1);
+  }
+
   void
   critical_estimate()
   {
@@ -1342,6 +1520,7 @@ main(int argc, char **argv)
                                    {"dq_point", dq_point}, {"newton_exact_jp", newton_exact_jp},
                                    {"newton_guess", newton_guess}, {"newton_chord", newton_chord},
                                    {"predictor_step", predictor_step},
-                                   {"critical_estimate", critical_estimate}, {"arclength_chord", arclength_chord}};
+                                   {"critical_estimate", critical_estimate}, {"arclength_chord", arclength_chord},
+                                   {"critical_estimate_second_order", critical_estimate_second_order}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

@@ -97,6 +97,17 @@ namespace cosmo
       return energy_assembly.assemble(U, load_parameter, &R, false);
     }
 
+    bool
+    PlateRodProblem::store_jacobian(const Vector<double> &U, const unsigned int slot)
+    {
+      AssertIndexRange(slot, stored_jacobians.size());
+      if (distributed_mesh)
+        return false;
+      io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+      return system.assemble_copy(
+        [&] { return energy_assembly.assemble(U, load_parameter, nullptr, true) == 0; }, stored_jacobians[slot]);
+    }
+
     int
     PlateRodProblem::setup_jacobian(const Vector<double> &U)
     {

@@ -27,6 +27,8 @@
 #include <cosmo/materials/rod_law.h>
 #include <cosmo/solvers/factorization_mark.h>
 
+#include <array>
+
 #include "assembly.h"
 #include "diagnostics.h"
 #include "discretization.h"
@@ -132,6 +134,20 @@ namespace cosmo
       {
         discretization.distribute(v);
       }
+      /// Jacobians beside the factorized one, for the estimate's products (serial mesh).
+      bool
+      store_jacobian(const Vector<double> &U, unsigned int slot) override;
+      void
+      stored_jacobian_vmult(unsigned int slot, const Vector<double> &x, Vector<double> &y) const override
+      {
+        system.vmult(y, x, {}, stored_jacobians[slot]);
+      }
+      void
+      release_stored_jacobians() override
+      {
+        for (auto &copy : stored_jacobians)
+          copy.clear();
+      }
       /// Full disc: (v + S v)/2 with S the reflection y -> -y (sector: false).
       bool
       project_to_fixed_point_space(Vector<double> &v) const override
@@ -235,6 +251,8 @@ namespace cosmo
       /// The state of the last factorization; with_last: converged_step
       /// reports with it (a continued critical point).
       solvers::FactorizationMark   factorization;
+      /// store_jacobian()'s copies
+      std::array<assembly::BorderedSystem::AssembledBlocks, 3> stored_jacobians;
       /// The energy's assembly into `system`, with what its last assemblies
       /// found (cleared by parse_parameters and setup_system, which change
       /// what R depends on).

@@ -98,36 +98,82 @@ namespace cosmo
           schur(i, j) = border_block(i, j) - border_columns[i] * sensitivities[j];
     }
 
+    namespace
+    {
+      /// dst = [[A, B], [B^T, E]] src, rows of prescribed border unknowns the identity.
+      void
+      bordered_vmult(const SparseMatrix<double> &       A,
+                     const std::vector<Vector<double>> &B,
+                     const FullMatrix<double> &         E,
+                     Vector<double> &                   dst,
+                     const Vector<double> &             src,
+                     const std::vector<bool> &          free)
+      {
+        const unsigned int ni = A.m(), nb = B.size();
+        AssertDimension(src.size(), ni + nb);
+        Vector<double> src_in(ni), dst_in(ni);
+        for (unsigned int i = 0; i < ni; ++i)
+          src_in[i] = src[i];
+        A.vmult(dst_in, src_in);
+        dst.reinit(ni + nb);
+        for (unsigned int k = 0; k < nb; ++k)
+          for (unsigned int i = 0; i < ni; ++i)
+            dst_in[i] += B[k][i] * src[ni + k];
+        for (unsigned int i = 0; i < ni; ++i)
+          dst[i] = dst_in[i];
+        for (unsigned int k = 0; k < nb; ++k)
+          {
+            if (!free[k])
+              {
+                dst[ni + k] = src[ni + k];
+                continue;
+              }
+            double r = B[k] * src_in;
+            for (unsigned int l = 0; l < nb; ++l)
+              r += E(k, l) * src[ni + l];
+            dst[ni + k] = r;
+          }
+      }
+    } // namespace
+
     void
     BorderedSystem::vmult(Vector<double> &         dst,
                           const Vector<double> &   src,
                           const std::vector<bool> &free) const
     {
-      const unsigned int ni = n_inner(), nb = n_border();
-      AssertDimension(src.size(), ni + nb);
       AssertThrow(!distributed(), ExcMessage("BorderedSystem::vmult of a distributed A"));
-      Vector<double> src_in(ni), dst_in(ni);
-      for (unsigned int i = 0; i < ni; ++i)
-        src_in[i] = src[i];
-      matrix.vmult(dst_in, src_in);
-      dst.reinit(ni + nb);
-      for (unsigned int k = 0; k < nb; ++k)
-        for (unsigned int i = 0; i < ni; ++i)
-          dst_in[i] += border_columns[k][i] * src[ni + k];
-      for (unsigned int i = 0; i < ni; ++i)
-        dst[i] = dst_in[i];
-      for (unsigned int k = 0; k < nb; ++k)
-        {
-          if (!free[k])
-            {
-              dst[ni + k] = src[ni + k];
-              continue;
-            }
-          double r = border_columns[k] * src_in;
-          for (unsigned int l = 0; l < nb; ++l)
-            r += border_block(k, l) * src[ni + l];
-          dst[ni + k] = r;
-        }
+      bordered_vmult(matrix, border_columns, border_block, dst, src, free);
+    }
+
+    void
+    BorderedSystem::vmult(Vector<double> &         dst,
+                          const Vector<double> &   src,
+                          const std::vector<bool> &free,
+                          const AssembledBlocks &  copy) const
+    {
+      bordered_vmult(copy.A, copy.B, copy.E, dst, src, free);
+    }
+
+    bool
+    BorderedSystem::assemble_copy(const std::function<bool()> &assemble, AssembledBlocks &copy)
+    {
+      if (distributed())
+        return false;
+      auto save = [this](AssembledBlocks &c) {
+        c.A.reinit(pattern);
+        c.A.copy_from(matrix);
+        c.B = border_columns;
+        c.E = border_block;
+      };
+      AssembledBlocks in_place;
+      save(in_place);
+      const bool assembled = assemble();
+      if (assembled)
+        save(copy);
+      matrix.copy_from(in_place.A);
+      border_columns = in_place.B;
+      border_block   = in_place.E;
+      return assembled;
     }
 
     void

@@ -196,6 +196,25 @@ namespace cosmo
       return 0;
     }
 
+    bool
+    ReducedRodProblem::store_jacobian(const Vector<double> &U, const unsigned int slot)
+    {
+      AssertIndexRange(slot, stored_jacobians.size());
+      io::PhaseTimer::Scope scope(timer, "assembly (Jacobian)");
+      // (assembling clears the mark; the factorization stays the marked one's)
+      const solvers::FactorizationMark mark = factorization;
+      const bool stored = system->assemble_copy([&] { return assemble(U, nullptr, true) == 0; },
+                                                stored_jacobians[slot]);
+      factorization = mark;
+      return stored;
+    }
+
+    void
+    ReducedRodProblem::stored_jacobian_vmult(const unsigned int slot, const Vector<double> &x, Vector<double> &y) const
+    {
+      system->vmult(y, x, std::vector<bool>(strain_is_free.begin(), strain_is_free.end()), stored_jacobians[slot]);
+    }
+
     int
     ReducedRodProblem::solve_with_jacobian(const Vector<double> &rhs, Vector<double> &dst)
     {

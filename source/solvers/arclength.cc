@@ -1699,6 +1699,82 @@ namespace cosmo
 
     namespace
     {
+      /**
+       * The first critical point's estimate from (U, lambda) with the tangent
+       * dU (critical_estimate.h, doc/theory-continuation.md 10), said:
+       * the linear model's, or where that finds none or a cluster (the
+       * next critical load estimated less than twice as far as the first:
+       * the linear model does not single out the first mode) the
+       * second-order model's. Returns whether the second-order model made
+       * it; `estimate.found` false, with `why`, where there is none within
+       * `lambda_max`.
+       */
+      bool
+      make_estimate(BifurcationProblem &                             problem,
+                    const Vector<double> &                           U,
+                    const double                                     lambda,
+                    const Vector<double> &                           dU,
+                    const Vector<double> &                           mask,
+                    const double                                     lambda_max,
+                    const std::function<void(const std::string &)> & say,
+                    CriticalEstimate &                               estimate,
+                    std::string &                                    why)
+      {
+        auto report = [&](const char *model, const char *method) {
+          std::ostringstream m;
+          m << std::setprecision(10) << "  first critical point estimated at t = " << estimate.lambda << " from t = "
+            << lambda << " (" << model << ": " << estimate.steps << ' ' << method << " steps, " << estimate.solves
+            << " solves, " << estimate.jacobians << " Jacobians, " << estimate.residuals
+            << " residuals; the next at t = " << estimate.next_lambda << ")";
+          say(m.str());
+        };
+        // (the Lanczos run stops where the separation test below is
+        // certain to fail: the twisted strip's 15 steps become 7)
+        CriticalEstimateSettings lanczos;
+        lanczos.cluster_factor = 2;
+        estimate = estimate_first_critical_point(problem, U, lambda, dU, mask, lanczos);
+        if (estimate.found)
+          report("linear", "Lanczos");
+        // The cluster: a twisted strip's or section's modes, which the
+        // path's nonlinearity reorders (linear estimates of 0.069 and 0.079
+        // for a threshold at 0.608); the plate's flat states separate them
+        // 3-7x. A double eigenvalue (a symmetric mode pair) is not one. The
+        // strip's Hessian depends on the twist to second order: the
+        // second-order model puts the threshold 3 % off.
+        // COSMO_ESTIMATE_FIRST_ORDER: the linear model alone, to measure
+        // against (benchmarks/).
+        const double first = estimate.lambda - lambda, second = estimate.next_lambda - lambda;
+        const bool   cluster = estimate.found && !(std::abs(second - first) <= 1e-6 * first) && second < 2 * first;
+        const bool   second_order = (cluster || !estimate.found) && !std::getenv("COSMO_ESTIMATE_FIRST_ORDER");
+        if (second_order)
+          {
+            const double range = lambda_max - lambda;
+            CriticalEstimateSettings arnoldi;
+            arnoldi.max_steps = 60;
+            arnoldi.tolerance = 1e-4;
+            estimate          = estimate_first_critical_point_second_order(
+              problem, U, lambda, dU, mask, cluster ? first : std::isfinite(range) ? range : 1 + std::abs(lambda),
+              arnoldi);
+            if (estimate.found)
+              report("second order", "Arnoldi");
+          }
+        else if (cluster)
+          {
+            std::ostringstream w;
+            w << std::setprecision(6) << "the next critical point is estimated less than twice as far (t = "
+              << estimate.next_lambda << "): the linear model does not single out the first mode";
+            why              = w.str();
+            estimate.found = false;
+            return false;
+          }
+        if (!estimate.found || estimate.lambda > lambda_max)
+          {
+            why            = estimate.found ? "estimated beyond the parameter range" : estimate.message;
+            estimate.found = false;
+          }
+        return second_order;
+      }
+
       /// The critical point from one estimate at (U, lambda) with the tangent dU
       /// = dU/dlambda there (the factorization in place is J(U, lambda)):
       /// Newton on the augmented system from the prediction, or where that
@@ -1725,39 +1801,12 @@ namespace cosmo
       {
         // COSMO_ESTIMATE_VIA_PATH: always converge the guess onto the path
         // first, to measure against (benchmarks/).
-        static const unsigned int direct_iterations = std::getenv("COSMO_ESTIMATE_VIA_PATH") ? 0 : 4;
+        static const bool via_path = std::getenv("COSMO_ESTIMATE_VIA_PATH") != nullptr;
         cp       = CriticalPoint(); // (this attempt's: none until located)
         on_path.reinit(0);          // (set once the guess has converged onto the path)
-        // (the Lanczos run stops where the separation test below is
-        // certain to fail: the twisted strip's 15 steps become 7)
-        CriticalEstimateSettings lanczos;
-        lanczos.cluster_factor = 2;
-        estimate = estimate_first_critical_point(problem, U, lambda, dU, mask, lanczos);
-        if (!estimate.found || estimate.lambda > settings.lambda_max)
-          {
-            why = estimate.found ? "estimated beyond the parameter range" : estimate.message;
-            return false;
-          }
-        std::ostringstream m;
-        m << std::setprecision(10) << "  first critical point estimated at t = " << estimate.lambda << " from t = "
-          << lambda << " (" << estimate.steps << " Lanczos steps, " << estimate.residuals << " residuals, "
-          << estimate.solves << " solves; the next at t = " << estimate.next_lambda << ")";
-        say(m.str());
-        // A second critical load estimated less than twice as far as the
-        // first: the linear model does not single out the first mode (a
-        // twisted strip's or section's cluster of modes, which the path's
-        // nonlinearity reorders: estimates of 0.0345 and 0.039 for a
-        // threshold at 0.304). The plate's flat states separate them 3-7x.
-        // A double eigenvalue (a symmetric mode pair) is not a cluster.
-        const double first = estimate.lambda - lambda, second = estimate.next_lambda - lambda;
-        if (!(std::abs(second - first) <= 1e-6 * first) && second < 2 * first)
-          {
-            std::ostringstream w;
-            w << std::setprecision(6) << "the next critical point is estimated less than twice as far (t = "
-              << estimate.next_lambda << "): the linear model does not single out the first mode";
-            why = w.str();
-            return false;
-          }
+        const bool second_order = make_estimate(problem, U, lambda, dU, mask, settings.lambda_max, say, estimate, why);
+        if (!estimate.found)
+          return false;
         Vector<double> dR(U.size());
         problem.set_load_parameter(lambda);
         problem.load_derivative(U, lambda, dR);
@@ -1766,6 +1815,12 @@ namespace cosmo
         fold = dR_norm > 0 && std::abs(masked_dot(estimate.mode, dR, mask)) > 1e-4 * dR_norm * v_norm;
         CriticalPointSettings location;
         location.resolution_fraction = 0.1;
+        // Newton on the augmented system stays within twice the estimate's
+        // distance: an iterate beyond has run away (the seed pod's
+        // second-order estimate, 12 % off with another mode, sent it to
+        // t = 198) and costs one factorization, not the iteration cap.
+        location.lambda_lo = lambda - (estimate.lambda - lambda);
+        location.lambda_hi = lambda + 2 * (estimate.lambda - lambda);
         // Newton on the augmented system straight from the prediction: it
         // converges the state onto the path and the load together, which
         // saves the 1-2 factorizations of converging onto the path at the
@@ -1773,10 +1828,15 @@ namespace cosmo
         // iterations locate it to its resolution). A few only: where they
         // do not converge (a path far from linear in the load), the guess
         // is converged onto the path and located from there, as below.
-        if (direct_iterations > 0)
+        // The second-order estimate's guess takes six (its first step
+        // overshoots: the twisted strip's and section's test functions are
+        // far from linear over the 3 % and 0.7 % they are off) and is not
+        // converged onto the path where they fail: its model has nothing
+        // better to offer (the seed pod's state did not converge there).
+        if (!via_path)
           {
-            location.max_iterations = direct_iterations;
-            cp = locate_critical_point(problem, fold, estimate.U, estimate.lambda, estimate.mode, mask, dU, 1.,
+            location.max_iterations = second_order ? 6 : 4;
+            cp = locate_critical_point(problem, fold, estimate.U, estimate.lambda, estimate.mode, mask, estimate.tangent, 1.,
                                        false, std::abs(estimate.lambda - lambda0), newton.relative_tolerance,
                                        location);
             if (cp.converged)
@@ -1785,6 +1845,12 @@ namespace cosmo
                 return true;
               }
             spent += cp.factorizations;
+            if (second_order)
+              {
+                why = "from the prediction: " + cp.message;
+                cp  = CriticalPoint();
+                return false;
+              }
             say("  from the prediction: " + cp.message + "; converging the guess onto the path");
             cp = CriticalPoint();
           }
@@ -1806,7 +1872,7 @@ namespace cosmo
           }
         location.max_iterations = 6; // (a distant guess: re-estimate rather than wander)
         // (a branch point's system takes the tangent for the branch's direction)
-        cp = locate_critical_point(problem, fold, on_path, estimate.lambda, estimate.mode, mask, dU, 1., false,
+        cp = locate_critical_point(problem, fold, on_path, estimate.lambda, estimate.mode, mask, estimate.tangent, 1., false,
                                    std::abs(estimate.lambda - lambda0), newton.relative_tolerance, location);
         if (!cp.converged)
           why = "Newton on the augmented system: " + cp.message;

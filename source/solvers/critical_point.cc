@@ -322,6 +322,9 @@ namespace cosmo
                                          -1.;
           if (!std::isfinite(d_lambda) || !std::isfinite(d_mu))
             return fail("the Newton update is not finite");
+          if (!(lambda + d_lambda >= settings.lambda_lo && lambda + d_lambda <= settings.lambda_hi))
+            return fail("an iterate left the load window [" + std::to_string(settings.lambda_lo) + ", " +
+                        std::to_string(settings.lambda_hi) + "] (t = " + std::to_string(lambda + d_lambda) + ")");
           // dU = -a - d_lambda z - d_mu y
           last_dU = a;
           last_dU *= -1.;

@@ -13,6 +13,7 @@
 #include <cosmo/solvers/replicated_vector.h>
 #include <cosmo/solvers/sparse_direct.h>
 
+#include <functional>
 #include <memory>
 
 #include <vector>
@@ -119,6 +120,38 @@ namespace cosmo
        */
       void
       vmult(Vector<double> &dst, const Vector<double> &src, const std::vector<bool> &free) const;
+
+      /// The assembled blocks A (serial), B and E: J at some state.
+      struct AssembledBlocks
+      {
+        SparseMatrix<double>        A;
+        std::vector<Vector<double>> B;
+        FullMatrix<double>          E;
+        void
+        clear()
+        {
+          A.clear();
+          B.clear();
+          E.reinit(0, 0);
+        }
+      };
+
+      /**
+       * Call `assemble` (which fills A, B and E here) and move what it
+       * assembled into `copy`, the blocks in place restored: the Jacobian at
+       * another state beside the factorized one, for products (the
+       * critical-point estimate's Hessians along the path). False on a
+       * distributed A, or if `assemble` returns false (`copy` is then void).
+       */
+      bool
+      assemble_copy(const std::function<bool()> &assemble, AssembledBlocks &copy);
+
+      /// dst = J src with a copy's blocks (as vmult above).
+      void
+      vmult(Vector<double> &           dst,
+            const Vector<double> &     src,
+            const std::vector<bool> &  free,
+            const AssembledBlocks &    copy) const;
 
       /// S = E - B^T A^-1 B, the Schur complement on the border (condensed stiffness).
       const FullMatrix<double> &

@@ -125,6 +125,17 @@ namespace cosmo
       /// |v|.|J||v| with the assembled Hessian (block A) (resolution of a located event).
       double
       jacobian_abs_form(const Vector<double> &v) const override;
+      /// Jacobians beside the factorized one, for the estimate's products (serial).
+      bool
+      store_jacobian(const Vector<double> &U, unsigned int slot) override;
+      void
+      stored_jacobian_vmult(unsigned int slot, const Vector<double> &x, Vector<double> &y) const override;
+      void
+      release_stored_jacobians() override
+      {
+        for (auto &copy : stored_jacobians)
+          copy.clear();
+      }
       /// Chord steps on the path: the weighted residual sees every equation.
       bool
       chord_steps_on_path() const override
@@ -212,6 +223,8 @@ namespace cosmo
       /// The state at which the system was last factorized (condensed_state()
       /// and Newton's first Jacobian reuse that factorization when asked at it).
       solvers::FactorizationMark factorization;
+      /// store_jacobian()'s copies
+      std::array<BorderedSystem::AssembledBlocks, 3> stored_jacobians;
       /**
        * Checkpoints (io/checkpoint.h), set by the application's run(): how
        * to write one, and the one to resume from (nullptr: start afresh).

@@ -116,6 +116,30 @@ namespace cosmo
       }
 
       /**
+       * Products with the Jacobian at states beside the factorized one, from
+       * assembled matrices: the critical-point estimate's Hessians along the
+       * path (critical_estimate.h), which otherwise cost two residuals a
+       * product, by differences. store_jacobian assembles J(U) at the
+       * current load into copy `slot` (0, 1 or 2) and returns true, the
+       * factorization and the assembled system left as they were; false:
+       * the problem has none (the default, a distributed mesh), and the
+       * estimate takes differences of residuals.
+       */
+      virtual bool
+      store_jacobian(const Vector<double> & /*U*/, unsigned int /*slot*/)
+      {
+        return false;
+      }
+      /// y = J x with copy `slot` (the rows the mode mask drops may be anything).
+      virtual void
+      stored_jacobian_vmult(unsigned int /*slot*/, const Vector<double> & /*x*/, Vector<double> & /*y*/) const
+      {}
+      /// Free the copies.
+      virtual void
+      release_stored_jacobians()
+      {}
+
+      /**
        * Whether the arclength corrector may converge this problem's states
        * by chord steps on the last state's factorization ('Arclength
        * continuation / Reuse factorization'): where its weighted residual

@@ -54,10 +54,13 @@ namespace cosmo
       double         lambda = 0; ///< lambda0 + tau
       Vector<double> U;          ///< U0 + tau dU, the tangent's prediction there
       Vector<double> mode;       ///< the Ritz vector, masked, unit max-norm
+      /// dU/dlambda there: dU, or dU + tau d2U from the second-order estimate
+      Vector<double> tangent;
       /// The next Ritz value's tau (the second critical load's estimate;
       /// +inf if none): how well separated the first is.
       double       next_lambda = 0;
-      unsigned int steps = 0, residuals = 0, solves = 0;
+      /// (jacobians: assembled for products, where the problem stores them)
+      unsigned int steps = 0, residuals = 0, jacobians = 0, solves = 0;
       bool         converged = false; ///< the Ritz residual below the tolerance
       /// Stopped early: the next critical load less than cluster_factor as far.
       bool         cluster = false;
@@ -81,6 +84,32 @@ namespace cosmo
                                   const Vector<double>           &dU,
                                   const Vector<double>           &mask,
                                   const CriticalEstimateSettings &settings = CriticalEstimateSettings());
+
+    /**
+     * The second-order estimate, where the linear one is far off (a
+     * twisted strip's Hessian depends on the twist to second order: its
+     * linear estimates cluster at a ninth of the threshold). Along the
+     * path to second order, U(tau) = U0 + tau dU + tau^2/2 d2U (d2U from
+     * one more solve with J0), the Hessian is J0 + tau J1 + tau^2 J2; the
+     * estimate is the smallest tau > 0 of the quadratic eigenproblem
+     * (J0 + tau J1 + tau^2 J2) v = 0. With mu = 1/tau it is the largest
+     * real mu > 0 of the linearization
+     *   [w; v] -> [-J0^-1 (J1 w + J2 v); w],  w = mu v,
+     * found by Arnoldi with J0's factorization: each step three residuals
+     * (the products J1 w + J2 v by differences of J(U(t)) along the path
+     * at t = -h, 0, h) and one solve. `tau_scale` sets the load's scale (the
+     * differences' step h = min(1e-2 (1 + |lambda0|), tau_scale/4), and
+     * the linearization's balance). As the linear estimate: J0 factorized
+     * and positive definite on the mask, the load left at lambda0.
+     */
+    CriticalEstimate
+    estimate_first_critical_point_second_order(BifurcationProblem             &problem,
+                                               const Vector<double>           &U0,
+                                               double                          lambda0,
+                                               const Vector<double>           &dU,
+                                               const Vector<double>           &mask,
+                                               double                          tau_scale,
+                                               const CriticalEstimateSettings &settings = CriticalEstimateSettings());
   } // namespace solvers
 } // namespace cosmo
 

@@ -6,6 +6,7 @@
 #include <cosmo/solvers/continuation.h>
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,11 @@ namespace cosmo
       /// perturbed at 1e-14, so iterating below R/10 chases round-off. 0: off
       /// (events keep the absolute tolerance alone).
       double resolution_fraction = 0;
+      /// Newton fails as soon as an iterate's load leaves [lambda_lo,
+      /// lambda_hi]: a guess it runs away from (an estimate's wrong mode)
+      /// costs one factorization, not max_iterations.
+      double lambda_lo = -std::numeric_limits<double>::infinity();
+      double lambda_hi = std::numeric_limits<double>::infinity();
     };
 
     /**
