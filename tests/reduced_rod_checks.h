@@ -50,6 +50,56 @@ namespace cosmo_test
     std::cout << "tangent vs FD of the residual, " << n << " unknowns\n";
     return d.linfty_norm() / Jv.linfty_norm();
   }
+
+  /**
+   * store_jacobian (solvers/arclength.h, BorderedSystem::assemble_copy): the
+   * Jacobian kept at another state U_other is the derivative of the
+   * residual there (against central differences: max |J v - FD| / max |J
+   * v| returned, resolution as tangent_fd_error's), and storing it leaves
+   * the factorization and the assembled blocks in place as they were: a
+   * solve and a product with them before and after agree bitwise
+   * (`unchanged`). The factorization in place is J(U_off)'s.
+   */
+  inline double
+  stored_jacobian_error(cosmo::assembly::ReducedRodProblem &p,
+                        const dealii::Vector<double> &      U_off,
+                        bool &                              unchanged)
+  {
+    using dealii::Vector;
+    const unsigned int n = p.n_unknowns();
+    const auto &       f = p.free_strains();
+    const std::vector<bool> free(f.begin(), f.end());
+    Vector<double>     v(n), b(n), x_before, x_after(n), Jv_before, Jv_after;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        v[i] = std::cos(0.9 * i);
+        b[i] = std::sin(0.4 * i + 0.1);
+      }
+    x_before.reinit(n);
+    p.solve_with_jacobian(b, x_before);
+    p.bordered_system().vmult(Jv_before, v, free);
+    Vector<double> U_other = U_off;
+    for (unsigned int i = 0; i < n; ++i)
+      U_other[i] += 0.02 * std::cos(0.3 * i);
+    AssertThrow(p.store_jacobian(U_other, 1), dealii::ExcInternalError());
+    p.solve_with_jacobian(b, x_after);
+    p.bordered_system().vmult(Jv_after, v, free);
+    unchanged = x_before == x_after && Jv_before == Jv_after;
+    Vector<double> Jv;
+    p.stored_jacobian_vmult(1, v, Jv);
+    p.release_stored_jacobians();
+    const double   h  = 1e-6;
+    Vector<double> Up = U_other, Um = U_other, Rp(n), Rm(n);
+    Up.add(h, v);
+    Um.add(-h, v);
+    p.residual(Up, Rp);
+    p.residual(Um, Rm);
+    Vector<double> d = Rp;
+    d -= Rm;
+    d /= 2 * h;
+    d -= Jv;
+    return d.linfty_norm() / Jv.linfty_norm();
+  }
 } // namespace cosmo_test
 
 #endif

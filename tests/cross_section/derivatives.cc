@@ -72,6 +72,13 @@ namespace
     }
     // Measured 3.5e-10.
     check_close("max |J v - FD| / max |J v|", error, 0, 0, 1e-8);
+    // A Jacobian stored at another state (the critical-point estimate's
+    // products): the derivative there, to the same resolution, and the
+    // factorization and blocks in place untouched.
+    bool         unchanged = false;
+    const double stored    = cosmo_test::stored_jacobian_error(*p, U, unchanged);
+    check_close("stored Jacobian at another state: max |J v - FD| / max |J v|", stored, 0, 0, 1e-8);
+    check("storing it leaves the factorization and the assembled blocks as they were (bitwise)", unchanged);
   }
 } // namespace
 
