@@ -1725,7 +1725,8 @@ namespace cosmo
           m << std::setprecision(10) << "  first critical point estimated at t = " << estimate.lambda << " from t = "
             << lambda << " (" << model << ": " << estimate.steps << ' ' << method << " steps, " << estimate.solves
             << " solves, " << estimate.jacobians << " Jacobians, " << estimate.residuals
-            << " residuals; the next at t = " << estimate.next_lambda << ")";
+            << " residuals; the next at t = " << estimate.next_lambda
+            << (estimate.converged ? "" : "; not converged: the guard is the inertia at the located point") << ")";
           say(m.str());
         };
         // (the Lanczos run stops where the separation test below is

@@ -179,7 +179,7 @@ namespace cosmo
           r2 += R[0];
           r2 /= h * h;
           d2U.reinit(U0.size());
-          problem.solve_with_jacobian(r2, d2U);
+          failed = failed || problem.solve_with_jacobian(r2, d2U) != 0;
           d2U *= -1.;
           for (int k : {0, 2})
             U[k].add(0.5 * h * h, d2U);
@@ -224,6 +224,9 @@ namespace cosmo
         }
 
         unsigned int residuals = 0, jacobians = 0;
+        /// A residual along the path could not be evaluated (an inadmissible
+        /// state within h of the start): the model is void.
+        bool failed = false;
 
       private:
         bool stored = false; ///< J(U(t_k)) assembled (else differences of residuals)
@@ -262,7 +265,7 @@ namespace cosmo
         {
           r.reinit(x.size());
           problem.set_load_parameter(lambda0 + (k - 1) * h);
-          problem.residual(x, r);
+          failed = failed || problem.residual(x, r) != 0;
           ++residuals;
         }
 
@@ -308,7 +311,8 @@ namespace cosmo
       double
       ritz_last_component(const FullMatrix<double> &H, const unsigned int m, const std::complex<double> theta)
       {
-        const double             a = theta.real() * (1 + 1e-10), c = theta.imag();
+        // (shifted off theta by 1e-10 |theta|: a purely imaginary theta too)
+        const double             a = theta.real() + 1e-10 * std::abs(theta), c = theta.imag();
         LAPACKFullMatrix<double> A(2 * m, 2 * m);
         for (unsigned int i = 0; i < m; ++i)
           {
@@ -319,7 +323,14 @@ namespace cosmo
             A(i, m + i) = c;
             A(m + i, i) = -c;
           }
-        A.compute_lu_factorization();
+        try
+          {
+            A.compute_lu_factorization();
+          }
+        catch (std::exception &)
+          {
+            return 0; // exactly singular: theta is an eigenvalue of H to round-off
+          }
         Vector<double> y(2 * m);
         for (unsigned int i = 0; i < 2 * m; ++i)
           y[i] = 1. + 0.1 * i / m;
@@ -332,15 +343,29 @@ namespace cosmo
       }
 
       /// The right eigenvector of the Hessenberg matrix H (m x m) for its
-      /// real eigenvalue nu: two steps of inverse iteration.
+      /// real eigenvalue nu: two steps of inverse iteration (the shift
+      /// 1e-10 of nu off it; 1e-8 where that is singular to the last bit;
+      /// empty if that is too).
       Vector<double>
       hessenberg_eigenvector(const FullMatrix<double> &H, const unsigned int m, const double nu)
       {
         LAPACKFullMatrix<double> A(m, m);
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int j = 0; j < m; ++j)
-            A(i, j) = H(i, j) - (i == j ? nu * (1 + 1e-10) : 0.);
-        A.compute_lu_factorization();
+        for (const double shift : {1e-10, 1e-8})
+          {
+            for (unsigned int i = 0; i < m; ++i)
+              for (unsigned int j = 0; j < m; ++j)
+                A(i, j) = H(i, j) - (i == j ? nu * (1 + shift) : 0.);
+            try
+              {
+                A.compute_lu_factorization();
+                break;
+              }
+            catch (std::exception &)
+              {
+                if (shift == 1e-8)
+                  return Vector<double>(); // (the caller: not converged)
+              }
+          }
         Vector<double> y(m);
         for (unsigned int i = 0; i < m; ++i)
           y[i] = 1. + 0.1 * i / m;
@@ -507,6 +532,8 @@ namespace cosmo
         {
           sw.equ(scale, W[j]);
           sv.equ(scale * scale, V[j]);
+          if (G.failed)
+            break;
           G.vmult(sw, sv, y);
           problem.solve_with_jacobian(y, w);
           ++out.solves;
@@ -534,7 +561,7 @@ namespace cosmo
               // not yet converged may still become a larger real mu: the
               // 135-cell strip stopped at its second root (0.892) 21 steps
               // before its first (0.756) emerged.
-              bool converged = b * std::abs(ritz[m - 1]) <= settings.tolerance * nu;
+              bool converged = ritz.size() == m && b * std::abs(ritz[m - 1]) <= settings.tolerance * nu;
               for (const auto &t : theta)
                 if (converged && std::abs(t) > nu * (1 + 1e-8))
                   converged = b * ritz_last_component(H, m, t) <= settings.tolerance * std::abs(t);
@@ -555,7 +582,12 @@ namespace cosmo
       out.residuals = G.residuals;
       out.jacobians = G.jacobians;
       problem.set_load_parameter(lambda0);
-      if (!(nu > 0))
+      if (G.failed)
+        {
+          out.message = "a residual along the path to second order cannot be evaluated";
+          return out;
+        }
+      if (!(nu > 0) || ritz.size() == 0)
         {
           out.message = "no real positive eigenvalue of the second-order model: the load does not destabilize";
           return out;
