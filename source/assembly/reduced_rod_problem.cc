@@ -247,6 +247,19 @@ namespace cosmo
     }
 
     void
+    ReducedRodProblem::stability_mask(Vector<double> &mask) const
+    {
+      // A free strain is an unknown of the energy like the field: the
+      // critical mode of a twisted section moves it, and the Hessian's
+      // coupling to it changes with the load. (Prescribed strains' rows fix
+      // them; the multipliers are not unknowns of the energy.)
+      mode_mask(mask);
+      for (unsigned int k = 0; k < n_strains; ++k)
+        if (strain_is_free[k])
+          mask[n_field + n_gauge + k] = 1;
+    }
+
+    void
     ReducedRodProblem::residual_weights(Vector<double> &w) const
     {
       // Every row dimensionless (see NewtonSettings): nodal forces ~ F/D

@@ -147,6 +147,12 @@ namespace cosmo
       mask = 1.;
     }
 
+    void
+    BifurcationProblem::stability_mask(Vector<double> &mask) const
+    {
+      mode_mask(mask);
+    }
+
     double
     event_resolution(const BifurcationProblem::Event &e)
     {
@@ -1753,7 +1759,7 @@ namespace cosmo
             const double range = lambda_max - lambda;
             CriticalEstimateSettings arnoldi;
             arnoldi.max_steps = 60;
-            arnoldi.tolerance = 1e-4;
+            arnoldi.tolerance = 1e-8;
             estimate          = estimate_first_critical_point_second_order(
               problem, U, lambda, dU, mask, cluster ? first : std::isfinite(range) ? range : 1 + std::abs(lambda),
               arnoldi);
@@ -1777,25 +1783,83 @@ namespace cosmo
         return second_order;
       }
 
+      /**
+       * Where Newton from a second-order estimate fails (its model 14-27 %
+       * off: the seed pod's and the section's twisted starts), a state on
+       * the path short of it to estimate again from: the series' state
+       * U + s dU + s^2/2 d2U (d2U = (tangent - dU)/tau, the estimate's
+       * own) at s = 0.7 tau, converged there by Newton. 0.7 stays below
+       * the critical load for estimates up to 43 % high, and leaves the
+       * next estimate about a fifth of the distance, where the series'
+       * third-order error is some hundred times smaller. `on_path` stays
+       * empty where Newton fails: the path is then followed.
+       */
+      void
+      converge_short_of_estimate(BifurcationProblem &                             problem,
+                                 const Vector<double> &                           U,
+                                 const double                                     lambda,
+                                 const Vector<double> &                           dU,
+                                 const NewtonSettings &                           newton,
+                                 const std::function<void(const std::string &)> & say,
+                                 const CriticalEstimate &                         estimate,
+                                 Vector<double> &                                 on_path,
+                                 double &                                         on_path_lambda,
+                                 unsigned int &                                   spent)
+      {
+        const double tau = estimate.lambda - lambda, s = 0.7 * tau;
+        unsigned int iterations = 0;
+        if (!(tau > 0) || estimate.tangent.size() != U.size())
+          return;
+        Vector<double> guess = U, d2U = estimate.tangent;
+        d2U -= dU;
+        guess.add(s, dU, 0.5 * s * s / tau, d2U);
+        try
+          {
+            problem.set_load_parameter(lambda + s);
+            // (a few iterations: where the guess is that far off, the path
+            // followed from the start is the cheaper way; the seed pod's
+            // took 25 and did not converge)
+            NewtonSettings capped = newton;
+            capped.max_iterations = std::min(newton.max_iterations, 8u);
+            const NewtonResult r  = newton_solve(problem, guess, capped);
+            spent += r.iterations - r.chord_steps;
+            iterations = r.iterations;
+          }
+        catch (NewtonFailure &f)
+          {
+            say(std::string("  the state short of the estimate does not converge: ") + f.what());
+            return;
+          }
+        on_path        = guess;
+        on_path_lambda = lambda + s;
+        std::ostringstream m;
+        m << std::setprecision(10) << "  converged onto the path at t = " << on_path_lambda
+          << ", short of the estimate, to estimate again from there (" << iterations << " Newton iterations)";
+        say(m.str());
+      }
+
       /// The critical point from one estimate at (U, lambda) with the tangent dU
       /// = dU/dlambda there (the factorization in place is J(U, lambda)):
       /// Newton on the augmented system from the prediction, or where that
       /// does not converge within a few iterations, from the guess converged
       /// onto the path at the estimated load. Returns false with `why` set if
       /// the estimate, its state or the location fails; `estimate` is kept.
-      /// `spent` counts the factorizations of a direct attempt that failed.
+      /// `spent` counts the factorizations besides the located Newton run's
+      /// (a direct attempt that failed, states converged onto the path).
       bool
       locate_from_estimate(BifurcationProblem &                             problem,
                            const Vector<double> &                           U,
                            const double                                     lambda,
                            const Vector<double> &                           dU,
                            const Vector<double> &                           mask,
+                           const Vector<double> &                           stability,
                            const ArclengthSettings &                        settings,
                            const NewtonSettings &                           newton,
                            const double                                     lambda0,
                            const std::function<void(const std::string &)> & say,
                            CriticalEstimate &                               estimate,
                            Vector<double> &                                 on_path,
+                           double &                                         on_path_lambda,
                            bool &                                           fold,
                            CriticalPoint &                                  cp,
                            unsigned int &                                   spent,
@@ -1806,9 +1870,12 @@ namespace cosmo
         static const bool via_path = std::getenv("COSMO_ESTIMATE_VIA_PATH") != nullptr;
         cp       = CriticalPoint(); // (this attempt's: none until located)
         on_path.reinit(0);          // (set once the guess has converged onto the path)
-        const bool second_order = make_estimate(problem, U, lambda, dU, mask, settings.lambda_max, say, estimate, why);
+        const bool second_order =
+          make_estimate(problem, U, lambda, dU, stability, settings.lambda_max, say, estimate, why);
         if (!estimate.found)
           return false;
+        // (the location's border and null vector live on the mode unknowns)
+        estimate.mode.scale(mask);
         Vector<double> dR(U.size());
         problem.set_load_parameter(lambda);
         problem.load_derivative(U, lambda, dR);
@@ -1817,12 +1884,14 @@ namespace cosmo
         fold = dR_norm > 0 && std::abs(masked_dot(estimate.mode, dR, mask)) > 1e-4 * dR_norm * v_norm;
         CriticalPointSettings location;
         location.resolution_fraction = 0.1;
-        // Newton on the augmented system stays within twice the estimate's
-        // distance: an iterate beyond has run away (the seed pod's
-        // second-order estimate, 16 % high with another mode, sent it to
-        // t = 239) and costs one factorization, not the iteration cap.
+        // Newton on the augmented system stays within four times the
+        // estimate's distance and the parameter range: an iterate beyond
+        // has run away (the seed pod's estimate without its free strains,
+        // with another mode, sent it to t = 239) and costs one
+        // factorization, not the iteration cap. (The seed pod's estimates
+        // are 2.5x low, and its first iterate lands at the critical load.)
         location.lambda_lo = lambda - (estimate.lambda - lambda);
-        location.lambda_hi = lambda + 2 * (estimate.lambda - lambda);
+        location.lambda_hi = std::min(settings.lambda_max, lambda + 4 * (estimate.lambda - lambda));
         // Newton on the augmented system straight from the prediction: it
         // converges the state onto the path and the load together, which
         // saves the 1-2 factorizations of converging onto the path at the
@@ -1851,6 +1920,7 @@ namespace cosmo
               {
                 why = "from the prediction: " + cp.message;
                 cp  = CriticalPoint();
+                converge_short_of_estimate(problem, U, lambda, dU, newton, say, estimate, on_path, on_path_lambda, spent);
                 return false;
               }
             say("  from the prediction: " + cp.message + "; converging the guess onto the path");
@@ -1864,8 +1934,10 @@ namespace cosmo
         try
           {
             problem.set_load_parameter(estimate.lambda);
-            newton_solve(problem, guess, newton);
-            on_path = guess;
+            const NewtonResult r = newton_solve(problem, guess, newton);
+            spent += r.iterations - r.chord_steps;
+            on_path        = guess;
+            on_path_lambda = estimate.lambda;
           }
         catch (NewtonFailure &f)
           {
@@ -1910,8 +1982,9 @@ namespace cosmo
       {
         if (!(tlambda > 0))
           return false;
-        Vector<double> U = U0, dU = tU, on_path, dR(U0.size());
+        Vector<double> U = U0, dU = tU, on_path, dR(U0.size()), stability;
         dU /= tlambda;
+        problem.stability_mask(stability);
         double           lambda = lambda0;
         CriticalEstimate estimate;
         CriticalPoint    cp;
@@ -1920,15 +1993,17 @@ namespace cosmo
         unsigned int     factorizations = 0;
         for (unsigned int attempt = 0;; ++attempt)
           {
-            const bool located = locate_from_estimate(problem, U, lambda, dU, mask, settings, newton, lambda0, say,
-                                                      estimate, on_path, fold, cp, factorizations, why);
+            double     on_path_lambda = estimate.lambda;
+            const bool located = locate_from_estimate(problem, U, lambda, dU, mask, stability, settings, newton, lambda0, say,
+                                                      estimate, on_path, on_path_lambda, fold, cp, factorizations,
+                                                      why);
             factorizations += cp.factorizations;
             if (located)
               break;
             // Again from the guess's state on the path, if it is stable there
             // (not if there was no estimate, or its state did not converge).
-            problem.set_load_parameter(estimate.lambda);
-            if (attempt == 3 || !estimate.found || estimate.lambda > settings.lambda_max ||
+            problem.set_load_parameter(on_path_lambda);
+            if (attempt == 3 || !estimate.found || on_path_lambda > settings.lambda_max ||
                 on_path.size() != U.size() || problem.setup_jacobian(on_path) != 0 ||
                 problem.n_negative_eigenvalues() != 0)
               {
@@ -1942,7 +2017,7 @@ namespace cosmo
               }
             ++factorizations;
             U      = on_path;
-            lambda = estimate.lambda;
+            lambda = on_path_lambda;
             problem.load_derivative(U, lambda, dR);
             problem.solve_with_jacobian(dR, dU);
             dU *= -1.;

@@ -144,6 +144,9 @@ namespace cosmo
       }
       void
       mode_mask(Vector<double> &mask) const override;
+      /// The field and the free strains: the energy is minimized over both.
+      void
+      stability_mask(Vector<double> &mask) const override;
 
       /// The path so far (load, Newton count, the records) into a checkpoint
       /// (solvers::PathCheckpoints) and back; an application adds what it writes.

@@ -80,6 +80,17 @@ namespace cosmo
       mode_mask(Vector<double> &mask) const;
 
       /**
+       * 1 for the unknowns whose Hessian the estimate of a critical point
+       * examines (critical_estimate.h): the mode unknowns, and those the
+       * energy is minimized over besides (a rod's free strains, which a
+       * twisted section's critical mode moves: left out, its estimate was
+       * 26 % high, in, 0.1 %). 0 for multipliers and for unknowns that
+       * constraints determine. Default: mode_mask().
+       */
+      virtual void
+      stability_mask(Vector<double> &mask) const;
+
+      /**
        * Complete a mode whose constrained unknowns the mask zeroed: set each
        * unknown that homogeneous constraints determine (u_s = sum_m w_m u_m)
        * from its masters. The driver calls it on every null vector it keeps
