@@ -279,14 +279,15 @@ namespace cosmo
       prm.declare_entry("First event by estimate", "true", Patterns::Bool(),
                         "With 'Stop at first event': from the stable start, estimate the first "
                         "critical load from one eigenproblem (the Hessian's rate along the "
-                        "path, Lanczos with the start's factorization: "
-                        "doc/theory-continuation.md 10) and locate it by Newton on the "
-                        "augmented system from there, instead of following the path to it. "
-                        "The inertia guards it (no other negative mode at the located point). "
-                        "Where the next critical load is estimated less than twice as far as "
-                        "the first (a cluster of modes the linear model does not order), or "
-                        "the location fails, the path is followed from the start. false: always "
-                        "follow the path.");
+                        "path, Lanczos with the start's factorization; where its loads "
+                        "cluster or its check at its prediction fails, a second-order model "
+                        "of the path and the Hessian: doc/theory-continuation.md 10) and "
+                        "locate it by Newton on the augmented system from there, instead of "
+                        "following the path to it; where that does not converge, from a "
+                        "state on the path short of the estimate. The inertia guards it (no "
+                        "other negative mode at the located point). Where the location "
+                        "fails, the path is followed from the start. false: always follow "
+                        "the path.");
       prm.declare_entry("Reuse factorization", "true", Patterns::Bool(),
                         "The corrector's Newton starts from the factorization of the last "
                         "converged state (made there for its stability count and tangent) "
@@ -1897,7 +1898,7 @@ namespace cosmo
         // A state converged at fixed load from a guess need not lie on the
         // path from the start (another branch, a snapped state): Newton's
         // correction must stay below half the series' step from the start
-        // (the section's: 1-5 %).
+        // (the section's: 0.16-0.20 of it).
         Vector<double> step = predicted, correction = guess;
         step -= U;
         correction -= predicted;
