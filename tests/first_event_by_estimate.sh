@@ -35,7 +35,7 @@ fail=0
 # from the prediction does not converge, which no study here needs).
 # separate: once more with 'Critical curve = false', every point from its own
 # start and all from the estimate: the section's later points, whose Newton
-# from the second-order estimate (5-7 % high) fails, are located from a state
+# from the second-order estimate (0.1-7.4 % high) fails, are located from a state
 # converged short of it (0.7 of the way) and estimated again from there.
 check_study() {
   local runner=$1 app=$2 prm=$3 ref=$4 expect=$5 name estimate points used
@@ -107,7 +107,11 @@ check_study run_plate_rod_example.sh plate_rod plate_rod/studies/critical_growth
 # The thickest Cosserat plates' linear models fail their check (defect 1.2e-2
 # and 2.7e-2 at the prediction, above 5e-3): the second-order model is solved
 # and the points still take at most the bounds above.
-defects=$(cat "$dir"/critical_growth_vs_thickness_cosserat-default/out/point-*/log.txt | grep -c "defect at its prediction")
+# (two on the machine measured; one exercises the route)
+defects=0
+for log in "$dir"/critical_growth_vs_thickness_cosserat-default/out/point-*/log.txt; do
+  grep -q "defect at its prediction" "$log" && grep -q "(second order:" "$log" && defects=$((defects + 1))
+done
 if [ "$defects" -ge 1 ]; then
   echo "  ok    critical_growth_vs_thickness_cosserat-default: $defects points from the second-order model (the linear model's defect)"
 else

@@ -23,9 +23,11 @@
 #    take the second-order estimate's products by differences of residuals
 #    (COSMO_ESTIMATE_BY_RESIDUALS=1 for the serial run; a distributed
 #    problem stores no Jacobian copies): so both locate the point from the
-#    same estimate, to round-off. (With stored Jacobians the serial estimate
-#    is another, 0.4707611 against 0.4707338, and Newton from it located
-#    the point 1.3e-12 = 2.4 resolutions away.)
+#    same estimate, to round-off. (With stored Jacobians, and the estimate's
+#    mode converged to 1e-4 as it then was, the serial estimate was another,
+#    0.4707611 against 0.4707338, and Newton from it located the point
+#    1.3e-12 = 2.4 resolutions away; the mode is converged to 1e-8 since,
+#    doc/theory-continuation.md 10.)
 # usage: mpi_distributed_section.sh <rod_cross_section> <scratch dir>
 set -uo pipefail
 exe=$(realpath "$1") dir=$2

@@ -372,7 +372,8 @@ namespace
   // linear model's estimate from a stable state d t_c short of the critical
   // twist t_c errs by O(d^2) (the Hessian's second derivative along the
   // path): halving d divides the error by about 4. On the field alone (the
-  // strains held: another problem) the estimate does not converge to t_c.
+  // solves leave the strains free, but J' q drops the free strains' rate
+  // terms) the estimate does not converge to t_c.
   void
   estimate_free_strains()
   {

@@ -1707,16 +1707,6 @@ namespace cosmo
     namespace
     {
       /**
-       * The first critical point's estimate from (U, lambda) with the tangent
-       * dU (critical_estimate.h, doc/theory-continuation.md 10), said:
-       * the linear model's, or where that finds none or a cluster (the
-       * next critical load estimated less than twice as far as the first:
-       * the linear model does not single out the first mode) the
-       * second-order model's. Returns whether the second-order model made
-       * it; `estimate.found` false, with `why`, where there is none within
-       * `lambda_max`.
-       */
-      /**
        * The linear model's check on itself: v.J v at its prediction (U0 +
        * tau dU, lambda0 + tau) over v.J0 v, v its mode, by central
        * differences of the residual (4 residuals). Zero where the model is
@@ -1751,6 +1741,16 @@ namespace cosmo
         return at_prediction / at_start;
       }
 
+      /**
+       * The first critical point's estimate from (U, lambda) with the tangent
+       * dU (critical_estimate.h, doc/theory-continuation.md 10), said:
+       * the linear model's, or where that finds none or a cluster (the
+       * next critical load estimated less than twice as far as the first:
+       * the linear model does not single out the first mode) or fails its
+       * check (linear_model_defect() above 5e-3) the second-order model's.
+       * Returns whether the second-order model made it; `estimate.found`
+       * false, with `why`, where there is none within `lambda_max`.
+       */
       bool
       make_estimate(BifurcationProblem &                             problem,
                     const Vector<double> &                           U,
@@ -1799,7 +1799,8 @@ namespace cosmo
         const double defect = (estimate.found && !cluster && !first_order_only) ?
                                 linear_model_defect(problem, U, lambda, estimate, mask) :
                                 0.;
-        const bool curved = std::abs(defect) > 5e-3;
+        // (a defect that cannot be evaluated: the model unchecked, as failed)
+        const bool curved = !(std::abs(defect) <= 5e-3);
         if (curved)
           {
             std::ostringstream m;
@@ -1808,7 +1809,8 @@ namespace cosmo
             say(m.str());
           }
         const bool second_order = (cluster || !estimate.found || curved) && !first_order_only;
-        const CriticalEstimate linear = estimate;
+        const CriticalEstimate linear     = estimate;
+        bool                   fell_back = false;
         if (second_order)
           {
             const double range = lambda_max - lambda;
@@ -1824,8 +1826,8 @@ namespace cosmo
               {
                 // (the linear estimate still stands)
                 say("  the second-order model: " + estimate.message + "; the linear estimate");
-                estimate = linear;
-                return false;
+                estimate  = linear;
+                fell_back = true;
               }
           }
         else if (cluster)
@@ -1842,19 +1844,20 @@ namespace cosmo
             why            = estimate.found ? "estimated beyond the parameter range" : estimate.message;
             estimate.found = false;
           }
-        return second_order;
+        return second_order && !fell_back;
       }
 
       /**
-       * Where Newton from a second-order estimate fails (its model 14-27 %
-       * off: the seed pod's and the section's twisted starts), a state on
-       * the path short of it to estimate again from: the series' state
-       * U + s dU + s^2/2 d2U (d2U = (tangent - dU)/tau, the estimate's
-       * own) at s = 0.7 tau, converged there by Newton. 0.7 stays below
-       * the critical load for estimates up to 43 % high, and leaves the
-       * next estimate about a fifth of the distance, where the series'
-       * third-order error is some hundred times smaller. `on_path` stays
-       * empty where Newton fails: the path is then followed.
+       * Where Newton from a second-order estimate fails (the section's
+       * later growths: estimates 0.1-7.4 % high, at the two largest with a
+       * mode Arnoldi had not converged in its 60 steps), a state on the
+       * path short of it to estimate again from: the series' state U + s
+       * dU + s^2/2 d2U (d2U = (tangent - dU)/tau, the estimate's own) at s
+       * = 0.7 tau, converged there by Newton. 0.7 stays below the critical
+       * load for estimates up to 43 % high, and leaves the next estimate
+       * 25-30 % of the distance (the section's), where the series'
+       * third-order error is 40-60 times smaller. `on_path` stays empty
+       * where Newton fails: the path is then followed.
        */
       void
       converge_short_of_estimate(BifurcationProblem &                             problem,
@@ -1877,21 +1880,22 @@ namespace cosmo
         d2U -= dU;
         guess.add(s, dU, 0.5 * s * s / tau, d2U);
         const Vector<double> predicted = guess;
+        // (a few iterations: where the guess is that far off, the path
+        // followed from the start is the cheaper way; KINSOL's line search
+        // crept on the seed pod's natural shape, 25 iterations without
+        // converging)
+        NewtonSettings capped = newton;
+        capped.max_iterations = std::min(newton.max_iterations, 8u);
         try
           {
             problem.set_load_parameter(lambda + s);
-            // (a few iterations: where the guess is that far off, the path
-            // followed from the start is the cheaper way; the seed pod's
-            // took 25 and did not converge)
-            NewtonSettings capped = newton;
-            capped.max_iterations = std::min(newton.max_iterations, 8u);
-            const NewtonResult r  = newton_solve(problem, guess, capped);
+            const NewtonResult r = newton_solve(problem, guess, capped);
             spent += r.iterations - r.chord_steps;
             iterations = r.iterations;
           }
         catch (NewtonFailure &f)
           {
-            spent += 8;
+            spent += capped.max_iterations; // (at most: KINSOL may stop earlier)
             say(std::string("  the state short of the estimate does not converge: ") + f.what());
             return;
           }
@@ -1949,6 +1953,7 @@ namespace cosmo
         static const bool via_path = std::getenv("COSMO_ESTIMATE_VIA_PATH") != nullptr;
         cp       = CriticalPoint(); // (this attempt's: none until located)
         on_path.reinit(0);          // (set once the guess has converged onto the path)
+        on_path_lambda = NAN;       // (its load, set with it)
         const bool second_order =
           make_estimate(problem, U, lambda, dU, stability, settings.lambda_max, say, estimate, why);
         if (!estimate.found)
@@ -1998,7 +2003,8 @@ namespace cosmo
             if (second_order)
               {
                 why = "from the prediction: " + cp.message;
-                cp  = CriticalPoint();
+                say("  " + why);
+                cp = CriticalPoint();
                 converge_short_of_estimate(problem, U, lambda, dU, mask, newton, say, estimate, on_path, on_path_lambda,
                                            spent);
                 return false;
@@ -2073,7 +2079,7 @@ namespace cosmo
         unsigned int     factorizations = 0;
         for (unsigned int attempt = 0;; ++attempt)
           {
-            double     on_path_lambda = estimate.lambda;
+            double     on_path_lambda = NAN;
             const bool located = locate_from_estimate(problem, U, lambda, dU, mask, stability, settings, newton, lambda0, say,
                                                       estimate, on_path, on_path_lambda, fold, cp, factorizations,
                                                       why);
@@ -2082,10 +2088,14 @@ namespace cosmo
               break;
             // Again from the guess's state on the path, if it is stable there
             // (not if there was no estimate, or its state did not converge).
-            problem.set_load_parameter(on_path_lambda);
-            if (attempt == 3 || !estimate.found || on_path_lambda > settings.lambda_max ||
-                on_path.size() != U.size() || problem.setup_jacobian(on_path) != 0 ||
-                problem.n_negative_eigenvalues() != 0)
+            auto stable_on_path = [&]() {
+              if (attempt == 3 || !estimate.found || on_path.size() != U.size() ||
+                  !(on_path_lambda <= settings.lambda_max))
+                return false;
+              problem.set_load_parameter(on_path_lambda);
+              return problem.setup_jacobian(on_path) == 0 && problem.n_negative_eigenvalues() == 0;
+            };
+            if (!stable_on_path())
               {
                 say("  the estimated critical point: " + why + "; following the path");
                 problem.set_load_parameter(lambda0);
@@ -2110,6 +2120,7 @@ namespace cosmo
         e.lambda_lo         = lambda0;
         e.lambda_hi         = estimate.lambda;
         take_location(cp, record);
+        e.lambda_hi = std::max(e.lambda_hi, e.lambda); // (an estimate below the point)
         if (e.n_negative_after < 0 || other_negative_modes(e) != 0)
           {
             say("  the estimated critical point has " + std::to_string(e.n_negative_after) +

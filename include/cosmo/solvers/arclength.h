@@ -83,8 +83,8 @@ namespace cosmo
        * 1 for the unknowns whose Hessian the estimate of a critical point
        * examines (critical_estimate.h): the mode unknowns, and those the
        * energy is minimized over besides (a rod's free strains, which a
-       * twisted section's critical mode moves: left out, its estimate was
-       * 26 % high, in, 0.1 %). 0 for multipliers and for unknowns that
+       * twisted section's critical mode moves: at growth 1.4, left out, its
+       * estimate was 26 % high, in, 0.1 %). 0 for multipliers and for unknowns that
        * constraints determine. Default: mode_mask().
        */
       virtual void
