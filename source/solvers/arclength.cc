@@ -1822,6 +1822,24 @@ namespace cosmo
               (cluster || curved) ? first : std::isfinite(range) ? range : 1 + std::abs(lambda), arnoldi);
             if (estimate.found)
               report("second order", "Arnoldi");
+            // COSMO_ESTIMATE_REFINE: the estimate refined with the start's
+            // factorization before Newton on the augmented system (fewer
+            // factorizations, more assemblies: benchmarks/README.md)
+            static const bool refine = std::getenv("COSMO_ESTIMATE_REFINE") != nullptr;
+            if (estimate.found && refine)
+              {
+                const EstimateRefinement r = refine_critical_estimate(problem, U, lambda, dU, mask, estimate);
+                std::ostringstream       m;
+                m << std::setprecision(10) << "  refined with the start's factorization: ";
+                if (r.refined)
+                  m << "t = " << estimate.lambda;
+                else
+                  m << "not (" << r.message << ")";
+                m << " ("
+                  << r.evaluations << " secant steps, " << r.newton << " Newton steps with " << r.krylov << " GMRES steps, "
+                  << r.lanczos << " Lanczos steps, " << r.solves << " solves, " << r.jacobians << " Jacobians)";
+                say(m.str());
+              }
             else if (curved)
               {
                 // (the linear estimate still stands)

@@ -1,5 +1,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <cosmo/solvers/arclength.h>
 #include <cosmo/solvers/critical_estimate.h>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <complex>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -378,6 +381,125 @@ namespace cosmo
       }
     } // namespace
 
+    namespace
+    {
+      /// What pencil_lanczos() leaves: the Ritz values (ascending), their
+      /// vectors' coefficients S in the basis Q.
+      struct LanczosRun
+      {
+        std::vector<Vector<double>> Q;
+        Vector<double>              theta;
+        FullMatrix<double>          S;
+        unsigned int                steps = 0, solves = 0;
+        bool converged = false, cluster = false, definite = true;
+
+        /// the Ritz vector of the largest Ritz value, unit max-norm on the mask
+        Vector<double>
+        top_vector(const Vector<double> &mask) const
+        {
+          const unsigned int m = theta.size();
+          Vector<double>     y(Q[0].size());
+          for (unsigned int i = 0; i < m; ++i)
+            y.add(S(i, m - 1), Q[i]);
+          const double vmax = masked_max(y, mask);
+          if (vmax > 0)
+            y /= vmax;
+          return y;
+        }
+      };
+
+      /**
+       * Lanczos for the largest eigenvalues of K = J0^-1 B (B symmetric;
+       * J0 the factorization in place, positive definite on the mask) in
+       * the J0 inner product <x, y> = x.J0 y, from `start`: q_j with J0 q_j
+       * alongside (J0 K q = B q needs no product with J0). `apply(q, J0 q,
+       * B q)`. On the mode unknowns x.J0 y is the constrained Hessian's
+       * form: a solve's multipliers satisfy C x = 0, so x.(J0 x) = x_u.H x_u.
+       */
+      LanczosRun
+      pencil_lanczos(BifurcationProblem                                                                &problem,
+                     const Vector<double>                                                              &mask,
+                     const CriticalEstimateSettings                                                    &settings,
+                     const std::function<void(const Vector<double> &, const Vector<double> &, Vector<double> &)> &apply,
+                     const Vector<double>                                                              &start)
+      {
+        LanczosRun                 run;
+        auto                       &Q = run.Q;
+        std::vector<Vector<double>> JQ;
+        std::vector<double>         alpha, beta;
+        const unsigned int          n = start.size();
+        Vector<double>              w(n), Jw(n), none;
+        auto                        solve = [&](const Vector<double> &b, Vector<double> &x) {
+          problem.solve_with_jacobian(b, x);
+          x.scale(mask);
+          ++run.solves;
+        };
+        apply(start, none, Jw);
+        solve(Jw, w);
+        const double norm2 = masked_dot(w, Jw, mask);
+        if (!(norm2 > 0))
+          {
+            run.definite = false;
+            return run;
+          }
+        Q.push_back(scaled(w, 1. / std::sqrt(norm2)));
+        JQ.push_back(scaled(Jw, 1. / std::sqrt(norm2)));
+        for (unsigned int j = 0; j < settings.max_steps; ++j)
+          {
+            apply(Q[j], JQ[j], Jw); // w = K q_j: J0 w = B q_j
+            solve(Jw, w);
+            // Full reorthogonalization, twice (twice is enough: Kahan); the
+            // coefficient on q_j is alpha_j.
+            double a = 0;
+            for (unsigned int pass = 0; pass < 2; ++pass)
+              for (unsigned int i = 0; i <= j; ++i)
+                {
+                  const double c = masked_dot(w, JQ[i], mask);
+                  w.add(-c, Q[i]);
+                  Jw.add(-c, JQ[i]);
+                  if (i == j)
+                    a += c;
+                }
+            alpha.push_back(a);
+            const double b = std::sqrt(std::max(0., masked_dot(w, Jw, mask)));
+            tridiagonal_eigenpairs(alpha, beta, run.theta, run.S);
+            run.steps = j + 1;
+            // The largest theta's Ritz pair's residual is |K y - theta y| =
+            // b |s_j| in the J0 norm.
+            const auto        &theta = run.theta;
+            const unsigned int top   = theta.size() - 1;
+            const double       scale = std::max(std::abs(theta[0]), std::abs(theta[top]));
+            if (theta[top] > 0 && b * std::abs(run.S(j, top)) <= settings.tolerance * theta[top])
+              {
+                run.converged = true;
+                break;
+              }
+            // (K is self-adjoint in the J0 inner product: the k-th largest
+            // Ritz value is at most the k-th largest eigenvalue, and the top
+            // one lies within r of an eigenvalue)
+            if (settings.cluster_factor > 0 && top > 0 && theta[top] > 0)
+              {
+                const double r = b * std::abs(run.S(j, top)), second = theta[top - 1];
+                if (r <= 1e-2 * theta[top] && second > (theta[top] + r) / settings.cluster_factor &&
+                    second < (1 - 1e-3) * theta[top])
+                  {
+                    run.cluster = true;
+                    break;
+                  }
+              }
+            if (b <= 1e-14 * scale)
+              {
+                run.converged = true; // an invariant subspace: the Ritz values are exact
+                break;
+              }
+            beta.push_back(b);
+            Q.push_back(scaled(w, 1. / b));
+            JQ.push_back(scaled(Jw, 1. / b));
+          }
+        return run;
+      }
+    } // namespace
+
     CriticalEstimate
     estimate_first_critical_point(BifurcationProblem             &problem,
                                   const Vector<double>           &U0,
@@ -388,87 +510,28 @@ namespace cosmo
     {
       CriticalEstimate        out;
       LoadDerivativeOfHessian G(problem, U0, lambda0, dU, mask, settings);
-      const unsigned int      n     = U0.size();
-      auto                    solve = [&](const Vector<double> &b, Vector<double> &x) {
-        problem.solve_with_jacobian(b, x);
-        x.scale(mask);
-        ++out.solves;
-      };
-      // Lanczos for K = -J0^-1 J' in the J0 inner product <x, y> = x.J0 y:
-      // q_j with J0 q_j alongside (J0 K q = -J' q needs no product with J0).
-      // On the mode unknowns x.J0 y is the constrained Hessian's form: a
-      // solve's multipliers satisfy C x = 0, so x.(J0 x) = x_u.H x_u.
-      std::vector<Vector<double>>            Q, JQ;
-      std::vector<double>                    alpha, beta;
-      Vector<double>                         start(n), w(n), Jw(n), theta;
-      FullMatrix<double>                     S;
+      const unsigned int      n = U0.size();
+      // K = -J0^-1 J': its largest eigenvalue is 1/tau of the first critical load
+      Vector<double>                         start(n);
       std::mt19937                           random(20261206);
       std::uniform_real_distribution<double> uniform(-1., 1.);
       for (unsigned int i = 0; i < n; ++i)
         start[i] = mask[i] * uniform(random);
-      G.vmult(start, Jw);
-      solve(Jw, w);
-      double norm2 = masked_dot(w, Jw, mask);
-      if (!(norm2 > 0))
+      const LanczosRun run = pencil_lanczos(
+        problem, mask, settings,
+        [&](const Vector<double> &q, const Vector<double> &, Vector<double> &y) { G.vmult(q, y); }, start);
+      out.steps     = run.steps;
+      out.solves    = run.solves;
+      out.converged = run.converged;
+      out.cluster   = run.cluster;
+      out.residuals = G.residuals;
+      out.jacobians = G.jacobians;
+      if (!run.definite)
         {
           out.message = "J0 is not positive definite on the start vector (not a stable state)";
           return out;
         }
-      Q.push_back(scaled(w, 1. / std::sqrt(norm2)));
-      JQ.push_back(scaled(Jw, 1. / std::sqrt(norm2)));
-      for (unsigned int j = 0; j < settings.max_steps; ++j)
-        {
-          G.vmult(Q[j], Jw); // w = K q_j: J0 w = -J' q_j
-          solve(Jw, w);
-          // Full reorthogonalization, twice (twice is enough: Kahan); the
-          // coefficient on q_j is alpha_j.
-          double a = 0;
-          for (unsigned int pass = 0; pass < 2; ++pass)
-            for (unsigned int i = 0; i <= j; ++i)
-              {
-                const double c = masked_dot(w, JQ[i], mask);
-                w.add(-c, Q[i]);
-                Jw.add(-c, JQ[i]);
-                if (i == j)
-                  a += c;
-              }
-          alpha.push_back(a);
-          const double b = std::sqrt(std::max(0., masked_dot(w, Jw, mask)));
-          tridiagonal_eigenpairs(alpha, beta, theta, S);
-          out.steps = j + 1;
-          // The largest theta is 1/tau of the first critical load; its Ritz
-          // pair's residual is |K y - theta y| = b |s_j| in the J0 norm.
-          const unsigned int top   = theta.size() - 1;
-          const double       scale = std::max(std::abs(theta[0]), std::abs(theta[top]));
-          if (theta[top] > 0 && b * std::abs(S(j, top)) <= settings.tolerance * theta[top])
-            {
-              out.converged = true;
-              break;
-            }
-          // (K is self-adjoint in the J0 inner product: the k-th largest
-          // Ritz value is at most the k-th largest eigenvalue, and the top
-          // one lies within r of an eigenvalue)
-          if (settings.cluster_factor > 0 && top > 0 && theta[top] > 0)
-            {
-              const double r = b * std::abs(S(j, top)), second = theta[top - 1];
-              if (r <= 1e-2 * theta[top] && second > (theta[top] + r) / settings.cluster_factor &&
-                  second < (1 - 1e-3) * theta[top])
-                {
-                  out.cluster = true;
-                  break;
-                }
-            }
-          if (b <= 1e-14 * scale)
-            {
-              out.converged = true; // an invariant subspace: the Ritz values are exact
-              break;
-            }
-          beta.push_back(b);
-          Q.push_back(scaled(w, 1. / b));
-          JQ.push_back(scaled(Jw, 1. / b));
-        }
-      out.residuals = G.residuals;
-      out.jacobians = G.jacobians;
+      const Vector<double> &theta = run.theta;
       if (theta.size() == 0 || !(theta[theta.size() - 1] > 0))
         {
           out.message = "no positive eigenvalue of -J0^-1 J': the load does not destabilize to first order";
@@ -483,15 +546,11 @@ namespace cosmo
       out.U = U0;
       out.U.add(tau, dU);
       out.tangent = dU;
-      out.mode.reinit(n);
-      for (unsigned int i = 0; i < m; ++i)
-        out.mode.add(S(i, m - 1), Q[i]);
-      const double vmax = masked_max(out.mode, mask);
-      if (vmax > 0)
-        out.mode /= vmax;
+      out.mode    = run.top_vector(mask);
       problem.set_load_parameter(lambda0);
       return out;
     }
+
     CriticalEstimate
     estimate_first_critical_point_second_order(BifurcationProblem             &problem,
                                                const Vector<double>           &U0,
@@ -603,6 +662,231 @@ namespace cosmo
       const double vmax = masked_max(out.mode, mask);
       if (vmax > 0)
         out.mode /= vmax;
+      return out;
+    }
+  } // namespace solvers
+} // namespace cosmo
+
+namespace cosmo
+{
+  namespace solvers
+  {
+    namespace
+    {
+      /// y = J(U) x at the problem's current load: the Jacobian assembled at
+      /// U into `slot` where the problem stores Jacobians, else central
+      /// differences of the residual (two a product).
+      class JacobianAt
+      {
+      public:
+        JacobianAt(BifurcationProblem &problem, const unsigned int slot, const double state_step)
+            : problem(&problem), slot(slot), state_step(state_step)
+        {}
+
+        void
+        set(const Vector<double> &at)
+        {
+          U      = at;
+          stored = !by_residuals() && problem->store_jacobian(U, slot);
+          jacobians += stored ? 1 : 0;
+        }
+
+        void
+        vmult(Vector<double> &y, const Vector<double> &x) const
+        {
+          y.reinit(x.size());
+          if (stored)
+            {
+              problem->stored_jacobian_vmult(slot, x, y);
+              return;
+            }
+          const double xmax = x.linfty_norm();
+          if (!(xmax > 0))
+            return;
+          const double   eps = state_step / xmax;
+          Vector<double> Up(U), Um(U), Rm(x.size());
+          Up.add(eps, x);
+          Um.add(-eps, x);
+          if (problem->residual(Up, y) != 0 || problem->residual(Um, Rm) != 0)
+            failed = true;
+          y -= Rm;
+          y /= 2 * eps;
+          residuals += 2;
+        }
+
+        mutable unsigned int residuals = 0;
+        unsigned int         jacobians = 0;
+        mutable bool         failed    = false;
+
+      private:
+        BifurcationProblem *problem;
+        unsigned int        slot;
+        double              state_step;
+        Vector<double>      U;
+        bool                stored = false;
+      };
+
+      /// The start's factorization as GMRES's preconditioner.
+      struct StartFactorization
+      {
+        BifurcationProblem  *problem;
+        mutable unsigned int solves = 0;
+        void
+        vmult(Vector<double> &dst, const Vector<double> &src) const
+        {
+          problem->solve_with_jacobian(src, dst);
+          ++solves;
+        }
+      };
+    } // namespace
+
+    EstimateRefinement
+    refine_critical_estimate(BifurcationProblem   &problem,
+                             const Vector<double> &U0,
+                             const double          lambda0,
+                             const Vector<double> &dU,
+                             const Vector<double> &mask,
+                             CriticalEstimate     &estimate)
+    {
+      EstimateRefinement out;
+      const double       tau = estimate.lambda - lambda0;
+      if (!(tau > 0) || estimate.tangent.size() != U0.size())
+        {
+          out.message = "no estimate ahead to refine";
+          return out;
+        }
+      const unsigned int n     = U0.size();
+      const double       scale = problem.unknowns_scale(U0);
+      Vector<double>     d2U   = estimate.tangent;
+      d2U -= dU;
+      d2U /= tau;
+      JacobianAt         J0(problem, 0, 1e-6 * scale), J(problem, 1, 1e-6 * scale);
+      StartFactorization P{&problem};
+      problem.set_load_parameter(lambda0);
+      J0.set(U0);
+      // The state on the path at lambda0 + t: Newton from the series' state,
+      // each step by GMRES preconditioned with the start's factorization.
+      auto state = [&](const double t, Vector<double> &U) {
+        U = U0;
+        U.add(t, dU, 0.5 * t * t, d2U);
+        problem.set_load_parameter(lambda0 + t);
+        Vector<double> R(n), step(n);
+        double         last = INFINITY;
+        for (unsigned int k = 0; k < 8; ++k)
+          {
+            if (problem.residual(U, R) != 0)
+              return false;
+            ++out.residuals;
+            J.set(U);
+            R *= -1.;
+            step = 0.;
+            SolverControl                                   control(100, 1e-10 * R.l2_norm());
+            SolverGMRES<Vector<double>>::AdditionalData     data(50, true);
+            SolverGMRES<Vector<double>>                     gmres(control, data);
+            try
+              {
+                gmres.solve(J, step, R, P);
+              }
+            catch (std::exception &)
+              {
+                return false;
+              }
+            out.krylov += control.last_step();
+            U += step;
+            ++out.newton;
+            if (J.failed)
+              return false;
+            // Converged: the step at round-off, or no longer decreasing
+            // near it (next to the critical point the residual's round-off
+            // is amplified along the nearly singular mode)
+            const double size = masked_max(step, mask);
+            if (size <= 1e-10 * scale || (k > 0 && size <= 1e-6 * scale && size > 0.25 * last))
+              {
+                J.set(U);
+                return true;
+              }
+            last = size;
+          }
+        return false;
+      };
+      // The smallest eigenvalue of J(t) over J0 on the mask: 1 - the
+      // largest of J0^-1 (J0 - J(t)), by Lanczos from the last mode.
+      CriticalEstimateSettings lanczos;
+      lanczos.tolerance = 1e-10;
+      lanczos.max_steps = 40;
+      Vector<double> v    = estimate.mode, J0q(n), Jq(n);
+      auto           mu   = [&]() {
+        const LanczosRun run = pencil_lanczos(
+          problem, mask, lanczos,
+          [&](const Vector<double> &q, const Vector<double> &J0q_known, Vector<double> &y) {
+            if (J0q_known.size() == n)
+              J0q = J0q_known;
+            else
+              {
+                problem.set_load_parameter(lambda0);
+                J0.vmult(J0q, q);
+              }
+            problem.set_load_parameter(estimate.lambda);
+            J.vmult(Jq, q);
+            y = J0q;
+            y -= Jq;
+            y.scale(mask); // (the multipliers' rows: C q in both)
+          },
+          v);
+        out.solves += run.solves;
+        out.lanczos += run.steps;
+        if (!run.definite || run.theta.size() == 0)
+          return double(NAN);
+        v = run.top_vector(mask);
+        return 1 - run.theta[run.theta.size() - 1];
+      };
+      // Secant on mu(t) from mu(0) = 1 and the estimate.
+      double         ta = 0, ma = 1, tb = tau, mb;
+      Vector<double> U(n);
+      if (!state(tb, U))
+        {
+          out.message = "the state at the estimate does not converge";
+          problem.release_stored_jacobians();
+          problem.set_load_parameter(lambda0);
+          return out;
+        }
+      estimate.lambda = lambda0 + tb;
+      mb              = mu();
+      for (unsigned int it = 0; it < 10 && std::isfinite(mb); ++it)
+        {
+          ++out.evaluations;
+          const double tc = tb - mb * (tb - ta) / (mb - ma);
+          if (!(tc > 0 && tc < 4 * tau) || !state(tc, U))
+            {
+              break;
+            }
+          estimate.lambda = lambda0 + tc;
+          ta              = tb;
+          ma              = mb;
+          tb              = tc;
+          mb              = mu();
+          if (std::abs(tb - ta) <= 1e-9 * tau)
+            {
+              out.refined = std::isfinite(mb);
+              break;
+            }
+        }
+      problem.release_stored_jacobians();
+      problem.set_load_parameter(lambda0);
+      out.residuals += J.residuals + J0.residuals;
+      out.jacobians = J.jacobians + J0.jacobians;
+      out.solves += P.solves;
+      if (!out.refined)
+        {
+          estimate.lambda = lambda0 + tau;
+          out.message     = "the secant on the smallest eigenvalue does not converge";
+          return out;
+        }
+      estimate.lambda = lambda0 + tb;
+      estimate.U      = U;
+      estimate.mode   = v;
+      estimate.tangent = dU;
+      estimate.tangent.add(tb, d2U);
       return out;
     }
   } // namespace solvers

@@ -110,6 +110,37 @@ namespace cosmo
                                                const Vector<double>           &mask,
                                                double                          tau_scale,
                                                const CriticalEstimateSettings &settings = CriticalEstimateSettings());
+
+    /// What refine_critical_estimate() did.
+    struct EstimateRefinement
+    {
+      /// The estimate replaced by the refined one (else left as it was).
+      bool refined = false;
+      /// evaluations of the smallest eigenvalue (secant steps), Newton
+      /// steps on the state, GMRES steps, Lanczos steps, solves with the
+      /// start's factorization, residuals, Jacobians assembled
+      unsigned int evaluations = 0, newton = 0, krylov = 0, lanczos = 0, solves = 0, residuals = 0, jacobians = 0;
+      std::string  message;
+    };
+
+    /**
+     * A second-order estimate (critical_estimate.h) refined without a
+     * factorization: the path's state at lambda0 + t converged by Newton
+     * whose steps are GMRES preconditioned with the start's factorization
+     * J0 (the state's Jacobian near J0 away from a few modes), and the
+     * smallest eigenvalue mu(t) of the pencil (J(t), J0) on the mask by
+     * Lanczos with the same factorization; the secant on mu from mu(0) = 1
+     * and the estimate to the load where J(t) turns singular. `estimate`
+     * gets the load, the converged state, the mode and the series' tangent
+     * there where it converges; J0 must be the factorization in place.
+     */
+    EstimateRefinement
+    refine_critical_estimate(BifurcationProblem   &problem,
+                             const Vector<double> &U0,
+                             double                lambda0,
+                             const Vector<double> &dU,
+                             const Vector<double> &mask,
+                             CriticalEstimate     &estimate);
   } // namespace solvers
 } // namespace cosmo
 
