@@ -120,27 +120,28 @@ fi
 check_study run_example.sh strip strip/studies/seed_pod_critical_width.prm strip_seed_pod_critical_width.output first:4
 check_study run_example.sh rod_cross_section rod_cross_section/studies/critical_twist_vs_axial_growth.prm \
   critical_twist_vs_axial_growth.output first:8 separate
-# The second-order estimate refined with the start's factorization
-# (COSMO_ESTIMATE_REFINE=1, doc/theory-continuation.md 10): the twisted
-# strip's thresholds, every point from its own start, against the same
-# study unrefined: each located load within twice its resolution (measured
-# 0.09-0.25 resolutions), every point refined and located from the
-# estimate, in at most 3 factorizations (median; most 4: one Newton
-# iteration of margin) -- unrefined 6-7, the estimate 24 % high.
+# The second-order estimate refined with the start's factorization alone
+# ('Refine estimate = true', doc/theory-continuation.md 10): the twisted
+# strip's and the section's thresholds, every point from its own start,
+# against the same study unrefined: each located load within twice its
+# resolution (measured 0.01-0.3 resolutions), every point refined and located
+# from the estimate, in at most 3 factorizations (median; most 4: one
+# Newton iteration of margin) -- unrefined 6-7 (strip) and 7-12 (section).
 check_refined() {
-  local prm=strip/studies/critical_twist_vs_thickness.prm name mode
+  local app=$1 prm=$2 name mode base
+  base=$(basename "$prm" .prm)
   for mode in plain refined; do
-    name=$(basename "$prm" .prm)-$mode
+    name=$base-$mode
     sed -e "s|^\( *set Output directory *=\).*|\1 $dir/$name|" -e 's|^\( *set Critical curve *=\).*|\1 false|' \
+      -e "/^ *subsection Arclength continuation/a\\  set Refine estimate = $([ $mode = refined ] && echo true || echo false)" \
       "$here/../parameter_files/$prm" > "$dir/$name.prm"
-    if ! (cd "$here/.." && env $([ $mode = refined ] && echo COSMO_ESTIMATE_REFINE=1) \
-          "$build/strip" --quiet "$dir/$name.prm" > "$dir/$name.txt" 2>&1); then
+    if ! (cd "$here/.." && "$build/$app" --quiet "$dir/$name.prm" > "$dir/$name.txt" 2>&1); then
       echo "  FAIL  $name: the run"; tail -5 "$dir/$name.txt"; fail=1; return
     fi
   done
   local refined
-  refined=$(cat "$dir/$(basename "$prm" .prm)-refined"/point-*/log.txt | grep -c "refined with the start's factorization: t =")
-  if python3 - "$dir/$(basename "$prm" .prm)-plain/sweep.csv" "$dir/$(basename "$prm" .prm)-refined/sweep.csv" "$refined" <<'PY'
+  refined=$(cat "$dir/$base-refined"/point-*/log.txt | grep -c "refined with the start's factorization: t =")
+  if python3 - "$dir/$base-plain/sweep.csv" "$dir/$base-refined/sweep.csv" "$refined" <<'PY'
 import csv, statistics, sys
 a = list(csv.DictReader(open(sys.argv[1])))
 b = list(csv.DictReader(open(sys.argv[2])))
@@ -149,15 +150,16 @@ ok = len(a) == len(b) and refined == len(b) and all(int(r["converged"]) == 1 for
 worst = max(abs(float(x["t_critical"]) - float(y["t_critical"])) / float(x["t_resolution"]) for x, y in zip(a, b))
 f = [int(float(r["factorizations"])) for r in b]
 ok = ok and worst <= 2 and statistics.median(f) <= 3 and max(f) <= 4
-print("%d of %d points refined; largest difference %.2f resolutions (bound 2); factorizations %s, unrefined %s (bounds: median 3, most 4)"
+print("    %d of %d points refined; largest difference %.2f resolutions (bound 2); factorizations %s, unrefined %s (bounds: median 3, most 4)"
       % (refined, len(b), worst, f, [int(float(r["factorizations"])) for r in a]))
 sys.exit(0 if ok else 1)
 PY
   then
-    echo "  ok    critical_twist_vs_thickness refined"
+    echo "  ok    $base refined"
   else
-    echo "  FAIL  critical_twist_vs_thickness refined"; fail=1
+    echo "  FAIL  $base refined"; fail=1
   fi
 }
-check_refined
+check_refined strip strip/studies/critical_twist_vs_thickness.prm
+check_refined rod_cross_section rod_cross_section/studies/critical_twist_vs_axial_growth.prm
 exit $fail

@@ -288,6 +288,17 @@ namespace cosmo
                         "other negative mode at the located point). Where the location "
                         "fails, the path is followed from the start. false: always follow "
                         "the path.");
+      prm.declare_entry("Refine estimate", "false", Patterns::Bool(),
+                        "With 'First event by estimate': refine a second-order estimate "
+                        "before Newton on the augmented system, with the start's "
+                        "factorization alone: Newton on the smallest eigenvalue of the "
+                        "Hessian over the start's along the path, the states by GMRES and "
+                        "the eigenvalue by Lanczos, both preconditioned with that "
+                        "factorization (doc/theory-continuation.md 10). A twisted strip's "
+                        "or section's threshold then takes 3 factorizations instead of "
+                        "6-12, but hundreds of solves: on the suite's strips and sections, "
+                        "where a factorization costs a few solves, 1.8-1.9 times the time. "
+                        "For problems whose factorization dominates.");
       prm.declare_entry("Reuse factorization", "true", Patterns::Bool(),
                         "The corrector's Newton starts from the factorization of the last "
                         "converged state (made there for its stability count and tangent) "
@@ -328,6 +339,7 @@ namespace cosmo
       follow_mirror_images = prm.get_bool("Follow mirror images");
       stop_at_first_event  = prm.get_bool("Stop at first event");
       first_event_by_estimate = prm.get_bool("First event by estimate");
+      refine_estimate         = prm.get_bool("Refine estimate");
       reuse_factorization     = prm.get_bool("Reuse factorization");
       if (!(lambda_min < lambda_max))
         throw io::InputError("Arclength continuation", "Parameter range",
@@ -1758,6 +1770,7 @@ namespace cosmo
                     const Vector<double> &                           dU,
                     const Vector<double> &                           mask,
                     const double                                     lambda_max,
+                    const bool                                       refine,
                     const std::function<void(const std::string &)> & say,
                     CriticalEstimate &                               estimate,
                     std::string &                                    why)
@@ -1822,10 +1835,8 @@ namespace cosmo
               (cluster || curved) ? first : std::isfinite(range) ? range : 1 + std::abs(lambda), arnoldi);
             if (estimate.found)
               report("second order", "Arnoldi");
-            // COSMO_ESTIMATE_REFINE: the estimate refined with the start's
-            // factorization before Newton on the augmented system (fewer
-            // factorizations, more assemblies: benchmarks/README.md)
-            static const bool refine = std::getenv("COSMO_ESTIMATE_REFINE") != nullptr;
+            // (Newton on the augmented system from a refined estimate: two
+            // iterations, as from the plates' linear ones)
             if (estimate.found && refine)
               {
                 const EstimateRefinement r = refine_critical_estimate(problem, U, lambda, dU, mask, estimate);
@@ -1835,9 +1846,9 @@ namespace cosmo
                   m << "t = " << estimate.lambda;
                 else
                   m << "not (" << r.message << ")";
-                m << " ("
-                  << r.evaluations << " secant steps, " << r.newton << " Newton steps with " << r.krylov << " GMRES steps, "
-                  << r.lanczos << " Lanczos steps, " << r.solves << " solves, " << r.jacobians << " Jacobians)";
+                m << " (" << r.evaluations << " states, " << r.newton << " Newton steps with " << r.krylov
+                  << " GMRES steps, " << r.lanczos << " Lanczos steps, " << r.solves << " solves, " << r.jacobians
+                  << " Jacobians)";
                 say(m.str());
               }
             else if (curved)
@@ -1973,7 +1984,8 @@ namespace cosmo
         on_path.reinit(0);          // (set once the guess has converged onto the path)
         on_path_lambda = NAN;       // (its load, set with it)
         const bool second_order =
-          make_estimate(problem, U, lambda, dU, stability, settings.lambda_max, say, estimate, why);
+          make_estimate(problem, U, lambda, dU, stability, settings.lambda_max, settings.refine_estimate, say, estimate,
+                        why);
         if (!estimate.found)
           return false;
         // (the location's border and null vector live on the mode unknowns)

@@ -740,6 +740,222 @@ namespace cosmo
       };
     } // namespace
 
+    namespace
+    {
+      /**
+       * The refinement's pieces, with the start's factorization J0 in
+       * place throughout (refine_critical_estimate()): the path's state at
+       * a load, the smallest eigenvalue of the pencil (J, J0) there and its
+       * rate along the path.
+       */
+      class PencilAlongPath
+      {
+      public:
+        PencilAlongPath(BifurcationProblem   &problem,
+                        const Vector<double> &U0,
+                        const double          lambda0,
+                        const Vector<double> &mask,
+                        EstimateRefinement   &out)
+            : problem(problem), lambda0(lambda0), scale(problem.unknowns_scale(U0)), mask(mask), out(out),
+              J0(problem, 0, 1e-6 * scale), J(problem, 1, 1e-6 * scale), P{&problem}
+        {
+          problem.set_load_parameter(lambda0);
+          J0.set(U0);
+        }
+
+        ~PencilAlongPath()
+        {
+          problem.release_stored_jacobians();
+          problem.set_load_parameter(lambda0);
+          out.residuals += J.residuals + J0.residuals;
+          out.jacobians = J.jacobians + J0.jacobians;
+          out.solves += P.solves;
+        }
+
+        /// R(U, lambda0 + t) = 0 by Newton from U, each step by GMRES
+        /// preconditioned with J0 (whose spectrum over J's is clustered at
+        /// 1 but for the few modes the load softens); J then stored at U.
+        bool
+        converge_state(const double t, Vector<double> &U)
+        {
+          problem.set_load_parameter(lambda0 + t);
+          const unsigned int n = U.size();
+          Vector<double>     R(n), step(n);
+          double             last = INFINITY;
+          for (unsigned int k = 0; k < 8; ++k)
+            {
+              if (problem.residual(U, R) != 0)
+                return false;
+              ++out.residuals;
+              J.set(U);
+              R *= -1.;
+              step = 0.;
+              if (!gmres(R, step))
+                return false;
+              U += step;
+              ++out.newton;
+              if (J.failed)
+                return false;
+              // Converged: the step at round-off, or no longer decreasing
+              // near it (next to the critical point the residual's
+              // round-off is amplified along the nearly singular mode)
+              const double size = masked_max(step, mask);
+              if (size <= 1e-9 * scale || (k > 0 && size <= 1e-6 * scale && size > 0.25 * last))
+                {
+                  J.set(U);
+                  return true;
+                }
+              last = size;
+            }
+          return false;
+        }
+
+        /// The smallest eigenvalue mu of J(U) v = mu J0 v on the mask (J
+        /// stored at U by converge_state()): 1 minus the largest of J0^-1
+        /// (J0 - J), by Lanczos from v, which gets its eigenvector.
+        /// `tolerance` bounds the Ritz residual; mu's error is about its
+        /// square over the gap to the next eigenvalue. NaN if it fails.
+        double
+        smallest_eigenvalue(const double t, Vector<double> &v, const double tolerance)
+        {
+          CriticalEstimateSettings lanczos;
+          lanczos.tolerance = tolerance;
+          lanczos.max_steps = 40;
+          const unsigned int n = v.size();
+          Vector<double>     J0q(n), Jq(n);
+          const LanczosRun   run = pencil_lanczos(
+            problem, mask, lanczos,
+            [&](const Vector<double> &q, const Vector<double> &J0q_known, Vector<double> &y) {
+              if (J0q_known.size() == n)
+                J0q = J0q_known;
+              else
+                {
+                  problem.set_load_parameter(lambda0);
+                  J0.vmult(J0q, q);
+                }
+              problem.set_load_parameter(lambda0 + t);
+              J.vmult(Jq, q);
+              y = J0q;
+              y -= Jq;
+              y.scale(mask); // (the multipliers' rows: C q in both)
+            },
+            v);
+          out.solves += run.solves;
+          out.lanczos += run.steps;
+          if (!run.definite || run.theta.size() == 0 || !run.converged)
+            return NAN;
+          v = run.top_vector(mask);
+          return 1 - run.theta[run.theta.size() - 1];
+        }
+
+        /// The path's tangent at (U, lambda0 + t), J(U) stored: J T =
+        /// -dR/dlambda by GMRES from the guess T.
+        bool
+        tangent(const double t, const Vector<double> &U, Vector<double> &T)
+        {
+          Vector<double> dR(U.size());
+          problem.set_load_parameter(lambda0 + t);
+          if (problem.load_derivative(U, lambda0 + t, dR) != 0)
+            return false;
+          dR *= -1.;
+          return gmres(dR, T);
+        }
+
+        /**
+         * At a branch point the path's states and tangents have no
+         * component along the critical mode (the path keeps the symmetry
+         * the mode breaks), but next to it a solve amplifies the round-off
+         * along it by 1/mu: a drift of 1e-9-1e-7 that Newton on the
+         * augmented system then keeps (its border row pins the state's
+         * component along the mode), and which moved the section's located
+         * loads up to 68 resolutions. The solves' results lose their
+         * component along v (J0-orthogonally) from here on.
+         */
+        void
+        deflate(const Vector<double> &v)
+        {
+          deflation = v;
+          problem.complete_mode(deflation);
+          problem.set_load_parameter(lambda0);
+          J0.vmult(J0_deflation, deflation);
+          if (!(masked_dot(J0_deflation, deflation, mask) > 0))
+            deflation.reinit(0);
+        }
+
+        /// d mu/dt = v.J' v / v.J0 v along the tangent T at (U, lambda0 +
+        /// t), J' by a central difference in the load of v.J v, each by
+        /// central differences of the residual along v (8 residuals).
+        double
+        eigenvalue_rate(const double t, const Vector<double> &U, const Vector<double> &T, const Vector<double> &mode)
+        {
+          Vector<double> v = mode;
+          problem.complete_mode(v); // (the unknowns constraints determine: a state the residual takes)
+          const double vmax = masked_max(v, mask), d = 1e-3 * std::max(std::abs(t), 1e-3);
+          if (!(vmax > 0))
+            return NAN;
+          const double   eps = 1e-5 * scale / vmax;
+          const unsigned n   = U.size();
+          Vector<double> Up(n), Rp(n), Rm(n), J0v(n);
+          auto           form = [&](const double s) {
+            problem.set_load_parameter(lambda0 + t + s);
+            double f = 0;
+            for (const double e : {eps, -eps})
+              {
+                Up = U;
+                Up.add(s, T, e, v);
+                if (problem.residual(Up, e > 0 ? Rp : Rm) != 0)
+                  return double(NAN);
+              }
+            out.residuals += 2;
+            Rp -= Rm;
+            f = masked_dot(v, Rp, mask) / (2 * eps);
+            return f;
+          };
+          const double rate = (form(d) - form(-d)) / (2 * d);
+          problem.set_load_parameter(lambda0);
+          J0.vmult(J0v, v);
+          return rate / masked_dot(v, J0v, mask);
+        }
+
+      private:
+        /// J x = b (J stored) by GMRES preconditioned with J0, from x, to
+        /// 1e-10 of |b - J x|; next to the critical point the residual's
+        /// round-off sets a floor, and a reduction by 1e-6 will do.
+        bool
+        gmres(const Vector<double> &b, Vector<double> &x)
+        {
+          Vector<double> r(b.size());
+          J.vmult(r, x);
+          r.sadd(-1., 1., b);
+          const double                                r0 = r.l2_norm();
+          SolverControl                               control(100, 1e-10 * r0);
+          SolverGMRES<Vector<double>>::AdditionalData data(50, true);
+          SolverGMRES<Vector<double>>                 solver(control, data);
+          try
+            {
+              solver.solve(J, x, b, P);
+            }
+          catch (SolverControl::NoConvergence &e)
+            {
+              if (!(e.last_residual <= 1e-4 * r0))
+                return false;
+            }
+          out.krylov += control.last_step();
+          if (deflation.size() == x.size())
+            x.add(-masked_dot(J0_deflation, x, mask) / masked_dot(J0_deflation, deflation, mask), deflation);
+          return true;
+        }
+
+        BifurcationProblem   &problem;
+        const double          lambda0, scale;
+        const Vector<double> &mask;
+        EstimateRefinement   &out;
+        JacobianAt            J0, J;
+        StartFactorization    P;
+        Vector<double>        deflation, J0_deflation; ///< (empty: none)
+      };
+    } // namespace
+
     EstimateRefinement
     refine_critical_estimate(BifurcationProblem   &problem,
                              const Vector<double> &U0,
@@ -755,138 +971,76 @@ namespace cosmo
           out.message = "no estimate ahead to refine";
           return out;
         }
-      const unsigned int n     = U0.size();
-      const double       scale = problem.unknowns_scale(U0);
-      Vector<double>     d2U   = estimate.tangent;
-      d2U -= dU;
-      d2U /= tau;
-      JacobianAt         J0(problem, 0, 1e-6 * scale), J(problem, 1, 1e-6 * scale);
-      StartFactorization P{&problem};
-      problem.set_load_parameter(lambda0);
-      J0.set(U0);
-      // The state on the path at lambda0 + t: Newton from the series' state,
-      // each step by GMRES preconditioned with the start's factorization.
-      auto state = [&](const double t, Vector<double> &U) {
-        U = U0;
-        U.add(t, dU, 0.5 * t * t, d2U);
-        problem.set_load_parameter(lambda0 + t);
-        Vector<double> R(n), step(n);
-        double         last = INFINITY;
-        for (unsigned int k = 0; k < 8; ++k)
+      // From the second-order series' state and tangent at the estimate
+      // (U0 + t dU + t^2/2 d2U, dU + t d2U), then each state's guess along
+      // the tangent there.
+      double         t = tau, mu = NAN;
+      Vector<double> U = estimate.U, T = estimate.tangent, v = estimate.mode;
+      {
+        PencilAlongPath pencil(problem, U0, lambda0, mask, out);
+        // A branch point: the first eigenvector orthogonal to dR/dlambda
+        // (the test of the location's classification)
+        Vector<double> dR(U0.size());
+        problem.set_load_parameter(lambda0);
+        const bool has_dR = problem.load_derivative(U0, lambda0, dR) == 0;
+        bool       branch = false;
+        // Newton on mu(t), the rate by Hellmann-Feynman (v.J' v / v.J0 v
+        // along the path's tangent). The Ritz residual 1e-6 makes mu's
+        // error ~1e-12 over its gap; the last one 1e-9: the mode is the
+        // location's border (1e-4 off pinned a branch point 240
+        // resolutions off, doc/theory-continuation.md 10).
+        for (unsigned int it = 0; it < 8; ++it)
           {
-            if (problem.residual(U, R) != 0)
-              return false;
-            ++out.residuals;
-            J.set(U);
-            R *= -1.;
-            step = 0.;
-            SolverControl                                   control(100, 1e-10 * R.l2_norm());
-            SolverGMRES<Vector<double>>::AdditionalData     data(50, true);
-            SolverGMRES<Vector<double>>                     gmres(control, data);
-            try
+            if (!pencil.converge_state(t, U))
               {
-                gmres.solve(J, step, R, P);
+                out.message = "the state at t = " + std::to_string(lambda0 + t) + " does not converge";
+                break;
               }
-            catch (std::exception &)
+            ++out.evaluations;
+            mu = pencil.smallest_eigenvalue(t, v, 1e-6);
+            if (out.evaluations == 1)
+              branch = has_dR && std::abs(masked_dot(v, dR, mask)) <=
+                                   1e-4 * std::sqrt(masked_dot(dR, dR, mask) * masked_dot(v, v, mask));
+            if (branch && std::isfinite(mu))
+              pencil.deflate(v);
+            // (next to the critical point the tangent's solve is nearly
+            // singular: the rate is not needed there)
+            if (std::isfinite(mu) && std::abs(mu) <= 1e-7)
               {
-                return false;
+                out.refined = std::isfinite(pencil.smallest_eigenvalue(t, v, 1e-9));
+                break;
               }
-            out.krylov += control.last_step();
-            U += step;
-            ++out.newton;
-            if (J.failed)
-              return false;
-            // Converged: the step at round-off, or no longer decreasing
-            // near it (next to the critical point the residual's round-off
-            // is amplified along the nearly singular mode)
-            const double size = masked_max(step, mask);
-            if (size <= 1e-10 * scale || (k > 0 && size <= 1e-6 * scale && size > 0.25 * last))
+            if (!pencil.tangent(t, U, T))
               {
-                J.set(U);
-                return true;
+                out.message = "the tangent fails";
+                break;
               }
-            last = size;
+            const double rate = pencil.eigenvalue_rate(t, U, T, v);
+            if (!std::isfinite(mu) || !(rate < 0))
+              {
+                out.message = "the smallest eigenvalue or its rate fails";
+                break;
+              }
+            const double dt = -mu / rate;
+            if (!(t + dt > 0 && t + dt < 4 * tau))
+              {
+                out.message = "Newton on the smallest eigenvalue leaves the window";
+                break;
+              }
+            t += dt;
+            U.add(dt, T); // (the next state's guess: the tangent's, off by dt^2)
           }
-        return false;
-      };
-      // The smallest eigenvalue of J(t) over J0 on the mask: 1 - the
-      // largest of J0^-1 (J0 - J(t)), by Lanczos from the last mode.
-      CriticalEstimateSettings lanczos;
-      lanczos.tolerance = 1e-10;
-      lanczos.max_steps = 40;
-      Vector<double> v    = estimate.mode, J0q(n), Jq(n);
-      auto           mu   = [&]() {
-        const LanczosRun run = pencil_lanczos(
-          problem, mask, lanczos,
-          [&](const Vector<double> &q, const Vector<double> &J0q_known, Vector<double> &y) {
-            if (J0q_known.size() == n)
-              J0q = J0q_known;
-            else
-              {
-                problem.set_load_parameter(lambda0);
-                J0.vmult(J0q, q);
-              }
-            problem.set_load_parameter(estimate.lambda);
-            J.vmult(Jq, q);
-            y = J0q;
-            y -= Jq;
-            y.scale(mask); // (the multipliers' rows: C q in both)
-          },
-          v);
-        out.solves += run.solves;
-        out.lanczos += run.steps;
-        if (!run.definite || run.theta.size() == 0)
-          return double(NAN);
-        v = run.top_vector(mask);
-        return 1 - run.theta[run.theta.size() - 1];
-      };
-      // Secant on mu(t) from mu(0) = 1 and the estimate.
-      double         ta = 0, ma = 1, tb = tau, mb;
-      Vector<double> U(n);
-      if (!state(tb, U))
-        {
-          out.message = "the state at the estimate does not converge";
-          problem.release_stored_jacobians();
-          problem.set_load_parameter(lambda0);
-          return out;
-        }
-      estimate.lambda = lambda0 + tb;
-      mb              = mu();
-      for (unsigned int it = 0; it < 10 && std::isfinite(mb); ++it)
-        {
-          ++out.evaluations;
-          const double tc = tb - mb * (tb - ta) / (mb - ma);
-          if (!(tc > 0 && tc < 4 * tau) || !state(tc, U))
-            {
-              break;
-            }
-          estimate.lambda = lambda0 + tc;
-          ta              = tb;
-          ma              = mb;
-          tb              = tc;
-          mb              = mu();
-          if (std::abs(tb - ta) <= 1e-9 * tau)
-            {
-              out.refined = std::isfinite(mb);
-              break;
-            }
-        }
-      problem.release_stored_jacobians();
-      problem.set_load_parameter(lambda0);
-      out.residuals += J.residuals + J0.residuals;
-      out.jacobians = J.jacobians + J0.jacobians;
-      out.solves += P.solves;
+      }
       if (!out.refined)
         {
-          estimate.lambda = lambda0 + tau;
-          out.message     = "the secant on the smallest eigenvalue does not converge";
+          if (out.message.empty())
+            out.message = "Newton on the smallest eigenvalue does not converge";
           return out;
         }
-      estimate.lambda = lambda0 + tb;
-      estimate.U      = U;
-      estimate.mode   = v;
-      estimate.tangent = dU;
-      estimate.tangent.add(tb, d2U);
+      estimate.lambda  = lambda0 + t;
+      estimate.U       = U;
+      estimate.mode    = v;
+      estimate.tangent = T;
       return out;
     }
   } // namespace solvers

@@ -309,6 +309,10 @@ namespace cosmo
       /// the stable start ("First event by estimate", critical_estimate.h),
       /// the path followed where it does not hold.
       bool         first_event_by_estimate = true;
+      /// A second-order estimate refined with the start's factorization
+      /// alone before Newton on the augmented system ("Refine estimate",
+      /// refine_critical_estimate()): fewer factorizations, more solves.
+      bool         refine_estimate = false;
       /// The corrector's Newton starts with chord steps on the last state's
       /// factorization ("Reuse factorization", chord_newton.h).
       bool         reuse_factorization = true;

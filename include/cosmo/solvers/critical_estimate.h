@@ -116,23 +116,26 @@ namespace cosmo
     {
       /// The estimate replaced by the refined one (else left as it was).
       bool refined = false;
-      /// evaluations of the smallest eigenvalue (secant steps), Newton
-      /// steps on the state, GMRES steps, Lanczos steps, solves with the
+      /// states converged (Newton iterations on the eigenvalue), Newton
+      /// steps on the states, GMRES steps, Lanczos steps, solves with the
       /// start's factorization, residuals, Jacobians assembled
       unsigned int evaluations = 0, newton = 0, krylov = 0, lanczos = 0, solves = 0, residuals = 0, jacobians = 0;
       std::string  message;
     };
 
     /**
-     * A second-order estimate (critical_estimate.h) refined without a
-     * factorization: the path's state at lambda0 + t converged by Newton
-     * whose steps are GMRES preconditioned with the start's factorization
-     * J0 (the state's Jacobian near J0 away from a few modes), and the
-     * smallest eigenvalue mu(t) of the pencil (J(t), J0) on the mask by
-     * Lanczos with the same factorization; the secant on mu from mu(0) = 1
-     * and the estimate to the load where J(t) turns singular. `estimate`
-     * gets the load, the converged state, the mode and the series' tangent
-     * there where it converges; J0 must be the factorization in place.
+     * A second-order estimate refined with the start's factorization J0
+     * alone (no other factorization): Newton on mu(t), the smallest
+     * eigenvalue of the pencil J(t) v = mu J0 v on the mask along the path,
+     * to |mu| <= 1e-7. At each load the path's state is converged by
+     * Newton whose steps are GMRES preconditioned with J0 (J0^-1 J is
+     * near the identity but for the few modes the load softens), mu by
+     * Lanczos on J0^-1 (J0 - J) from the last mode, its rate by
+     * Hellmann-Feynman, v.J' v / v.J0 v along the tangent (GMRES again).
+     * `estimate` gets the load, the converged state, the mode and the
+     * tangent where it converges, else stays as it was. J0 must be the
+     * factorization in place, positive definite on the mask; the load is
+     * left at lambda0.
      */
     EstimateRefinement
     refine_critical_estimate(BifurcationProblem   &problem,
