@@ -296,9 +296,10 @@ namespace cosmo
                         "the eigenvalue by Lanczos, both preconditioned with that "
                         "factorization (doc/theory-continuation.md 10). A twisted strip's "
                         "or section's threshold then takes 3 factorizations instead of "
-                        "6-12, but hundreds of solves: on the suite's strips and sections, "
-                        "where a factorization costs a few solves, 1.8-1.9 times the time. "
-                        "For problems whose factorization dominates.");
+                        "6-12, but 250-1400 solves: on the suite's strips and sections "
+                        "(381-16383 DoFs), where a factorization costs about 10 solves, "
+                        "1.8-2.5 times the time (benchmarks/README.md). For problems whose "
+                        "factorization costs over ~100 solves.");
       prm.declare_entry("Reuse factorization", "true", Patterns::Bool(),
                         "The corrector's Newton starts from the factorization of the last "
                         "converged state (made there for its stability count and tangent) "
@@ -1754,6 +1755,33 @@ namespace cosmo
       }
 
       /**
+       * A second-order estimate refined with the start's factorization
+       * alone ('Refine estimate', refine_critical_estimate()), said: Newton
+       * on the augmented system then takes two iterations from it, as from
+       * the plates' linear estimates.
+       */
+      void
+      refine_and_say(BifurcationProblem &                             problem,
+                     const Vector<double> &                           U,
+                     const double                                     lambda,
+                     const Vector<double> &                           dU,
+                     const Vector<double> &                           mask,
+                     const std::function<void(const std::string &)> & say,
+                     CriticalEstimate &                               estimate)
+      {
+        const EstimateRefinement r = refine_critical_estimate(problem, U, lambda, dU, mask, estimate);
+        std::ostringstream       m;
+        m << std::setprecision(10) << "  refined with the start's factorization: ";
+        if (r.refined)
+          m << "t = " << estimate.lambda;
+        else
+          m << "not (" << r.message << ")";
+        m << " (" << r.evaluations << " states, " << r.newton << " Newton steps with " << r.krylov << " GMRES steps, "
+          << r.lanczos << " Lanczos steps, " << r.solves << " solves, " << r.jacobians << " Jacobians)";
+        say(m.str());
+      }
+
+      /**
        * The first critical point's estimate from (U, lambda) with the tangent
        * dU (critical_estimate.h, doc/theory-continuation.md 10), said:
        * the linear model's, or where that finds none or a cluster (the
@@ -1835,22 +1863,8 @@ namespace cosmo
               (cluster || curved) ? first : std::isfinite(range) ? range : 1 + std::abs(lambda), arnoldi);
             if (estimate.found)
               report("second order", "Arnoldi");
-            // (Newton on the augmented system from a refined estimate: two
-            // iterations, as from the plates' linear ones)
             if (estimate.found && refine)
-              {
-                const EstimateRefinement r = refine_critical_estimate(problem, U, lambda, dU, mask, estimate);
-                std::ostringstream       m;
-                m << std::setprecision(10) << "  refined with the start's factorization: ";
-                if (r.refined)
-                  m << "t = " << estimate.lambda;
-                else
-                  m << "not (" << r.message << ")";
-                m << " (" << r.evaluations << " states, " << r.newton << " Newton steps with " << r.krylov
-                  << " GMRES steps, " << r.lanczos << " Lanczos steps, " << r.solves << " solves, " << r.jacobians
-                  << " Jacobians)";
-                say(m.str());
-              }
+              refine_and_say(problem, U, lambda, dU, mask, say, estimate);
             else if (curved)
               {
                 // (the linear estimate still stands)
