@@ -774,7 +774,8 @@ namespace cosmo
 
         /// R(U, lambda0 + t) = 0 by Newton from U, each step by GMRES
         /// preconditioned with J0 (whose spectrum over J's is clustered at
-        /// 1 but for the few modes the load softens); J then stored at U.
+        /// 1 but for the few modes the load softens); J stays stored at
+        /// the last iterate.
         bool
         converge_state(const double t, Vector<double> &U)
         {
@@ -798,13 +799,11 @@ namespace cosmo
                 return false;
               // Converged: the step at round-off, or no longer decreasing
               // near it (next to the critical point the residual's
-              // round-off is amplified along the nearly singular mode)
+              // round-off is amplified along the nearly singular mode). J
+              // stays the last iterate's: 1e-9 off moves mu by as little.
               const double size = masked_max(step, mask);
               if (size <= 1e-9 * scale || (k > 0 && size <= 1e-6 * scale && size > 0.25 * last))
-                {
-                  J.set(U);
-                  return true;
-                }
+                return true;
               last = size;
             }
           return false;
@@ -861,27 +860,6 @@ namespace cosmo
           return gmres(dR, T);
         }
 
-        /**
-         * At a branch point the path's states and tangents have no
-         * component along the critical mode (the path keeps the symmetry
-         * the mode breaks), but next to it a solve amplifies the round-off
-         * along it by 1/mu: a drift of 1e-9-1e-7 that Newton on the
-         * augmented system then keeps (its border row pins the state's
-         * component along the mode), and which moved the section's located
-         * loads up to 68 resolutions. The solves' results lose their
-         * component along v (J0-orthogonally) from here on.
-         */
-        void
-        deflate(const Vector<double> &v)
-        {
-          deflation = v;
-          problem.complete_mode(deflation);
-          problem.set_load_parameter(lambda0);
-          J0.vmult(J0_deflation, deflation);
-          if (!(masked_dot(J0_deflation, deflation, mask) > 0))
-            deflation.reinit(0);
-        }
-
         /// d mu/dt = v.J' v / v.J0 v along the tangent T at (U, lambda0 +
         /// t), J' by a central difference in the load of v.J v, each by
         /// central differences of the residual along v (8 residuals).
@@ -920,7 +898,7 @@ namespace cosmo
       private:
         /// J x = b (J stored) by GMRES preconditioned with J0, from x, to
         /// 1e-10 of |b - J x|; next to the critical point the residual's
-        /// round-off sets a floor, and a reduction by 1e-6 will do.
+        /// round-off sets a floor, and a reduction by 1e-4 will do.
         bool
         gmres(const Vector<double> &b, Vector<double> &x)
         {
@@ -941,8 +919,6 @@ namespace cosmo
                 return false;
             }
           out.krylov += control.last_step();
-          if (deflation.size() == x.size())
-            x.add(-masked_dot(J0_deflation, x, mask) / masked_dot(J0_deflation, deflation, mask), deflation);
           return true;
         }
 
@@ -952,7 +928,6 @@ namespace cosmo
         EstimateRefinement   &out;
         JacobianAt            J0, J;
         StartFactorization    P;
-        Vector<double>        deflation, J0_deflation; ///< (empty: none)
       };
     } // namespace
 
@@ -978,12 +953,6 @@ namespace cosmo
       Vector<double> U = estimate.U, T = estimate.tangent, v = estimate.mode;
       {
         PencilAlongPath pencil(problem, U0, lambda0, mask, out);
-        // A branch point: the first eigenvector orthogonal to dR/dlambda
-        // (the test of the location's classification)
-        Vector<double> dR(U0.size());
-        problem.set_load_parameter(lambda0);
-        const bool has_dR = problem.load_derivative(U0, lambda0, dR) == 0;
-        bool       branch = false;
         // Newton on mu(t), the rate by Hellmann-Feynman (v.J' v / v.J0 v
         // along the path's tangent). The Ritz residual 1e-6 makes mu's
         // error ~1e-12 over its gap; the last one 1e-9: the mode is the
@@ -998,18 +967,6 @@ namespace cosmo
               }
             ++out.evaluations;
             mu = pencil.smallest_eigenvalue(t, v, 1e-6);
-            if (out.evaluations == 1)
-              branch = has_dR && std::abs(masked_dot(v, dR, mask)) <=
-                                   1e-4 * std::sqrt(masked_dot(dR, dR, mask) * masked_dot(v, v, mask));
-            if (branch && std::isfinite(mu))
-              pencil.deflate(v);
-            // (next to the critical point the tangent's solve is nearly
-            // singular: the rate is not needed there)
-            if (std::isfinite(mu) && std::abs(mu) <= 1e-7)
-              {
-                out.refined = std::isfinite(pencil.smallest_eigenvalue(t, v, 1e-9));
-                break;
-              }
             if (!pencil.tangent(t, U, T))
               {
                 out.message = "the tangent fails";
@@ -1029,6 +986,19 @@ namespace cosmo
               }
             t += dt;
             U.add(dt, T); // (the next state's guess: the tangent's, off by dt^2)
+            // The last step is not converged onto: Newton on the augmented
+            // system does that from the tangent's guess, its load ~dt^2
+            // off. A state next to the critical point would carry the
+            // round-off its solves amplify along the mode (by 1/mu), and
+            // that drift, pinned by the location's border row, moved the
+            // section's located loads up to 68 resolutions (states down to
+            // |mu| <= 1e-7), and 6 under a 1e-14 change of the input; at
+            // |mu| >= 1e-4 it is about 1e-16 * 1e4.
+            if (std::abs(mu) <= 1e-4)
+              {
+                out.refined = std::isfinite(pencil.smallest_eigenvalue(t - dt, v, 1e-9));
+                break;
+              }
           }
       }
       if (!out.refined)
@@ -1040,7 +1010,7 @@ namespace cosmo
       estimate.lambda  = lambda0 + t;
       estimate.U       = U;
       estimate.mode    = v;
-      estimate.tangent = T;
+      estimate.tangent = T; // (the last state's, dt before)
       return out;
     }
   } // namespace solvers

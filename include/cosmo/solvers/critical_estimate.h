@@ -127,7 +127,9 @@ namespace cosmo
      * A second-order estimate refined with the start's factorization J0
      * alone (no other factorization): Newton on mu(t), the smallest
      * eigenvalue of the pencil J(t) v = mu J0 v on the mask along the path,
-     * to |mu| <= 1e-7. At each load the path's state is converged by
+     * until |mu| <= 1e-4, and its last step taken along the tangent
+     * without converging onto it (Newton on the augmented system does, its
+     * guess's load ~1e-8 off). At each load the path's state is converged by
      * Newton whose steps are GMRES preconditioned with J0 (J0^-1 J is
      * near the identity but for the few modes the load softens), mu by
      * Lanczos on J0^-1 (J0 - J) from the last mode, its rate by
