@@ -1201,19 +1201,32 @@ namespace
   /// twisted strip's: H_i(t) = [[k_i - c t^2, b t], [b t, k_i - c t^2]].
   /// The linear model's singular loads k_i / b cluster; the pair is
   /// singular where k_i - c t^2 = b t, t_i = (sqrt(b^2 + 4 c k_i) - b)/(2c).
+  /// With e != 0 softened at fourth order too (-e t^4 on the diagonal),
+  /// which the second-order model misses (the twisted strip's eigenvalue,
+  /// ~ mu0 - a t^2 - b t^4, misses it so): t_i then by bisection.
   class TwistPairs : public DenseProblem
   {
   public:
-    TwistPairs(unsigned int pairs, double b, double c)
+    TwistPairs(unsigned int pairs, double b, double c, double e = 0)
       : DenseProblem(2 * pairs)
       , b(b)
       , c(c)
+      , e(e)
     {}
-    const double b, c;
+    const double b, c, e;
     double
     critical(const unsigned int i) const
     {
-      return (std::sqrt(b * b + 4 * c * (1 + 0.4 * i)) - b) / (2 * c);
+      const double k = 1 + 0.4 * i;
+      if (e == 0)
+        return (std::sqrt(b * b + 4 * c * k) - b) / (2 * c);
+      double lo = 0, hi = k / b;
+      for (int it = 0; it < 200; ++it)
+        {
+          const double t = 0.5 * (lo + hi);
+          (k - c * t * t - e * t * t * t * t - b * t > 0 ? lo : hi) = t;
+        }
+      return 0.5 * (lo + hi);
     }
 
   protected:
@@ -1224,7 +1237,7 @@ namespace
       for (unsigned int i = 0; 2 * i < n; ++i)
         {
           const unsigned int p = 2 * i, q = p + 1;
-          H(p, p) = H(q, q) = 1 + 0.4 * i - c * t * t;
+          H(p, p) = H(q, q) = 1 + 0.4 * i - c * t * t - e * t * t * t * t;
           H(p, q) = H(q, p) = b * t;
           R[p]              = H(p, p) * U[p] + H(p, q) * U[q];
           R[q]              = H(q, p) * U[p] + H(q, q) * U[q];
@@ -1333,6 +1346,90 @@ namespace
     if (located.size() == 1)
       check_close("twist pairs, the driver: at t_0", located[0].event.lambda, p.critical(0), 0, 1e-10);
     check("twist pairs, the driver: from the estimate (no state followed beyond the start)", p.history.size() == 1);
+  }
+
+  /// MovingPrestress with the axial unknown u = g(lambda) = lambda + c
+  /// lambda^2 + d lambda^3: the path's third-order term, which the
+  /// second-order model misses. Critical where g(lambda) = lambda_1.
+  class CubicPrestress : public MovingPrestress
+  {
+  public:
+    CubicPrestress(unsigned int n, double c, double d)
+      : MovingPrestress(n)
+      , c(c)
+      , d(d)
+    {}
+    const double c, d;
+    /// the root of g(lambda) = target by Newton, to round-off
+    double
+    load_where(const double target) const
+    {
+      double l = 0;
+      for (int k = 0; k < 60; ++k)
+        l -= (l + c * l * l + d * l * l * l - target) / (1 + 2 * c * l + 3 * d * l * l);
+      return l;
+    }
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      MovingPrestress::evaluate(U, l + c * l * l + d * l * l * l, R, H);
+    }
+  };
+
+  void
+  critical_estimate_refined()
+  {
+    // The second-order estimate refined with the start's factorization
+    // alone (solvers::refine_critical_estimate, 'Refine estimate'): where
+    // the path (a cubic axial state) or the Hessian (a quartic softening)
+    // goes beyond the second-order model, whose estimate is then 1-10 %
+    // off, the refined one is the critical load. Its resolution: Newton on
+    // mu stops at |mu| <= 1e-4 and takes one more step, off by about
+    // (mu''/2mu') dt^2 ~ 1e-8 relative on these O(1) problems; tolerance
+    // 1e-6. Without another factorization: setup_jacobian() is not called.
+    const unsigned int                n        = 40;
+    const double                      h        = 1. / n;
+    const double                      lambda_1 = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (h * h);
+    solvers::CriticalEstimateSettings qep;
+    qep.max_steps = 90;
+    qep.tolerance = 1e-10;
+    auto refine   = [&](solvers::BifurcationProblem &p, DenseProblem &dense, const Vector<double> &dU,
+                      const double scale, const double exact, const std::string &what) {
+      Vector<double> U(dU.size()), mask(dU.size());
+      mask = 1.;
+      p.set_load_parameter(0.);
+      p.setup_jacobian(U);
+      const unsigned int setups = dense.setups;
+      const auto         e      = solvers::estimate_first_critical_point_second_order(p, U, 0., dU, mask, scale, qep);
+      auto               r      = e;
+      const auto         report = solvers::refine_critical_estimate(p, U, 0., dU, mask, r);
+      std::cout << "  " << what << ": second order " << e.lambda << ", refined " << r.lambda << " (exact " << exact
+                << "), " << report.evaluations << " states, " << report.solves << " solves\n";
+      check(what + ": the second-order estimate at least 1 % off (else this tests nothing)",
+            e.found && std::abs(e.lambda - exact) >= 1e-2 * exact);
+      check(what + ": refined", report.refined);
+      check_close(what + ": the refined estimate", r.lambda, exact, 1e-6);
+      check(what + ": no other factorization", dense.setups == setups);
+    };
+    for (const bool stored : {false, true})
+      {
+        const std::string route = stored ? " (stored Jacobians)" : " (differences of residuals)";
+        {
+          CubicPrestress p(n, 0.3 / lambda_1, 0.5 / (lambda_1 * lambda_1));
+          p.offer_stored_jacobians = stored;
+          Vector<double> dU(n + 1);
+          dU[0] = 1; // (du/dlambda at 0)
+          refine(p, p, dU, 1., p.load_where(lambda_1), "cubic prestress" + route);
+        }
+        {
+          TwistPairs p(20, 1., 4., 16.);
+          p.offer_stored_jacobians = stored;
+          Vector<double> dU(40);
+          refine(p, p, dU, 0.4, p.critical(0), "quartic twist pairs" + route);
+        }
+      }
   }
 
   void
@@ -1521,6 +1618,7 @@ main(int argc, char **argv)
                                    {"newton_guess", newton_guess}, {"newton_chord", newton_chord},
                                    {"predictor_step", predictor_step},
                                    {"critical_estimate", critical_estimate}, {"arclength_chord", arclength_chord},
-                                   {"critical_estimate_second_order", critical_estimate_second_order}};
+                                   {"critical_estimate_second_order", critical_estimate_second_order},
+                                   {"critical_estimate_refined", critical_estimate_refined}};
   return cosmo_test::run_case("test_continuation", "", cases, argc, argv, 2, 2);
 }

@@ -1862,9 +1862,11 @@ namespace cosmo
               problem, U, lambda, dU, mask,
               (cluster || curved) ? first : std::isfinite(range) ? range : 1 + std::abs(lambda), arnoldi);
             if (estimate.found)
-              report("second order", "Arnoldi");
-            if (estimate.found && refine)
-              refine_and_say(problem, U, lambda, dU, mask, say, estimate);
+              {
+                report("second order", "Arnoldi");
+                if (refine)
+                  refine_and_say(problem, U, lambda, dU, mask, say, estimate);
+              }
             else if (curved)
               {
                 // (the linear estimate still stands)

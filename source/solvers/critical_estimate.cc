@@ -687,6 +687,7 @@ namespace cosmo
         set(const Vector<double> &at)
         {
           U      = at;
+          failed = false;
           stored = !by_residuals() && problem->store_jacobian(U, slot);
           jacobians += stored ? 1 : 0;
         }
@@ -756,7 +757,7 @@ namespace cosmo
                         const double          lambda0,
                         const Vector<double> &mask,
                         EstimateRefinement   &out)
-            : problem(problem), lambda0(lambda0), scale(problem.unknowns_scale(U0)), mask(mask), out(out),
+            : problem(problem), U0(U0), lambda0(lambda0), scale(problem.unknowns_scale(U0)), mask(mask), out(out),
               J0(problem, 0, 1e-6 * scale), J(problem, 1, 1e-6 * scale), P{&problem}
         {
           problem.set_load_parameter(lambda0);
@@ -800,10 +801,15 @@ namespace cosmo
               // Converged: the step at round-off, or no longer decreasing
               // near it (next to the critical point the residual's
               // round-off is amplified along the nearly singular mode). J
-              // stays the last iterate's: 1e-9 off moves mu by as little.
+              // stays the last iterate's where the step was below 1e-9,
+              // which moves mu by as little.
               const double size = masked_max(step, mask);
               if (size <= 1e-9 * scale || (k > 0 && size <= 1e-6 * scale && size > 0.25 * last))
-                return true;
+                {
+                  if (size > 1e-9 * scale)
+                    J.set(U);
+                  return true;
+                }
               last = size;
             }
           return false;
@@ -821,8 +827,18 @@ namespace cosmo
           lanczos.tolerance = tolerance;
           lanczos.max_steps = 40;
           const unsigned int n = v.size();
-          Vector<double>     J0q(n), Jq(n);
-          const LanczosRun   run = pencil_lanczos(
+          Vector<double>     J0q(n), Jq(n), start(v);
+          // The last mode with a random part of 1e-4 (not for the last
+          // run, from the mode already found): a start of one symmetry
+          // keeps Lanczos in it (the section's second-order mode at growth
+          // 1.3, unconverged, was symmetric, and Lanczos from it found a
+          // symmetric eigenvalue, 0.4, above the critical mode's).
+          const double                           vmax = masked_max(v, mask);
+          std::mt19937                           random(20261207);
+          std::uniform_real_distribution<double> uniform(-1., 1.);
+          for (unsigned int i = 0; i < n && tolerance > 1e-8; ++i)
+            start[i] += 1e-4 * (vmax > 0 ? vmax : 1.) * mask[i] * uniform(random);
+          const LanczosRun run = pencil_lanczos(
             problem, mask, lanczos,
             [&](const Vector<double> &q, const Vector<double> &J0q_known, Vector<double> &y) {
               if (J0q_known.size() == n)
@@ -838,10 +854,11 @@ namespace cosmo
               y -= Jq;
               y.scale(mask); // (the multipliers' rows: C q in both)
             },
-            v);
+            start);
           out.solves += run.solves;
           out.lanczos += run.steps;
-          if (!run.definite || run.theta.size() == 0 || !run.converged)
+          // (a residual of a difference product that could not be evaluated)
+          if (!run.definite || run.theta.size() == 0 || !run.converged || J.failed || J0.failed)
             return NAN;
           v = run.top_vector(mask);
           return 1 - run.theta[run.theta.size() - 1];
@@ -860,9 +877,23 @@ namespace cosmo
           return gmres(dR, T);
         }
 
+        /// Whether the mode v has a component along dR/dlambda at the
+        /// start (|v.dR| above 1e-4 |v| |dR| on the mask): a fold, not a
+        /// branch point, as the location classifies it.
+        bool
+        along_load(const Vector<double> &v)
+        {
+          Vector<double> dR(v.size());
+          problem.set_load_parameter(lambda0);
+          if (problem.load_derivative(U0, lambda0, dR) != 0)
+            return true; // (unknown: not refined)
+          out.residuals += 2;
+          return std::abs(masked_dot(v, dR, mask)) > 1e-4 * std::sqrt(masked_dot(dR, dR, mask) * masked_dot(v, v, mask));
+        }
+
         /// d mu/dt = v.J' v / v.J0 v along the tangent T at (U, lambda0 +
         /// t), J' by a central difference in the load of v.J v, each by
-        /// central differences of the residual along v (8 residuals).
+        /// central differences of the residual along v (4 residuals).
         double
         eigenvalue_rate(const double t, const Vector<double> &U, const Vector<double> &T, const Vector<double> &mode)
         {
@@ -919,10 +950,11 @@ namespace cosmo
                 return false;
             }
           out.krylov += control.last_step();
-          return true;
+          return !J.failed;
         }
 
         BifurcationProblem   &problem;
+        const Vector<double> &U0;
         const double          lambda0, scale;
         const Vector<double> &mask;
         EstimateRefinement   &out;
@@ -967,15 +999,28 @@ namespace cosmo
               }
             ++out.evaluations;
             mu = pencil.smallest_eigenvalue(t, v, 1e-6);
+            if (!std::isfinite(mu))
+              {
+                out.message = "the smallest eigenvalue fails";
+                break;
+              }
+            // A fold (the mode along dR/dlambda, the location's test):
+            // there mu ~ sqrt(t_c - t), and Newton on it steps past the
+            // fold, where the path has no state.
+            if (out.evaluations == 1 && pencil.along_load(v))
+              {
+                out.message = "a fold: Newton on the smallest eigenvalue would step past it";
+                break;
+              }
             if (!pencil.tangent(t, U, T))
               {
                 out.message = "the tangent fails";
                 break;
               }
             const double rate = pencil.eigenvalue_rate(t, U, T, v);
-            if (!std::isfinite(mu) || !(rate < 0))
+            if (!(rate < 0))
               {
-                out.message = "the smallest eigenvalue or its rate fails";
+                out.message = "the smallest eigenvalue's rate fails";
                 break;
               }
             const double dt = -mu / rate;
@@ -1007,10 +1052,18 @@ namespace cosmo
             out.message = "Newton on the smallest eigenvalue does not converge";
           return out;
         }
+      // The tangent handed on is the second-order series' at the refined
+      // load, dU + t d2U, as the unrefined estimate's (the solved one
+      // located the same points): a fallback short of the estimate
+      // rebuilds the series from it (converge_short_of_estimate()).
+      Vector<double> d2U = estimate.tangent;
+      d2U -= dU;
+      d2U /= tau;
       estimate.lambda  = lambda0 + t;
       estimate.U       = U;
       estimate.mode    = v;
-      estimate.tangent = T; // (the last state's, dt before)
+      estimate.tangent = dU;
+      estimate.tangent.add(t, d2U);
       return out;
     }
   } // namespace solvers

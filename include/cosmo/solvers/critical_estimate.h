@@ -134,8 +134,10 @@ namespace cosmo
      * near the identity but for the few modes the load softens), mu by
      * Lanczos on J0^-1 (J0 - J) from the last mode, its rate by
      * Hellmann-Feynman, v.J' v / v.J0 v along the tangent (GMRES again).
-     * `estimate` gets the load, the converged state, the mode and the
-     * tangent where it converges, else stays as it was. J0 must be the
+     * `estimate` gets the load, the state predicted along the tangent
+     * there, the mode and the series' tangent where it converges, else
+     * stays as it was. Not at a fold (the mode along dR/dlambda), where mu
+     * ~ sqrt(t_c - t) and Newton on it steps past the fold. J0 must be the
      * factorization in place, positive definite on the mask; the load is
      * left at lambda0.
      */
