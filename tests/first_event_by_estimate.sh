@@ -126,8 +126,8 @@ check_study run_example.sh rod_cross_section rod_cross_section/studies/critical_
 # ('Refine estimate = true', doc/theory-continuation.md 10): the twisted
 # strip's and the section's thresholds, every point from its own start,
 # against the same study unrefined: each located load within twice its
-# resolution (measured at most 0.20, also under a 1e-14 change of the width
-# or Poisson's ratio: 0.16), every point refined and located
+# resolution (measured at most 0.27, and 0.44 under a 1e-14 change of the
+# width or Poisson's ratio), every point refined and located
 # from the estimate, in at most 3 factorizations (median; most 4: one
 # Newton iteration of margin) -- unrefined 6-7 (strip) and 7-12 (section).
 check_refined() {

@@ -296,9 +296,9 @@ namespace cosmo
                         "the eigenvalue by Lanczos, both preconditioned with that "
                         "factorization (doc/theory-continuation.md 10). A twisted strip's "
                         "or section's threshold then takes 3 factorizations instead of "
-                        "6-12, but 200-1200 solves: on the suite's strips and sections "
+                        "6-12, but 220-500 solves: on the suite's strips and sections "
                         "(381-16383 DoFs), where a factorization costs about 10 solves, "
-                        "1.3-2.1 times the time (benchmarks/README.md). For problems whose "
+                        "1.2-2.3 times the time (benchmarks/README.md). For problems whose "
                         "factorization costs over ~100 solves.");
       prm.declare_entry("Reuse factorization", "true", Patterns::Bool(),
                         "The corrector's Newton starts from the factorization of the last "
