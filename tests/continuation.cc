@@ -1378,6 +1378,27 @@ namespace
     }
   };
 
+  /// x^2 = 1 - lambda from x = 1 at lambda = 0: a fold ahead at lambda =
+  /// 1, where J = 2x ~ sqrt(1 - lambda); no state beyond it.
+  class FoldAhead : public DenseProblem
+  {
+  public:
+    FoldAhead()
+      : DenseProblem(2)
+    {}
+
+  protected:
+    void
+    evaluate(const Vector<double> &U, double l, Vector<double> &R, FullMatrix<double> &H) override
+    {
+      R[0]    = U[0] * U[0] - (1 - l);
+      R[1]    = U[1];
+      H(0, 0) = 2 * U[0];
+      H(1, 1) = 1;
+      H(0, 1) = H(1, 0) = 0;
+    }
+  };
+
   void
   critical_estimate_refined()
   {
@@ -1430,6 +1451,32 @@ namespace
           refine(p, p, dU, 0.4, p.critical(0), "quartic twist pairs" + route);
         }
       }
+    {
+      // Where it fails: the fold's second-order estimate (x = 1 - t/2 -
+      // t^2/8 singular at t = 2 sqrt(3) - 2 = 1.46) lies past the fold,
+      // where no state converges. The estimate and the load stay as they
+      // were.
+      FoldAhead      p;
+      Vector<double> U(2), dU(2), mask(2), R(2);
+      U[0]  = 1;
+      dU[0] = -0.5;
+      mask  = 1.;
+      p.set_load_parameter(0.);
+      p.setup_jacobian(U);
+      const auto e      = solvers::estimate_first_critical_point_second_order(p, U, 0., dU, mask, 1., qep);
+      auto       r      = e;
+      const auto report = solvers::refine_critical_estimate(p, U, 0., dU, mask, r);
+      p.residual(U, R); // (at the problem's load: R_0 = 0 at lambda0 = 0 only)
+      std::cout << "  fold ahead: second order " << e.lambda << " (exact 2 sqrt(3) - 2 = " << 2 * std::sqrt(3.) - 2
+                << "), refinement: " << report.message << "\n";
+      // (d2U by second differences over h = 1e-2 of a path that is not
+      // polynomial: truncation O(h^2) = 1e-4; measured 2e-7)
+      check_close("fold ahead: the second-order estimate", e.lambda, 2 * std::sqrt(3.) - 2, 1e-4);
+      check("fold ahead: not refined", e.found && !report.refined && !report.message.empty());
+      check("fold ahead: the estimate as it was",
+            r.lambda == e.lambda && r.U == e.U && r.mode == e.mode && r.tangent == e.tangent);
+      check("fold ahead: the load back at lambda0", R[0] == 0.);
+    }
   }
 
   void
