@@ -569,6 +569,14 @@ namespace
   // lambda_c = (2 - 2 cos(pi/(2n+1))) / h^2, with the mode sin(pi i/(2n+1));
   // the post-buckled branch tends to the elastica, lambda/(pi^2/4) =
   // (2 K(k)/pi)^2, k = sin(theta_tip/2), as h -> 0.
+  /// The chain's k-th critical load (Cantilever, MovingPrestress: the
+  /// discrete Euler loads of n links of length h = 1/n, in closed form).
+  double
+  chain_critical_load(const unsigned int n, const unsigned int k = 1)
+  {
+    return (2 - 2 * std::cos((2 * k - 1) * M_PI / (2 * n + 1))) * n * n;
+  }
+
   class Cantilever : public DenseProblem
   {
   public:
@@ -625,7 +633,7 @@ namespace
     driver.progress = [](const std::string &m) { std::cout << m << "\n"; };
     Vector<double> U(n);
     const auto     events   = driver.run(p, U, 0.);
-    const double   lambda_c = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (p.h * p.h);
+    const double   lambda_c = chain_critical_load(n);
     check("first event is a simple branch point", !events.empty() &&
                                                      events[0].event.kind ==
                                                        solvers::BifurcationProblem::Event::Kind::branch_point &&
@@ -1258,8 +1266,7 @@ namespace
     // of the internal forces by residuals at these trivial states (~1e-10);
     // the Arnoldi run to 1e-10: tolerances 1e-6.
     const unsigned int                n        = 40;
-    const double                      h        = 1. / n;
-    const double                      lambda_1 = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (h * h);
+    const double                      lambda_1 = chain_critical_load(n);
     solvers::CriticalEstimateSettings qep;
     qep.max_steps = 90;
     qep.tolerance = 1e-10;
@@ -1405,14 +1412,13 @@ namespace
     // The second-order estimate refined with the start's factorization
     // alone (solvers::refine_critical_estimate, 'Refine estimate'): where
     // the path (a cubic axial state) or the Hessian (a quartic softening)
-    // goes beyond the second-order model, whose estimate is then 1-10 %
+    // goes beyond the second-order model, whose estimate is then 14-16 %
     // off, the refined one is the critical load. Its resolution: Newton on
     // mu stops at |mu| <= 1e-4 and takes one more step, off by about
     // (mu''/2mu') dt^2 ~ 1e-8 relative on these O(1) problems; tolerance
     // 1e-6. Without another factorization: setup_jacobian() is not called.
     const unsigned int                n        = 40;
-    const double                      h        = 1. / n;
-    const double                      lambda_1 = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (h * h);
+    const double                      lambda_1 = chain_critical_load(n);
     solvers::CriticalEstimateSettings qep;
     qep.max_steps = 90;
     qep.tolerance = 1e-10;
@@ -1489,8 +1495,8 @@ namespace
     // 1e-6, a hundred times that.
     const unsigned int n        = 40;
     const double       h        = 1. / n;
-    const double       lambda_1 = (2 - 2 * std::cos(M_PI / (2 * n + 1))) / (h * h);
-    const double       lambda_2 = (2 - 2 * std::cos(3 * M_PI / (2 * n + 1))) / (h * h);
+    const double       lambda_1 = chain_critical_load(n);
+    const double       lambda_2 = chain_critical_load(n, 2);
     {
       // The trivial state of the cantilever: J = K - lambda h I, exact.
       Cantilever     p(n);
